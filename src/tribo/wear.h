@@ -1,0 +1,32 @@
+// Archard wear kernels.
+#pragma once
+
+namespace runin::tribo {
+
+// The thesis's eq. 1.4 carries a factor 1/3 (V = k W s / (3H)); most texts omit it.
+enum class ArchardForm { plain, thesis };
+
+class ArchardWear {
+ public:
+  // k: dimensionless wear coefficient; hardness of the softer body in Pa.
+  ArchardWear(double wear_coefficient, double hardness, ArchardForm form = ArchardForm::plain);
+
+  // Worn volume for a normal load |W| and a slip distance |ds|: k |W| |ds| / H (or / 3H).
+  double volume(double normal_force, double slip_distance) const;
+  double coefficient() const { return k_; }
+  double hardness() const { return hardness_; }
+  ArchardForm form() const { return form_; }
+
+ private:
+  double k_, hardness_;
+  ArchardForm form_;
+  double factor_;    // k / H, or k / (3H)
+};
+
+// Share of a contact's worn volume taken by body a: proportional to 1/H (the softer body wears more).
+inline double wear_share(double hardness_a, double hardness_b)
+{
+  return hardness_b / (hardness_a + hardness_b);
+}
+
+}    // namespace runin::tribo

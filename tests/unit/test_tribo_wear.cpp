@@ -1,0 +1,38 @@
+// Archard wear kernel against V = k W s / H (and the thesis's eq. 1.4 with its factor 1/3).
+#include "tribo/contact.h"
+#include "tribo/wear.h"
+
+#include <gtest/gtest.h>
+
+using namespace runin::tribo;
+
+TEST(Archard, IncrementMatchesClosedForm)
+{
+  const double k = 3.2e-4, hardness = 0.245e9, load = 0.981, ds = 1.7e-3;
+  const ArchardWear plain(k, hardness);
+  EXPECT_NEAR(plain.volume(load, ds), k * load * ds / hardness, 1e-14 * k * load * ds / hardness);
+  const ArchardWear thesis(k, hardness, ArchardForm::thesis);
+  EXPECT_NEAR(thesis.volume(load, ds), k * load * ds / (3.0 * hardness), 1e-14 * k * load * ds / hardness);
+  EXPECT_EQ(plain.volume(-load, -ds), plain.volume(load, ds));    // magnitudes only
+}
+
+TEST(Archard, SumOfIncrementsEqualsOneLongSlide)
+{
+  const ArchardWear wear(1e-3, 1e9);
+  double total = 0.0;
+  for (int i = 0; i < 1000; ++i) total += wear.volume(2.0, 1e-6);
+  EXPECT_NEAR(total, wear.volume(2.0, 1e-3), 1e-12 * total);
+}
+
+TEST(Archard, ShareFollowsInverseHardness)
+{
+  EXPECT_DOUBLE_EQ(wear_share(1e9, 1e9), 0.5);
+  EXPECT_NEAR(wear_share(1e9, 3e9), 0.75, 1e-15);    // the softer body takes 3/4
+  EXPECT_NEAR(wear_share(1e9, 3e9) + wear_share(3e9, 1e9), 1.0, 1e-15);
+}
+
+TEST(Archard, RejectsImpossibleCoefficients)
+{
+  EXPECT_THROW(ArchardWear(-1e-4, 1e9), InvalidCoefficient);
+  EXPECT_THROW(ArchardWear(1e-4, 0.0), InvalidCoefficient);
+}
