@@ -1,0 +1,65 @@
+// lmp_runin: Debian's LAMMPS library with the RunIn styles registered before input is read.
+// Usage is that of lmp: mpirun -np 2 lmp_runin -in in.deck
+#include "runin_styles.h"
+
+#include "input.h"
+#include "lammps.h"
+#include "plugin.h"
+
+#include <mpi.h>
+
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace {
+Command *plugin_command(LAMMPS *lmp)
+{
+  return new Plugin(lmp);
+}
+}    // namespace
+
+int main(int argc, char **argv)
+{
+  MPI_Init(&argc, &argv);
+
+  // LAMMPS answers -h inside its constructor, before our styles exist: answer it here instead.
+  bool help = false;
+  std::vector<char *> args;
+  for (int i = 0; i < argc; i++) {
+    if (i > 0 && (strcmp(argv[i], "-h") == 0 || strcmp(argv[i], "-help") == 0))
+      help = true;
+    else
+      args.push_back(argv[i]);
+  }
+  if (help) {
+    static char log_flag[] = "-log", none[] = "none";
+    args.push_back(log_flag);
+    args.push_back(none);
+  }
+  args.push_back(nullptr);
+
+  auto *lmp = new LAMMPS(static_cast<int>(args.size()) - 1, args.data(), MPI_COMM_WORLD);
+  runin_lammps::register_styles(lmp);
+  (*lmp->input->command_map)["plugin"] = &plugin_command;
+
+  if (help) {
+    int me = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &me);
+    if (me == 0) {
+      printf("\nlmp_runin: LAMMPS with the RunIn styles. Usage as lmp, e.g. mpirun -np 2 lmp_runin -in in.deck\n"
+             "RunIn styles:\n");
+      for (const auto &style : runin_lammps::styles())
+        printf("  %-8s %-20s %s\n", style.kind, style.name, style.info);
+      printf("\nAll styles of this executable:\n");
+    }
+    lmp->input->one("info styles");
+  } else {
+    lmp->input->file();
+  }
+  delete lmp;
+  MPI_Finalize();
+  return 0;
+}

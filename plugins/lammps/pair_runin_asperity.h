@@ -1,0 +1,103 @@
+// pair_style runin/asperity: asperity-asperity contact between rough bodies.
+// A thin adapter around the runin::tribo kernels: Hertz normal force with restitution
+// damping, a Mindlin spring with per-contact history and a static/kinetic Coulomb limit,
+// and Archard wear accumulated per atom.
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(runin/asperity,PairRuninAsperity);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_RUNIN_ASPERITY_H
+#define LMP_PAIR_RUNIN_ASPERITY_H
+
+#include "pair.h"
+#include "tribo/contact.h"
+#include "tribo/wear.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class PairRuninAsperity : public Pair {
+ public:
+  // Per type-pair coefficients (SI units), validated where they are parsed.
+  struct Coefficients {
+    double effective_modulus = 0.0;        // E* [Pa]
+    double effective_shear_modulus = 0.0;  // G* [Pa]
+    double restitution = 1.0;              // e [-]
+    double mu_static = 0.0, mu_kinetic = 0.0, slip_weakening_distance = 0.0;
+    double wear_coefficient = 0.0;         // k [-]
+    double hardness_i = 0.0, hardness_j = 0.0;  // H of the type-I and type-J asperity [Pa]
+  };
+
+  // Sums over this rank's contacts in the last force evaluation (read by compute runin/friction).
+  struct ContactSums {
+    double normal_force = 0.0;                 // sum of |F_n|
+    double tangential_force[3] = {0, 0, 0};    // sum of F_t on the higher-type atom of each contact
+    double contacts = 0.0;
+    double wear_volume = 0.0;                  // volume worn in that step
+  };
+
+  // Kernel objects for one type pair, rebuilt from the coefficients at every init.
+  struct TypePairModel {
+    runin::tribo::RestitutionDamping damping;
+    runin::tribo::StaticKineticFriction friction;
+    runin::tribo::ArchardWear wear;
+    double share_i;    // part of a contact's wear volume taken by the type-I atom
+  };
+
+  PairRuninAsperity(class LAMMPS *);
+  ~PairRuninAsperity() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void reset_dt() override;
+  void transfer_history(double *, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+  double atom2cut(int) override;
+  double radii2cut(double, double) override;
+
+  const ContactSums &contact_sums() const { return sums; }
+  class FixRuninWearState *wear_state() const { return fix_wear; }
+  bool wear_enabled() const { return wear_on; }
+
+ protected:
+  enum HistoryIndex { SPRING_X = 0, SPRING_Y, SPRING_Z, SLIP, HISTORY_SIZE };
+
+  double dt;
+  bool wear_on;
+  runin::tribo::ArchardForm archard_form;
+  std::vector<Coefficients> coeffs;    // (ntypes+1)^2; [J][I] has the hardnesses swapped
+  std::vector<std::optional<TypePairModel>> models;    // same layout, built in init_one
+  ContactSums sums;
+
+  double *wear_increment;    // owned + ghost, reverse-communicated each step
+  int nmax_increment;
+  double *maxrad;            // per type
+
+  class FixDummy *fix_dummy;
+  class FixNeighHistory *fix_history;
+  class FixRuninWearState *fix_wear;
+
+  void allocate();
+  Coefficients &coeff_of(int itype, int jtype);
+  Coefficients read_coefficients_file(const std::string &file, const std::string &material_i,
+                                      const std::string &material_j);
+  void validate(const Coefficients &c, const char *origin);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

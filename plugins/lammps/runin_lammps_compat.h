@@ -1,0 +1,46 @@
+// The few LAMMPS API differences between the versions RunIn builds against, in one place.
+// RUNIN_LAMMPS_VERSION (YYYYMMDD) is derived from version.h by CMake.
+#pragma once
+
+#include "comm.h"
+#include "neighbor.h"
+#include "pair.h"
+
+#if RUNIN_LAMMPS_VERSION < 20220324
+#include "neigh_request.h"
+#endif
+
+namespace runin_compat {
+
+// A neighbour list sized by particle radius, with per-contact history.
+inline void request_size_history_list(LAMMPS_NS::Pair *pair, LAMMPS_NS::Neighbor *neighbor, int instance)
+{
+#if RUNIN_LAMMPS_VERSION >= 20220324
+  (void) instance;
+  neighbor->add_request(pair, LAMMPS_NS::NeighConst::REQ_SIZE | LAMMPS_NS::NeighConst::REQ_HISTORY);
+#else
+  const int request = neighbor->request(pair, instance);
+  neighbor->requests[request]->size = 1;
+  neighbor->requests[request]->history = 1;
+#endif
+}
+
+inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
+{
+#if RUNIN_LAMMPS_VERSION >= 20220324
+  comm->reverse_comm(pair);
+#else
+  comm->reverse_comm_pair(pair);
+#endif
+}
+
+inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
+{
+#if RUNIN_LAMMPS_VERSION >= 20220324
+  comm->forward_comm(fix);
+#else
+  comm->forward_comm_fix(fix);
+#endif
+}
+
+}    // namespace runin_compat

@@ -1,0 +1,58 @@
+#include "runin_styles.h"
+
+#include "compute_runin_friction.h"
+#include "fix_runin_wear_state.h"
+#include "pair_runin_asperity.h"
+
+#include "force.h"
+#include "lammps.h"
+#include "modify.h"
+
+using namespace LAMMPS_NS;
+
+namespace runin_lammps {
+
+namespace {
+template <typename T> void *create_pair(void *lmp)
+{
+  return new T(static_cast<LAMMPS *>(lmp));
+}
+template <typename T> void *create_with_args(void *lmp, int narg, char **arg)
+{
+  return new T(static_cast<LAMMPS *>(lmp), narg, arg);
+}
+template <typename T> Pair *pair_creator(LAMMPS *lmp)
+{
+  return new T(lmp);
+}
+template <typename T> Fix *fix_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new T(lmp, narg, arg);
+}
+template <typename T> Compute *compute_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new T(lmp, narg, arg);
+}
+}    // namespace
+
+const std::vector<StyleEntry> &styles()
+{
+  static const std::vector<StyleEntry> table = {
+      {"pair", "runin/asperity", "RunIn asperity contact: Hertz + Mindlin/Coulomb + Archard wear",
+       &create_pair<PairRuninAsperity>, nullptr},
+      {"fix", "RUNIN/WEAR_STATE", "RunIn per-atom wear state (internal)", nullptr,
+       &create_with_args<FixRuninWearState>},
+      {"compute", "runin/friction", "RunIn contact force, friction and wear sums", nullptr,
+       &create_with_args<ComputeRuninFriction>},
+  };
+  return table;
+}
+
+void register_styles(LAMMPS *lmp)
+{
+  (*lmp->force->pair_map)["runin/asperity"] = &pair_creator<PairRuninAsperity>;
+  (*lmp->modify->fix_map)["RUNIN/WEAR_STATE"] = &fix_creator<FixRuninWearState>;
+  (*lmp->modify->compute_map)["runin/friction"] = &compute_creator<ComputeRuninFriction>;
+}
+
+}    // namespace runin_lammps
