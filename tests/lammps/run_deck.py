@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""Deck-driven LAMMPS tests for RunIn (run by ctest; standard library only).
+
+  run_deck.py slider  --lmp LMP --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
+  run_deck.py compare DIR_A DIR_B
+  run_deck.py expect-error --lmp LMP --deck DECK --workdir DIR --pattern REGEX
+"""
+import argparse
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+
+def mpi_env():
+    env = dict(os.environ)
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+    env.setdefault("OMP_NUM_THREADS", "1")
+    return env
+
+
+def fresh_dir(path):
+    shutil.rmtree(path, ignore_errors=True)
+    os.makedirs(path)
+
+
+def thermo_blocks(log_text):
+    """Each run's thermo table as a list of dicts keyed by the header names."""
+    blocks, header, rows = [], None, []
+    for line in log_text.splitlines():
+        words = line.split()
+        if words and words[0] == "Step":
+            header, rows = words, []
+        elif header and line.startswith("Loop time"):
+            blocks.append(rows)
+            header = None
+        elif header and len(words) == len(header):
+            try:
+                rows.append(dict(zip(header, map(float, words))))
+            except ValueError:
+                pass
+    return blocks
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def run_slider(args):
+    fresh_dir(args.workdir)
+    command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck),
+               "-var", "coeffs", os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"),
+               "-var", "nsettle", "200", "-var", "nslide", "100", "-var", "thermo_every", "10",
+               "-log", "log.lammps", "-screen", "none"]
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+    log = open(os.path.join(args.workdir, "log.lammps")).read() if os.path.exists(
+        os.path.join(args.workdir, "log.lammps")) else ""
+    if result.returncode != 0:
+        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout}\n{result.stderr}\n{log[-2000:]}")
+    blocks = thermo_blocks(log)
+    if len(blocks) != 2:
+        fail(f"expected the settle and slide thermo tables, found {len(blocks)}")
+    sliding = blocks[1]
+    for row in blocks[0] + sliding:
+        for name, value in row.items():
+            if not math.isfinite(value):
+                fail(f"non-finite {name} at step {row['Step']}")
+    contacts = [row["c_fric[4]"] for row in sliding]
+    wear = [row["c_fric[5]"] for row in sliding]
+    mu = [row["c_fric[3]"] for row in sliding]
+    if min(contacts) <= 0:
+        fail(f"no contacts while sliding: {contacts}")
+    if wear[-1] <= 0:
+        fail(f"no wear after sliding: {wear}")
+    if any(b < a for a, b in zip(wear, wear[1:])) or wear[-1] <= wear[1]:
+        fail(f"wear volume must grow while sliding: {wear}")
+    if not 0.0 < max(mu) <= 0.95 + 1e-12:
+        fail(f"mu_eff outside (0, mu_s]: {mu}")
+    with open(os.path.join(args.workdir, "sliding.tsv"), "w") as out:
+        for row in sliding:
+            out.write(f"{int(row['Step'])}\t{row['c_fric[3]']!r}\t{row['c_fric[5]']!r}\n")
+    print(f"ok: {len(sliding)} sliding rows, contacts {min(contacts):.0f}-{max(contacts):.0f}, "
+          f"mu_eff {mu[-1]:.6g}, wear {wear[-1]:.6g} m^3")
+
+
+def compare(args):
+    def load(directory):
+        with open(os.path.join(directory, "sliding.tsv")) as f:
+            return [tuple(float(x) for x in line.split()) for line in f]
+
+    a, b = load(args.dir_a), load(args.dir_b)
+    if len(a) != len(b) or len(a) < 10:
+        fail(f"row counts differ or too few: {len(a)} vs {len(b)}")
+    worst = 0.0
+    for (step_a, mu_a, wear_a), (step_b, mu_b, wear_b) in zip(a, b):
+        if step_a != step_b:
+            fail(f"steps differ: {step_a} vs {step_b}")
+        for x, y in ((mu_a, mu_b), (wear_a, wear_b)):
+            scale = max(abs(x), abs(y))
+            if scale > 0:
+                worst = max(worst, abs(x - y) / scale)
+    if worst > 1e-8:
+        fail(f"mu_eff / wear differ between rank counts by {worst:.3e} relative (limit 1e-8)")
+    print(f"ok: {len(a)} rows agree, worst relative difference {worst:.3e}")
+
+
+def expect_error(args):
+    fresh_dir(args.workdir)
+    result = subprocess.run([args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"],
+                            cwd=args.workdir, env=mpi_env(), capture_output=True, text=True, timeout=60)
+    output = result.stdout + result.stderr
+    if result.returncode == 0:
+        fail("the deck was accepted; expected an ERROR")
+    if result.returncode < 0 or result.returncode >= 128:
+        fail(f"crashed with signal/status {result.returncode}\n{output}")
+    errors = [line for line in output.splitlines() if line.startswith("ERROR")]
+    if len(errors) != 1:
+        fail(f"expected exactly one ERROR line, got {errors}\n{output}")
+    if not re.search(args.pattern, errors[0]):
+        fail(f"ERROR line does not name the problem ({args.pattern!r}): {errors[0]}")
+    print("ok: " + errors[0])
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("slider")
+    for name in ("--lmp", "--mpiexec", "--deck", "--workdir"):
+        p.add_argument(name, required=True)
+    p.add_argument("--np", type=int, default=1)
+    p = sub.add_parser("compare")
+    p.add_argument("dir_a")
+    p.add_argument("dir_b")
+    p = sub.add_parser("expect-error")
+    for name in ("--lmp", "--deck", "--workdir", "--pattern"):
+        p.add_argument(name, required=True)
+    args = parser.parse_args()
+    {"slider": run_slider, "compare": compare, "expect-error": expect_error}[args.command](args)
+
+
+if __name__ == "__main__":
+    main()
