@@ -2,6 +2,7 @@
 """Deck-driven LAMMPS tests for RunIn (run by ctest; standard library only).
 
   run_deck.py slider  --lmp LMP --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
+  run_deck.py archard --lmp LMP --deck DECK --workdir DIR
   run_deck.py compare DIR_A DIR_B
   run_deck.py expect-error --lmp LMP --deck DECK --workdir DIR --pattern REGEX
 """
@@ -90,6 +91,28 @@ def run_slider(args):
           f"mu_eff {mu[-1]:.6g}, wear {wear[-1]:.6g} m^3")
 
 
+def archard_budget(args):
+    """Steady sliding: total wear must follow Archard, V = k W s / H_soft, for the deck's load."""
+    fresh_dir(args.workdir)
+    nslide, speed, dt, load = 4000, 2.0, 1.0e-10, 5.0e-2
+    k, hardness_al = 1.0e-3, 0.245e9    # potentials/CuAl.runin: pair Cu Al k, material Al H
+    command = [args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck),
+               "-var", "coeffs", os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"),
+               "-var", "nslide", str(nslide), "-var", "thermo_every", "1000", "-log", "log.lammps",
+               "-screen", "none"]
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+    if result.returncode != 0:
+        fail(f"lmp_runin exited with {result.returncode}: {result.stderr[-2000:]}")
+    sliding = thermo_blocks(open(os.path.join(args.workdir, "log.lammps")).read())[1]
+    worn = sliding[-1]["c_fric[5]"] - sliding[0]["c_fric[5]"]
+    expected = k * load * nslide * dt * speed / hardness_al
+    ratio = worn / expected
+    # below 1: sliding distance lost to the stick phase; above 1: sum F_n exceeds the load on tilted contacts
+    if not 0.9 <= ratio <= 1.05:
+        fail(f"wear {worn:.4e} m^3 vs Archard k W s / H = {expected:.4e} m^3 (ratio {ratio:.4f}, want 0.9-1.05)")
+    print(f"ok: wear {worn:.4e} m^3, Archard {expected:.4e} m^3, ratio {ratio:.4f}")
+
+
 def compare(args):
     def load(directory):
         with open(os.path.join(directory, "sliding.tsv")) as f:
@@ -135,6 +158,9 @@ def main():
     for name in ("--lmp", "--mpiexec", "--deck", "--workdir"):
         p.add_argument(name, required=True)
     p.add_argument("--np", type=int, default=1)
+    p = sub.add_parser("archard")
+    for name in ("--lmp", "--deck", "--workdir"):
+        p.add_argument(name, required=True)
     p = sub.add_parser("compare")
     p.add_argument("dir_a")
     p.add_argument("dir_b")
@@ -142,7 +168,7 @@ def main():
     for name in ("--lmp", "--deck", "--workdir", "--pattern"):
         p.add_argument(name, required=True)
     args = parser.parse_args()
-    {"slider": run_slider, "compare": compare, "expect-error": expect_error}[args.command](args)
+    {"slider": run_slider, "archard": archard_budget, "compare": compare, "expect-error": expect_error}[args.command](args)
 
 
 if __name__ == "__main__":
