@@ -1,0 +1,198 @@
+// runin: command-line driver of the continuum side.
+//   runin fit-law --input FILE --distance-column NAME --mu-column NAME --output law.json
+//   runin pin-on-disk CASE.toml [--law law.json] --output-dir DIR [--no-plot]
+// Exit codes: 0 success, 1 numerical/plot/I/O failure, 2 bad input.
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include "cli/case_file.h"
+#include "cli/staged_file.h"
+#include "continuum/pin_on_disk.h"
+#include "coupling/ave_time_reader.h"
+#include "coupling/friction_law.h"
+
+extern char **environ;
+
+namespace runin::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Numerical, plotting or file-system failure (exit code 1).
+class RunError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct FitLawOptions {
+  std::string input, distance_column, mu_column, output, distance_unit = "m";
+};
+
+int fit_law(const FitLawOptions &o) {
+  double metres = 0.0;
+  try {
+    metres = coupling::metres_per_unit(o.distance_unit);
+  } catch (const std::invalid_argument &e) {
+    throw InputError(std::string("--distance-unit: ") + e.what());
+  }
+  coupling::FitResult fit;
+  const coupling::AveTimeTable table = [&] {
+    try {
+      return coupling::read_ave_time(o.input);
+    } catch (const coupling::InputFormatError &e) {
+      throw InputError(e.what());
+    }
+  }();
+  coupling::FrictionLaw law = [&] {
+    try {
+      return coupling::build_law(table, o.distance_column, o.mu_column, o.distance_unit, &fit);
+    } catch (const coupling::InputFormatError &e) {
+      throw InputError(e.what());
+    }
+  }();
+  StagedFile out(fs::absolute(o.output));
+  out.write(coupling::law_to_json_text(law));
+  out.commit();
+
+  const auto &u = o.distance_unit;
+  fmt::print("runin fit-law: {} ({} rows) -> {}\n", o.input, table.rows(), o.output);
+  fmt::print("  columns      distance '{}' [{} = {:g} m], mu '{}'\n", o.distance_column, u, metres, o.mu_column);
+  fmt::print("  peak         mu = {:.6g} at s = {:.6g} {}\n", law.table.mu()[law.table.peak_index()],
+             law.peak_distance(), u);
+  if (law.fit) {
+    const auto &f = *law.fit;
+    fmt::print("  fit          mu(s) = mu_ss + (mu_0 - mu_ss) exp(-(s - s_peak)/s0) for s >= s_peak\n");
+    fmt::print("               mu_0 = {:.6g}, mu_ss = {:.6g}, s0 = {:.6g} {}, s_peak = {:.6g} {}\n", f.mu_0, f.mu_ss,
+               f.s0, u, f.s_peak, u);
+    fmt::print("               rms residual = {:.3g} over {} points (Levenberg-Marquardt)\n", f.rms_residual, f.points);
+  } else {
+    fmt::print("  fit          none ({}: {}); the law file holds the table only\n", coupling::to_string(fit.status),
+               fit.message);
+  }
+  return 0;
+}
+
+std::string csv_text(const std::vector<continuum::PinOnDiskSample> &samples) {
+  std::string text =
+      "t_s,applied_torque_N_m,friction_force_N,friction_torque_N_m,mu,speed_m_s,sliding_distance_m,state_slip,mu_law\n";
+  for (const auto &s : samples)
+    text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g}\n", s.t,
+                        s.applied_torque, s.friction_force, s.friction_torque, s.mu, s.speed, s.distance,
+                        s.state == continuum::ContactState::Slip ? 1 : 0, s.mu_law);
+  return text;
+}
+
+void run_plot(const fs::path &csv, const fs::path &png, const std::string &title) {
+  const char *python_env = std::getenv("RUNIN_PYTHON");
+  const std::string python = python_env && *python_env ? python_env : RUNIN_DEFAULT_PYTHON;
+  const std::string script = std::string(RUNIN_SOURCE_DIR) + "/tools/plot_curves.py";
+  std::vector<std::string> args = {python, script, csv.string(), png.string(), "--title", title};
+  std::vector<char *> argv;
+  for (auto &a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
+    throw RunError("cannot start " + python + " for the plot (set RUNIN_PYTHON or use --no-plot)");
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw RunError("plotting failed: " + python + " " + script + " (use --no-plot to skip)");
+}
+
+int pin_on_disk(const std::string &case_path, const std::optional<std::string> &law_path,
+                const std::string &output_dir, bool plot) {
+  const PinOnDiskCase c = read_pin_on_disk_case(case_path, law_path);
+  const continuum::PinOnDiskSystem system(c.parameters, *c.friction);
+  std::vector<continuum::PinOnDiskSample> samples;
+  const auto report = continuum::simulate(system, c.run, [&](const auto &s) { samples.push_back(s); });
+  if (!report.ok()) throw RunError(std::string(continuum::to_string(report.status)) + ": " + report.message);
+
+  // Everything is computed; only now touch the output directory.
+  std::error_code error;
+  fs::create_directories(output_dir, error);
+  if (error) throw RunError("cannot create " + output_dir + ": " + error.message());
+  StagedFile csv(fs::path(output_dir) / "pin_on_disk.csv");
+  csv.write(csv_text(samples));
+  std::optional<StagedFile> png;
+  if (plot) {
+    png.emplace(fs::path(output_dir) / "pin_on_disk.png");
+    run_plot(csv.temp_path(), png->temp_path(), c.title);
+  }
+  csv.commit();
+  if (png) png->commit();
+
+  const auto s = continuum::summarise(samples);
+  const auto &p = c.parameters;
+  auto or_none = [](double t) { return t < 0.0 ? std::string("none") : fmt::format("{:.6g} s", t); };
+  fmt::print("runin pin-on-disk: {}\n  {}\n", case_path, c.title);
+  fmt::print("  friction          {}\n", c.friction->description());
+  fmt::print("  applied torque    {:.6g} N m ({}), ramp {:g} s\n", p.applied_torque, c.torque_origin, p.ramp_time);
+  fmt::print("  static limit      {:.6g} N m (mu_static = {:.6g})\n", system.static_torque_limit(),
+             c.friction->static_coefficient());
+  fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
+  fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
+  fmt::print("  steady state      {} (friction force and speed within {:g} % of final values from then on)\n",
+             or_none(s.steady_time), 100 * continuum::PinOnDiskSummary::steady_tolerance);
+  fmt::print("  steady mu         {:.6g} = F / W; law part without the speed term {:.6g}\n", s.steady_mu,
+             s.steady_mu_law);
+  fmt::print("  final speed       {:.6g} m/s, sliding distance {:.6g} m at t = {:g} s\n", s.final_speed,
+             samples.back().distance, samples.back().t);
+  fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", report.steps,
+             report.breakaway_times.size(), report.restick_times.size());
+  fmt::print("  wrote             {}{}\n", csv.destination().string(),
+             png ? ", " + png->destination().string() : std::string());
+  return 0;
+}
+
+}  // namespace
+}  // namespace runin::cli
+
+int main(int argc, char **argv) {
+  using namespace runin::cli;
+  CLI::App app{"RunIn: multiscale run-in tribology toolkit (continuum side)", "runin"};
+  app.require_subcommand(1);
+
+  FitLawOptions fit;
+  auto *fit_cmd = app.add_subcommand("fit-law", "Fit mu(s) to LAMMPS fix ave/time (mode scalar) output");
+  fit_cmd->add_option("--input", fit.input, "fix ave/time output file")->required();
+  fit_cmd->add_option("--distance-column", fit.distance_column, "column with the sliding distance, e.g. v_slide")
+      ->required();
+  fit_cmd->add_option("--mu-column", fit.mu_column, "column with the friction coefficient, e.g. c_fric[3]")
+      ->required();
+  fit_cmd->add_option("--output", fit.output, "law file to write (JSON)")->required();
+  fit_cmd->add_option("--distance-unit", fit.distance_unit, "unit of the distance column: m, mm, um, nm, angstrom")
+      ->capture_default_str();
+
+  std::string case_path, output_dir;
+  std::optional<std::string> law_path;
+  bool no_plot = false;
+  auto *pod_cmd = app.add_subcommand("pin-on-disk", "Pin-on-disk run-in curve (thesis ch. 4)");
+  pod_cmd->add_option("case", case_path, "case file (TOML)")->required();
+  pod_cmd->add_option("--law", law_path, "law file from fit-law, for friction.model = \"law_file\"");
+  pod_cmd->add_option("--output-dir", output_dir, "directory for pin_on_disk.csv and pin_on_disk.png")->required();
+  pod_cmd->add_flag("--no-plot", no_plot, "write the CSV only");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError &e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  try {
+    if (fit_cmd->parsed()) return fit_law(fit);
+    return pin_on_disk(case_path, law_path, output_dir, !no_plot);
+  } catch (const InputError &e) {
+    std::cerr << "runin: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception &e) {
+    std::cerr << "runin: error: " << e.what() << "\n";
+    return 1;
+  }
+}

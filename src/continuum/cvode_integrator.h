@@ -1,0 +1,54 @@
+// Thin RAII wrapper around SUNDIALS CVODE (6.x API) with root finding. It knows nothing
+// about physics: systems hand it a right-hand side and root functions.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace runin::continuum {
+
+class CvodeIntegrator {
+ public:
+  using Rhs = std::function<void(double t, const double *y, double *ydot)>;
+  using Roots = std::function<void(double t, const double *y, double *g)>;
+
+  enum class Method { Bdf, Adams };
+  struct Settings {
+    Method method = Method::Bdf;
+    double rtol = 1e-8;
+    double atol = 1e-12;  // scalar, same for every component
+    long max_steps = 100000;  // per advance() call
+  };
+
+  enum class Outcome { ReachedTarget, FoundRoot, Failed };
+  struct StepResult {
+    Outcome outcome = Outcome::Failed;
+    double t = 0.0;
+    std::vector<int> roots_found;  // per root function: 0, or +-1 crossing direction
+    std::string message;           // CVODE's message when Failed
+  };
+
+  CvodeIntegrator(std::size_t size, Settings settings);
+  ~CvodeIntegrator();
+  CvodeIntegrator(const CvodeIntegrator &) = delete;
+  CvodeIntegrator &operator=(const CvodeIntegrator &) = delete;
+
+  // (Re)starts the integration at (t0, y0). `directions[i]` restricts root i to
+  // increasing (+1), decreasing (-1) or any (0) crossings.
+  void restart(double t0, const std::vector<double> &y0, Rhs rhs, Roots roots,
+               const std::vector<int> &directions);
+  // Integrates towards `target` without stepping past it; stops early at a root.
+  StepResult advance(double target);
+
+  const std::vector<double> &state() const { return state_; }
+  long total_steps() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::vector<double> state_;
+};
+
+}  // namespace runin::continuum

@@ -1,0 +1,232 @@
+#include "continuum/pin_on_disk.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace runin::continuum {
+namespace {
+void require(bool ok, const std::string &what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+int sign_of(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
+}  // namespace
+
+void PinOnDiskParameters::validate() const {
+  require(std::isfinite(mass) && mass > 0.0, "mass must be positive");
+  require(std::isfinite(track_radius) && track_radius > 0.0, "track_radius must be positive");
+  require(std::isfinite(normal_load) && normal_load > 0.0, "normal_load must be positive");
+  require(std::isfinite(applied_torque), "applied_torque must be finite");
+  require(std::isfinite(ramp_time) && ramp_time >= 0.0, "ramp_time must be >= 0");
+}
+
+void PinOnDiskRun::validate() const {
+  require(std::isfinite(t_end) && t_end > 0.0, "t_end must be positive");
+  require(std::isfinite(output_interval) && output_interval > 0.0, "output_interval must be positive");
+  require(t_end / output_interval <= 1e7, "output_interval gives more than 1e7 samples");
+  require(std::isfinite(initial_speed), "initial_speed must be finite");
+  require(max_events > 0, "max_events must be positive");
+}
+
+PinOnDiskSystem::PinOnDiskSystem(PinOnDiskParameters parameters, SlidingFriction friction)
+    : p_(parameters), friction_(std::move(friction)) {
+  p_.validate();
+}
+
+double PinOnDiskSystem::applied_torque(double t) const {
+  if (p_.ramp_time <= 0.0 || t >= p_.ramp_time) return p_.applied_torque;
+  return p_.applied_torque * std::max(t, 0.0) / p_.ramp_time;
+}
+
+double PinOnDiskSystem::static_torque_limit() const {
+  return friction_.static_coefficient() * p_.normal_load * p_.track_radius;
+}
+
+double PinOnDiskSystem::friction_torque(double t, const double *y, ContactState state, int direction) const {
+  if (state == ContactState::Stick) return applied_torque(t);  // whatever keeps w = 0
+  const double speed = p_.track_radius * y[0];
+  return direction * friction_.kinetic(y[1], speed) * p_.normal_load * p_.track_radius;
+}
+
+void PinOnDiskSystem::rhs(double t, const double *y, double *dydt, ContactState state, int direction) const {
+  if (state == ContactState::Stick) {
+    dydt[0] = 0.0;
+    dydt[1] = 0.0;
+    return;
+  }
+  dydt[0] = (applied_torque(t) - friction_torque(t, y, state, direction)) / p_.inertia();
+  // direction * V rather than |V|: smooth through the re-stick root, equal to |V| before it.
+  dydt[1] = direction * p_.track_radius * y[0];
+}
+
+PinOnDiskSample PinOnDiskSystem::sample(double t, const double *y, ContactState state, int direction) const {
+  PinOnDiskSample s;
+  s.t = t;
+  s.applied_torque = applied_torque(t);
+  s.friction_torque = friction_torque(t, y, state, direction);
+  s.friction_force = s.friction_torque / p_.track_radius;
+  s.mu = s.friction_force / p_.normal_load;
+  s.mu_law = friction_.kinetic(y[1], 0.0);
+  s.speed = state == ContactState::Stick ? 0.0 : p_.track_radius * y[0];
+  s.distance = y[1];
+  s.state = state;
+  return s;
+}
+
+const char *to_string(SolveStatus status) {
+  switch (status) {
+    case SolveStatus::Success: return "success";
+    case SolveStatus::IntegratorFailure: return "integrator failure";
+    case SolveStatus::TooManyEvents: return "too many stick/slip events";
+  }
+  return "unknown";
+}
+
+SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, const PinOnDiskObserver &observer) {
+  run.validate();
+  const double radius = system.parameters().track_radius;
+  const double ramp_end = system.parameters().ramp_time;
+  const double round_off = 64.0 * std::numeric_limits<double>::epsilon() * run.t_end;
+
+  SolveReport report;
+  CvodeIntegrator integrator(2, run.integrator);
+  std::vector<double> y = {run.initial_speed / radius, 0.0};
+  ContactState state = run.initial_speed != 0.0 ? ContactState::Slip : ContactState::Stick;
+  int direction = sign_of(run.initial_speed);
+  double t = 0.0;
+
+  auto emit = [&] { observer(system.sample(t, y.data(), state, direction)); };
+  // One CVODE problem per contact phase; its single root function is the phase's exit.
+  auto start_phase = [&] {
+    if (state == ContactState::Stick) {
+      y[0] = 0.0;
+      integrator.restart(
+          t, y, [&](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Stick, 0); },
+          [&](double tt, const double *, double *g) { g[0] = system.breakaway_function(tt); }, {+1});
+    } else {
+      const int dir = direction;
+      integrator.restart(
+          t, y, [&, dir](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Slip, dir); },
+          [dir](double, const double *yy, double *g) { g[0] = dir * yy[0]; }, {-1});
+    }
+  };
+  auto break_away = [&] {
+    report.breakaway_times.push_back(t);
+    state = ContactState::Slip;
+    direction = sign_of(system.applied_torque(t));
+    y[0] = 0.0;
+  };
+
+  // Already past the static limit at the start (step loading)?
+  if (state == ContactState::Stick && system.breakaway_function(t) > 0.0) {
+    emit();
+    break_away();
+  }
+  emit();
+  start_phase();
+
+  long next_grid = 1;
+  int events = 0;
+  while (t < run.t_end - round_off) {
+    const double grid_time = std::min(static_cast<double>(next_grid) * run.output_interval, run.t_end);
+    const bool ramp_end_first = t < ramp_end - round_off && ramp_end < grid_time - round_off;
+    const double target = ramp_end_first ? ramp_end : grid_time;
+
+    const auto step = integrator.advance(target);
+    y = integrator.state();
+    t = step.t;
+    if (step.outcome == CvodeIntegrator::Outcome::Failed) {
+      report.status = SolveStatus::IntegratorFailure;
+      report.message = "CVODE failed at t = " + std::to_string(t) + " s: " + step.message;
+      break;
+    }
+    if (step.outcome == CvodeIntegrator::Outcome::FoundRoot) {
+      emit();  // the event time joins the output, before and after the transition
+      if (++events > run.max_events) {
+        report.status = SolveStatus::TooManyEvents;
+        report.message = "more than " + std::to_string(run.max_events) + " stick/slip events by t = " +
+                         std::to_string(t) + " s";
+        break;
+      }
+      if (state == ContactState::Stick) {
+        break_away();
+      } else if (system.breakaway_function(t) <= 0.0) {  // w reached 0 below the static limit
+        report.restick_times.push_back(t);
+        state = ContactState::Stick;
+        direction = 0;
+      } else {  // w reached 0 but the torque exceeds the static limit: slide the other way
+        report.breakaway_times.push_back(t);
+        direction = sign_of(system.applied_torque(t));
+        y[0] = 0.0;
+      }
+      emit();
+      start_phase();
+      continue;
+    }
+    emit();
+    if (ramp_end_first) {
+      start_phase();  // restart at the kink of T_app(t) instead of stepping across it
+    } else {
+      ++next_grid;
+    }
+  }
+  report.end_time = t;
+  report.steps = integrator.total_steps();
+  return report;
+}
+
+double thesis_speed(const PinOnDiskParameters &p, double mu0, double alpha, double v0, double t) {
+  const double drive = p.applied_torque / p.track_radius - mu0 * p.normal_load;  // N
+  if (alpha == 0.0) return v0 + drive * t / p.mass;
+  const double v_ss = drive / (alpha * p.normal_load);
+  return v_ss + (v0 - v_ss) * std::exp(-alpha * p.normal_load * t / p.mass);
+}
+
+double thesis_torque_for_speed(const PinOnDiskParameters &p, double mu0, double alpha, double v0, double v1,
+                               double t1) {
+  require(t1 > 0.0, "target time must be positive");
+  if (alpha == 0.0) return p.track_radius * (mu0 * p.normal_load + p.mass * (v1 - v0) / t1);
+  const double decay = std::exp(-alpha * p.normal_load * t1 / p.mass);
+  const double v_ss = (v1 - v0 * decay) / (1.0 - decay);
+  return p.track_radius * p.normal_load * (mu0 + alpha * v_ss);
+}
+
+PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples) {
+  PinOnDiskSummary summary;
+  if (samples.empty()) return summary;
+  for (const auto &s : samples)
+    if (std::abs(s.friction_force) > std::abs(summary.peak_friction_force)) summary.peak_friction_force = s.friction_force;
+  // Peak time: first sample within 1e-6 of the maximum (a held plateau has round-off wiggles).
+  for (const auto &s : samples)
+    if (std::abs(s.friction_force) >= (1.0 - 1e-6) * std::abs(summary.peak_friction_force)) {
+      summary.peak_time = s.t;
+      break;
+    }
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const auto &s = samples[i];
+    if (summary.breakaway_time < 0.0 && i > 0 && samples[i - 1].state == ContactState::Stick &&
+        s.state == ContactState::Slip)
+      summary.breakaway_time = s.t;
+  }
+  const auto &last = samples.back();
+  summary.steady_mu = last.mu;
+  summary.steady_mu_law = last.mu_law;
+  summary.final_speed = last.speed;
+  const double tol = PinOnDiskSummary::steady_tolerance;
+  const double force_band = tol * std::abs(last.friction_force);
+  const double speed_band = tol * std::abs(last.speed);
+  double steady_from = samples.front().t;
+  for (std::size_t i = samples.size(); i-- > 0;) {
+    const auto &s = samples[i];
+    if (std::abs(s.friction_force - last.friction_force) > force_band || std::abs(s.speed - last.speed) > speed_band) {
+      steady_from = i + 1 < samples.size() ? samples[i + 1].t : last.t;
+      break;
+    }
+  }
+  const double t0 = samples.front().t;
+  if (steady_from <= t0 + 0.9 * (last.t - t0)) summary.steady_time = steady_from;
+  return summary;
+}
+
+}  // namespace runin::continuum

@@ -1,0 +1,116 @@
+// Pin-on-disk tribometer (thesis ch. 4): a pin of mass m at track radius r, pressed with
+// load W, driven about the disk axis by an applied torque that ramps up and is held:
+//   J dw/dt = T_app(t) - T_f,   J = m r^2,   V = r w,   ds/dt = |V|
+//   stick: w = 0, T_f = T_app            while |T_app| < mu_static W r
+//   slip:  T_f = sign(w) mu(s, |V|) W r
+// Break-away and re-stick are events located by CVODE root finding.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "continuum/cvode_integrator.h"
+#include "continuum/sliding_friction.h"
+
+namespace runin::continuum {
+
+struct PinOnDiskParameters {
+  double mass = 0.0;            // kg, pin as a point mass on the track
+  double track_radius = 0.0;    // m
+  double normal_load = 0.0;     // N
+  double applied_torque = 0.0;  // N m, held after the ramp
+  double ramp_time = 2.0;       // s, linear ramp from 0; 0 = step at t = 0
+
+  void validate() const;  // throws std::invalid_argument naming the field
+  double inertia() const { return mass * track_radius * track_radius; }
+};
+
+enum class ContactState { Stick = 0, Slip = 1 };
+
+struct PinOnDiskSample {
+  double t = 0.0;
+  double applied_torque = 0.0;   // N m
+  double friction_force = 0.0;   // N, = friction_torque / r
+  double friction_torque = 0.0;  // N m, resisting torque in J dw/dt = T_app - T_f
+  double mu = 0.0;               // mobilised coefficient friction_force / W (stick: below mu_static)
+  double mu_law = 0.0;           // the law's sliding value at this s without the speed term
+  double speed = 0.0;            // m/s, V = r w
+  double distance = 0.0;         // m, accumulated sliding distance s
+  ContactState state = ContactState::Stick;
+};
+
+// The physics only: right-hand side, friction torque and event functions for y = (w, s).
+class PinOnDiskSystem {
+ public:
+  PinOnDiskSystem(PinOnDiskParameters parameters, SlidingFriction friction);
+
+  const PinOnDiskParameters &parameters() const { return p_; }
+  const SlidingFriction &friction() const { return friction_; }
+
+  double applied_torque(double t) const;
+  double static_torque_limit() const;  // mu_static W r
+  // `direction` = +-1 is the sliding direction (sign of w) in slip, unused in stick.
+  double friction_torque(double t, const double *y, ContactState state, int direction) const;
+  void rhs(double t, const double *y, double *dydt, ContactState state, int direction) const;
+  // Stick ends when this crosses zero upwards.
+  double breakaway_function(double t) const { return std::abs(applied_torque(t)) - static_torque_limit(); }
+  PinOnDiskSample sample(double t, const double *y, ContactState state, int direction) const;
+
+ private:
+  PinOnDiskParameters p_;
+  SlidingFriction friction_;
+};
+
+struct PinOnDiskRun {
+  double t_end = 4.0;             // s
+  double output_interval = 1e-3;  // s; events and the ramp end are added to the grid
+  double initial_speed = 0.0;     // m/s; nonzero starts in slip
+  CvodeIntegrator::Settings integrator;
+  int max_events = 1000;          // guards against stick-slip chattering
+
+  void validate() const;
+};
+
+enum class SolveStatus { Success, IntegratorFailure, TooManyEvents };
+const char *to_string(SolveStatus status);
+
+struct SolveReport {
+  SolveStatus status = SolveStatus::Success;
+  std::string message;            // empty on success
+  double end_time = 0.0;          // where the integration stopped
+  std::vector<double> breakaway_times;
+  std::vector<double> restick_times;
+  long steps = 0;                 // CVODE internal steps
+
+  bool ok() const { return status == SolveStatus::Success; }
+};
+
+using PinOnDiskObserver = std::function<void(const PinOnDiskSample &)>;
+
+// The stepper: CVODE per contact phase, restarted at each event and at the ramp end.
+// Numerical failure is reported in the status, bad settings throw std::invalid_argument.
+SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, const PinOnDiskObserver &observer);
+
+// Thesis eq. 4.10/4.11: speed under a constant torque T with mu = mu0 + alpha V,
+// sliding from V0: V(t) = V_ss + (V0 - V_ss) exp(-alpha W t / m),
+// V_ss = (T / r - mu0 W) / (alpha W). alpha = 0 gives the constant-acceleration limit.
+double thesis_speed(const PinOnDiskParameters &p, double mu0, double alpha, double v0, double t);
+// Eq. 4.11 solved for T: the constant torque that takes the pin from V0 to V1 at t1.
+double thesis_torque_for_speed(const PinOnDiskParameters &p, double mu0, double alpha, double v0, double v1,
+                               double t1);
+
+// One-screen numbers of a run.
+struct PinOnDiskSummary {
+  double peak_friction_force = 0.0, peak_time = 0.0;
+  double breakaway_time = -1.0;  // -1: never broke away
+  double steady_time = -1.0;     // -1: not steady (see steady_tolerance)
+  double steady_mu = 0.0, steady_mu_law = 0.0, final_speed = 0.0;  // final values
+  static constexpr double steady_tolerance = 0.01;  // relative, on friction force and speed
+};
+// Peak: largest |friction force|, timed at the first sample within 1e-6 of it.
+// Steady from the first sample after which friction force and speed stay within
+// steady_tolerance of their final values; "not steady" if that is in the last 10 % of the run.
+PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples);
+
+}  // namespace runin::continuum

@@ -1,0 +1,54 @@
+#include "continuum/sliding_friction.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace runin::continuum {
+namespace {
+void require(bool ok, const std::string &what) {
+  if (!ok) throw std::invalid_argument("friction: " + what);
+}
+std::string format(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+}  // namespace
+
+SlidingFriction::SlidingFriction(double mu_static, std::function<double(double)> mu_kinetic, double alpha,
+                                 std::string description)
+    : mu_static_(mu_static), mu_kinetic_(std::move(mu_kinetic)), alpha_(alpha),
+      description_(std::move(description)) {
+  require(std::isfinite(mu_static_) && mu_static_ >= 0.0, "static coefficient must be >= 0");
+  require(std::isfinite(alpha_), "alpha must be finite");
+}
+
+SlidingFriction SlidingFriction::constant(double mu0, double alpha) {
+  require(std::isfinite(mu0) && mu0 >= 0.0, "mu0 must be >= 0");
+  return SlidingFriction(mu0, [mu0](double) { return mu0; }, alpha,
+                         "mu = " + format(mu0) + " + " + format(alpha) + " V");
+}
+
+SlidingFriction SlidingFriction::static_kinetic(double mu_static, double mu_kinetic, double alpha) {
+  require(std::isfinite(mu_kinetic) && mu_kinetic >= 0.0, "mu_kinetic must be >= 0");
+  return SlidingFriction(mu_static, [mu_kinetic](double) { return mu_kinetic; }, alpha,
+                         "mu_static = " + format(mu_static) + ", mu = " + format(mu_kinetic) + " + " +
+                             format(alpha) + " V");
+}
+
+SlidingFriction SlidingFriction::from_law(const coupling::FrictionLaw &law, coupling::FrictionLaw::Branch branch,
+                                          double distance_scale, double alpha) {
+  require(std::isfinite(distance_scale) && distance_scale > 0.0, "distance_scale must be > 0");
+  const double s_peak = law.peak_distance();
+  const double metres_per_micro_unit = distance_scale * law.distance_unit_in_m;
+  auto mu_of_distance = [law, branch, s_peak, metres_per_micro_unit](double s) {
+    return law.evaluate(s_peak + s / metres_per_micro_unit, branch);
+  };
+  const bool fitted = branch == coupling::FrictionLaw::Branch::Fit && law.fit;
+  return SlidingFriction(law.evaluate(s_peak, branch), mu_of_distance, alpha,
+                         std::string("law file ") + law.source_file + " (" + (fitted ? "fit" : "table") +
+                             "), distance_scale = " + format(distance_scale) + ", + " + format(alpha) + " V");
+}
+
+}  // namespace runin::continuum
