@@ -19,6 +19,10 @@
 #include "continuum/pin_on_disk.h"
 #include "coupling/ave_time_reader.h"
 #include "coupling/friction_law.h"
+#include "coupling/lammps_dump.h"
+#ifdef RUNIN_HAVE_VTK
+#include "coupling/vtk_export.h"
+#endif
 
 extern char **environ;
 
@@ -152,6 +156,23 @@ int pin_on_disk(const std::string &case_path, const std::optional<std::string> &
   return 0;
 }
 
+int dump_to_vtk(const std::string &dump_path, const std::string &output_dir, const std::string &stem) {
+#ifdef RUNIN_HAVE_VTK
+  std::vector<coupling::DumpSnapshot> snapshots;
+  try {
+    snapshots = coupling::read_custom_dump(dump_path);
+  } catch (const coupling::InputFormatError &e) {
+    throw InputError(e.what());
+  }
+  const auto written = coupling::write_vtk_series(snapshots, dump_path, output_dir, stem);
+  fmt::print("runin dump-to-vtk: {} snapshot(s) of {} -> {}\n", snapshots.size(), dump_path, written.back());
+  return 0;
+#else
+  (void)dump_path, (void)output_dir, (void)stem;
+  throw RunError("this runin was built without VTK (configure with -DRUNIN_WITH_VTK=ON)");
+#endif
+}
+
 }  // namespace
 }  // namespace runin::cli
 
@@ -180,6 +201,12 @@ int main(int argc, char **argv) {
   pod_cmd->add_option("--output-dir", output_dir, "directory for pin_on_disk.csv and pin_on_disk.png")->required();
   pod_cmd->add_flag("--no-plot", no_plot, "write the CSV only");
 
+  std::string dump_path, vtk_dir, vtk_stem = "asperities";
+  auto *vtk_cmd = app.add_subcommand("dump-to-vtk", "Convert a LAMMPS custom dump to VTK (.vtp per snapshot + .pvd)");
+  vtk_cmd->add_option("dump", dump_path, "LAMMPS dump file (style custom with x y z columns)")->required();
+  vtk_cmd->add_option("--output-dir", vtk_dir, "directory for the .vtp files and the .pvd collection")->required();
+  vtk_cmd->add_option("--stem", vtk_stem, "file name stem")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
@@ -187,6 +214,7 @@ int main(int argc, char **argv) {
   }
   try {
     if (fit_cmd->parsed()) return fit_law(fit);
+    if (vtk_cmd->parsed()) return dump_to_vtk(dump_path, vtk_dir, vtk_stem);
     return pin_on_disk(case_path, law_path, output_dir, !no_plot);
   } catch (const InputError &e) {
     std::cerr << "runin: error: " << e.what() << "\n";

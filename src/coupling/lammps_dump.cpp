@@ -1,0 +1,58 @@
+#include "coupling/lammps_dump.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace runin::coupling {
+
+std::size_t DumpSnapshot::column(const std::string &name, const std::string &file) const {
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c] == name) return c;
+  throw InputFormatError(file + ": dump has no column '" + name + "'");
+}
+
+std::vector<DumpSnapshot> read_custom_dump(const std::string &path) {
+  std::ifstream in(path);
+  if (!in) throw InputFormatError(path + ": cannot open dump file");
+  std::vector<DumpSnapshot> snapshots;
+  std::string line;
+  int lineno = 0;
+  auto next = [&](const char *expect) {
+    if (!std::getline(in, line)) throw InputFormatError(path + ":" + std::to_string(lineno) + ": truncated, expected " + expect);
+    ++lineno;
+  };
+  auto bad = [&](const std::string &what) { return InputFormatError(path + ":" + std::to_string(lineno) + ": " + what); };
+
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (line.empty()) continue;
+    if (line.rfind("ITEM: TIMESTEP", 0) != 0) throw bad("expected 'ITEM: TIMESTEP'");
+    DumpSnapshot snap;
+    next("the timestep");
+    try { snap.timestep = std::stoll(line); } catch (...) { throw bad("timestep is not an integer"); }
+    next("'ITEM: NUMBER OF ATOMS'");
+    next("the atom count");
+    long long natoms = 0;
+    try { natoms = std::stoll(line); } catch (...) { throw bad("atom count is not an integer"); }
+    if (natoms < 0) throw bad("negative atom count");
+    next("'ITEM: BOX BOUNDS'");
+    for (int d = 0; d < 3; ++d) next("box bounds");
+    next("'ITEM: ATOMS ...'");
+    if (line.rfind("ITEM: ATOMS", 0) != 0) throw bad("expected 'ITEM: ATOMS'");
+    std::istringstream header(line.substr(11));
+    for (std::string name; header >> name;) snap.columns.push_back(name);
+    if (snap.columns.empty()) throw bad("no columns in 'ITEM: ATOMS'");
+    snap.values.assign(snap.columns.size(), std::vector<double>(natoms));
+    for (long long a = 0; a < natoms; ++a) {
+      next("an atom line");
+      std::istringstream row(line);
+      for (auto &column : snap.values)
+        if (!(row >> column[a])) throw bad("expected " + std::to_string(snap.columns.size()) + " numbers");
+    }
+    snapshots.push_back(std::move(snap));
+  }
+  if (snapshots.empty()) throw InputFormatError(path + ": no snapshot in dump file");
+  return snapshots;
+}
+
+}  // namespace runin::coupling
