@@ -98,6 +98,21 @@ void PairRuninAsperity::allocate()
   coeffs.assign((n + 1) * (n + 1), Coefficients());
 }
 
+PairRuninAsperity::Coefficients PairRuninAsperity::Coefficients::unpack(const double *v)
+{
+  Coefficients c;
+  c.effective_modulus = v[0];
+  c.effective_shear_modulus = v[1];
+  c.restitution = v[2];
+  c.mu_static = v[3];
+  c.mu_kinetic = v[4];
+  c.slip_weakening_distance = v[5];
+  c.wear_coefficient = v[6];
+  c.hardness_i = v[7];
+  c.hardness_j = v[8];
+  return c;
+}
+
 PairRuninAsperity::Coefficients &PairRuninAsperity::coeff_of(int itype, int jtype)
 {
   return coeffs[itype * (atom->ntypes + 1) + jtype];
@@ -151,20 +166,14 @@ void PairRuninAsperity::coeff(int narg, char **arg)
     origin = "file";
   } else if (narg == 10) {
     const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
-    double v[8];
+    double v[Coefficients::NPACKED];
     for (int k = 0; k < 8; k++) {
       if (!utils::is_double(arg[2 + k]))
         error->all(FLERR, "pair_coeff runin/asperity: {} must be a number, got '{}'", names[k], arg[2 + k]);
       v[k] = utils::numeric(FLERR, arg[2 + k], false, lmp);
     }
-    c.effective_modulus = v[0];
-    c.effective_shear_modulus = v[1];
-    c.restitution = v[2];
-    c.mu_static = v[3];
-    c.mu_kinetic = v[4];
-    c.slip_weakening_distance = v[5];
-    c.wear_coefficient = v[6];
-    c.hardness_i = c.hardness_j = v[7];
+    v[8] = v[7];    // one hardness for both types
+    c = Coefficients::unpack(v);
   } else {
     error->all(FLERR,
                "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values) or "
@@ -195,9 +204,8 @@ void PairRuninAsperity::coeff(int narg, char **arg)
 PairRuninAsperity::Coefficients PairRuninAsperity::read_coefficients_file(
     const std::string &file, const std::string &material_i, const std::string &material_j)
 {
-  Coefficients c;
   std::string problem;
-  double packed[9] = {0};
+  double packed[Coefficients::NPACKED] = {0};
   if (comm->me == 0) {
     FILE *fp = utils::open_potential(file, lmp, nullptr);
     if (!fp) {
@@ -244,9 +252,10 @@ PairRuninAsperity::Coefficients PairRuninAsperity::read_coefficients_file(
         else {
           const auto &mi = materials[material_i], &mj = materials[material_j];
           const auto &v = *pair_values;
-          double tmp[9] = {tribo::effective_modulus(mi, mj), tribo::effective_shear_modulus(mi, mj),
-                           v[0], v[1], v[2], v[3], v[4], mi.hardness, mj.hardness};
-          std::copy(tmp, tmp + 9, packed);
+          const double values[Coefficients::NPACKED] = {
+              tribo::effective_modulus(mi, mj), tribo::effective_shear_modulus(mi, mj),
+              v[0], v[1], v[2], v[3], v[4], mi.hardness, mj.hardness};
+          std::copy(values, values + Coefficients::NPACKED, packed);
         }
       } catch (const TokenizerException &e) {
         problem = fmt::format("{} line {}: {}", file, lineno, e.what());
@@ -261,17 +270,8 @@ PairRuninAsperity::Coefficients PairRuninAsperity::read_coefficients_file(
   problem.resize(length);
   MPI_Bcast(&problem[0], length, MPI_CHAR, 0, world);
   if (length) error->all(FLERR, "pair_coeff runin/asperity: {}", problem);
-  MPI_Bcast(packed, 9, MPI_DOUBLE, 0, world);
-  c.effective_modulus = packed[0];
-  c.effective_shear_modulus = packed[1];
-  c.restitution = packed[2];
-  c.mu_static = packed[3];
-  c.mu_kinetic = packed[4];
-  c.slip_weakening_distance = packed[5];
-  c.wear_coefficient = packed[6];
-  c.hardness_i = packed[7];
-  c.hardness_j = packed[8];
-  return c;
+  MPI_Bcast(packed, Coefficients::NPACKED, MPI_DOUBLE, 0, world);
+  return Coefficients::unpack(packed);
 }
 
 void PairRuninAsperity::init_style()

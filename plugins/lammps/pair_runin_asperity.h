@@ -31,6 +31,10 @@ class PairRuninAsperity : public Pair {
     double mu_static = 0.0, mu_kinetic = 0.0, slip_weakening_distance = 0.0;
     double wear_coefficient = 0.0;         // k [-]
     double hardness_i = 0.0, hardness_j = 0.0;  // H of the type-I and type-J asperity [Pa]
+
+    // From {E*, G*, e, mu_s, mu_k, d_c, k, H_I, H_J}, the order of the explicit pair_coeff form.
+    static constexpr int NPACKED = 9;
+    static Coefficients unpack(const double *values);
   };
 
   // Sums over this rank's contacts in the last force evaluation (read by compute runin/friction).
