@@ -6,6 +6,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_dummy.h"
 #include "fix_neigh_history.h"
@@ -143,6 +144,19 @@ void PairRuninAsperity::settings(int narg, char **arg)
       error->all(FLERR, "pair_style runin/asperity: unknown keyword '{}' (expected wear or archard)", keyword);
     }
   }
+  if (wear_on && domain->box_exist) attach_wear_state();
+}
+
+// The per-atom wear state exists from pair_style on, so dumps and computes can name it before a run.
+void PairRuninAsperity::attach_wear_state()
+{
+  if (fix_wear) return;
+  const int ifix = modify->find_fix(FixRuninWearState::default_id);
+  if (ifix >= 0)
+    fix_wear = dynamic_cast<FixRuninWearState *>(modify->fix[ifix]);
+  else
+    fix_wear = dynamic_cast<FixRuninWearState *>(
+        modify->add_fix(fmt::format("{} all RUNIN/WEAR_STATE", FixRuninWearState::default_id)));
 }
 
 void PairRuninAsperity::validate(const Coefficients &c, const char *origin)
@@ -290,14 +304,7 @@ void PairRuninAsperity::init_style()
     fix_history->pair = this;
     fix_dummy = nullptr;
   }
-  if (wear_on && !fix_wear) {
-    const int ifix = modify->find_fix(FixRuninWearState::default_id);
-    if (ifix >= 0)
-      fix_wear = dynamic_cast<FixRuninWearState *>(modify->fix[ifix]);
-    else
-      fix_wear = dynamic_cast<FixRuninWearState *>(
-          modify->add_fix(fmt::format("{} all RUNIN/WEAR_STATE", FixRuninWearState::default_id)));
-  }
+  if (wear_on) attach_wear_state();    // after read_restart, pair_style settings did not run
 
   // largest radius per type bounds the contact cutoff
   std::vector<double> local(atom->ntypes + 1, 0.0);

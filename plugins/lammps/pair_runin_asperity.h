@@ -95,6 +95,7 @@ class PairRuninAsperity : public Pair {
   class FixRuninWearState *fix_wear;
 
   void allocate();
+  void attach_wear_state();
   Coefficients &coeff_of(int itype, int jtype);
   Coefficients read_coefficients_file(const std::string &file, const std::string &material_i,
                                       const std::string &material_j);
