@@ -1,6 +1,7 @@
 #include "runin_styles.h"
 
 #include "compute_runin_friction.h"
+#include "compute_runin_roughness.h"
 #include "fix_runin_wear_state.h"
 #include "pair_runin_asperity.h"
 
@@ -44,6 +45,8 @@ const std::vector<StyleEntry> &styles()
        &create_with_args<FixRuninWearState>},
       {"compute", "runin/friction", "RunIn contact force, friction and wear sums", nullptr,
        &create_with_args<ComputeRuninFriction>},
+      {"compute", "runin/roughness", "RunIn surface statistics (Ra, Rq, Rsk, Rku, Rp, Rv, Rz, bearing ratio)",
+       nullptr, &create_with_args<ComputeRuninRoughness>},
   };
   return table;
 }
@@ -53,6 +56,7 @@ void register_styles(LAMMPS *lmp)
   (*lmp->force->pair_map)["runin/asperity"] = &pair_creator<PairRuninAsperity>;
   (*lmp->modify->fix_map)["RUNIN/WEAR_STATE"] = &fix_creator<FixRuninWearState>;
   (*lmp->modify->compute_map)["runin/friction"] = &compute_creator<ComputeRuninFriction>;
+  (*lmp->modify->compute_map)["runin/roughness"] = &compute_creator<ComputeRuninRoughness>;
 }
 
 }    // namespace runin_lammps

@@ -4,6 +4,7 @@
   run_deck.py slider  --lmp LMP --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
   run_deck.py archard --lmp LMP --deck DECK --workdir DIR
   run_deck.py compare DIR_A DIR_B
+  run_deck.py roughness --lmp LMP --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
   run_deck.py expect-error --lmp LMP --deck DECK --workdir DIR --pattern REGEX
 """
 import argparse
@@ -134,6 +135,89 @@ def compare(args):
     print(f"ok: {len(a)} rows agree, worst relative difference {worst:.3e}")
 
 
+def deck_roughness_closed_form(deck_text):
+    """Closed-form statistics of every compute runin/roughness in a deck of literal atoms.
+
+    Reads 'create_atoms T single X Y Z', 'set atom ID diameter D', 'group NAME type T' and
+    'compute ID GROUP runin/roughness [bearing d...] [side up|down] [mean z]'. Returns
+    {compute id: (statistics list, {atom id: height above the mean plane})}."""
+    atoms, groups, computes = [], {}, []
+    for line in deck_text.splitlines():
+        words = line.split("#")[0].split()
+        if len(words) >= 6 and words[0] == "create_atoms" and words[2] == "single":
+            atoms.append({"type": int(words[1]), "z": float(words[5]), "radius": 0.5})
+        elif len(words) == 5 and words[0] == "set" and words[1] == "atom" and words[3] == "diameter":
+            atoms[int(words[2]) - 1]["radius"] = 0.5 * float(words[4])
+        elif len(words) == 4 and words[0] == "group" and words[2] == "type":
+            groups[words[1]] = int(words[3])
+        elif len(words) >= 4 and words[0] == "compute" and words[3] == "runin/roughness":
+            depths, sign, rest = [], 1.0, words[4:]
+            i = 0
+            while i < len(rest):
+                if rest[i] == "bearing":
+                    i += 1
+                    while i < len(rest) and re.fullmatch(r"[-+0-9.eE]+", rest[i]):
+                        depths.append(float(rest[i]))
+                        i += 1
+                else:
+                    if rest[i] == "side":
+                        sign = -1.0 if rest[i + 1] == "down" else 1.0
+                    i += 2
+            computes.append((words[1], words[2], depths, sign))
+    result = {}
+    for name, group, depths, sign in computes:
+        members = [(k + 1, sign * a["z"] + a["radius"]) for k, a in enumerate(atoms)
+                   if group == "all" or a["type"] == groups[group]]
+        h = [v for _, v in members]
+        n = len(h)
+        mean = sum(h) / n
+        d = [v - mean for v in h]
+        m2, m3, m4 = (sum(x ** p for x in d) / n for p in (2, 3, 4))
+        ra = sum(abs(x) for x in d) / n
+        rp, rv = max(h) - mean, mean - min(h)
+        stats = [ra, math.sqrt(m2), m3 / m2 ** 1.5, m4 / m2 ** 2, rp, rv, rp + rv]
+        stats += [sum(1 for v in h if v >= max(h) - depth) / n for depth in depths]
+        result[name] = (stats, {atom_id: v - mean for atom_id, v in members})
+    return result
+
+
+def roughness(args):
+    """compute runin/roughness: every global statistic and per-atom height vs the closed form."""
+    fresh_dir(args.workdir)
+    deck = os.path.join(SOURCE_DIR, args.deck)
+    command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", deck, "-log", "log.lammps", "-screen", "none"]
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+    log_path = os.path.join(args.workdir, "log.lammps")
+    log = open(log_path).read() if os.path.exists(log_path) else ""
+    if result.returncode != 0:
+        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout}\n{result.stderr}\n{log[-2000:]}")
+    if args.np > 1 and f"with {args.np} MPI tasks" not in log:
+        fail(f"the run did not use {args.np} MPI ranks")
+    expected = deck_roughness_closed_form(open(deck).read())
+    row = thermo_blocks(log)[-1][-1]
+    worst, checked = 0.0, 0
+    for name, (stats, _) in expected.items():
+        for k, value in enumerate(stats, start=1):
+            got = row[f"c_{name}[{k}]"]
+            error = abs(got - value) / abs(value) if value != 0 else abs(got)
+            if error > 1e-10:
+                fail(f"c_{name}[{k}] = {got!r}, closed form {value!r} (relative error {error:.3e} > 1e-10)")
+            worst, checked = max(worst, error), checked + 1
+    # per-atom summit heights above the mean plane, from the dump
+    lines = open(os.path.join(args.workdir, "heights.dump")).read().splitlines()
+    columns = lines[lines.index(next(l for l in lines if l.startswith("ITEM: ATOMS")))].split()[2:]
+    body = [dict(zip(columns, map(float, l.split()))) for l in lines[lines.index(
+        next(l for l in lines if l.startswith("ITEM: ATOMS"))) + 1:]]
+    for name, (stats, heights) in expected.items():
+        scale = max(abs(v) for v in heights.values())
+        for atom in body:
+            want = heights.get(int(atom["id"]), 0.0)
+            if abs(atom[f"c_{name}"] - want) > 1e-10 * scale:
+                fail(f"atom {int(atom['id'])}: c_{name} = {atom[f'c_{name}']!r}, closed form {want!r}")
+            checked += 1
+    print(f"ok: {checked} values on {args.np} rank(s) match the closed form, worst global relative error {worst:.3e}")
+
+
 def expect_error(args):
     fresh_dir(args.workdir)
     result = subprocess.run([args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"],
@@ -164,11 +248,16 @@ def main():
     p = sub.add_parser("compare")
     p.add_argument("dir_a")
     p.add_argument("dir_b")
+    p = sub.add_parser("roughness")
+    for name in ("--lmp", "--mpiexec", "--deck", "--workdir"):
+        p.add_argument(name, required=True)
+    p.add_argument("--np", type=int, default=1)
     p = sub.add_parser("expect-error")
     for name in ("--lmp", "--deck", "--workdir", "--pattern"):
         p.add_argument(name, required=True)
     args = parser.parse_args()
-    {"slider": run_slider, "archard": archard_budget, "compare": compare, "expect-error": expect_error}[args.command](args)
+    {"slider": run_slider, "archard": archard_budget, "compare": compare, "roughness": roughness,
+     "expect-error": expect_error}[args.command](args)
 
 
 if __name__ == "__main__":

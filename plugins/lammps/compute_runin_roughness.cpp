@@ -1,0 +1,157 @@
+#include "compute_runin_roughness.h"
+
+#include "tribo/surface_statistics.h"
+
+#include "atom.h"
+#include "error.h"
+#include "memory.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cstring>
+#include <exception>
+#include <string>
+
+using namespace LAMMPS_NS;
+
+ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), sign(1.0), nmax(0), height(nullptr)
+{
+  int iarg = 3;
+  bool seen_bearing = false;
+  while (iarg < narg) {
+    const std::string keyword = arg[iarg];
+    if (keyword == "bearing") {
+      if (seen_bearing) error->all(FLERR, "compute runin/roughness: keyword 'bearing' given twice");
+      seen_bearing = true;
+      ++iarg;
+      while (iarg < narg && utils::is_double(arg[iarg])) {
+        const double depth = utils::numeric(FLERR, arg[iarg], false, lmp);
+        if (!(depth >= 0.0))
+          error->all(FLERR, "compute runin/roughness: bearing depth must be >= 0, got {}", arg[iarg]);
+        depths.push_back(depth);
+        ++iarg;
+      }
+      if (depths.empty())
+        error->all(FLERR, "compute runin/roughness: keyword 'bearing' needs at least one depth, got {}",
+                   iarg < narg ? std::string("'") + arg[iarg] + "'" : std::string("none"));
+    } else if (keyword == "side") {
+      if (iarg + 1 >= narg) error->all(FLERR, "compute runin/roughness: keyword 'side' needs a value");
+      const std::string value = arg[iarg + 1];
+      if (value == "up")
+        sign = 1.0;
+      else if (value == "down")
+        sign = -1.0;
+      else
+        error->all(FLERR, "compute runin/roughness: side must be 'up' or 'down', got '{}'", value);
+      iarg += 2;
+    } else if (keyword == "mean") {
+      if (iarg + 1 >= narg) error->all(FLERR, "compute runin/roughness: keyword 'mean' needs a value");
+      const std::string value = arg[iarg + 1];
+      if (value != "z")
+        error->all(FLERR, "compute runin/roughness: mean must be 'z' (a tilted least-squares plane is not "
+                          "implemented), got '{}'", value);
+      iarg += 2;
+    } else {
+      error->all(FLERR, "compute runin/roughness: unknown keyword '{}' (expected bearing, side or mean)", keyword);
+    }
+  }
+
+  vector_flag = 1;
+  size_vector = NFIXED + static_cast<int>(depths.size());
+  extvector = 0;
+  vector = new double[size_vector];
+  for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
+
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+}
+
+ComputeRuninRoughness::~ComputeRuninRoughness()
+{
+  delete[] vector;
+  memory->destroy(height);
+}
+
+void ComputeRuninRoughness::init()
+{
+  if (!atom->radius_flag)
+    error->all(FLERR, "compute runin/roughness: requires atom attribute radius (atom_style sphere)");
+}
+
+double ComputeRuninRoughness::summit(int i) const
+{
+  // side up: top of the sphere; side down: bottom of the sphere, measured downward
+  return sign * atom->x[i][2] + atom->radius[i];
+}
+
+double ComputeRuninRoughness::mean_height()
+{
+  const int *mask = atom->mask;
+  double local[2] = {0.0, 0.0}, global[2];
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) {
+      local[0] += 1.0;
+      local[1] += summit(i);
+    }
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, world);
+  return global[0] > 0.0 ? global[1] / global[0] : 0.0;
+}
+
+void ComputeRuninRoughness::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+
+  // reduction 1: count, sum, highest and lowest summit
+  runin::tribo::HeightRange range;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) range.add(summit(i));
+  double sums[2] = {range.count, range.sum}, extremes[2] = {range.max, -range.min};
+  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(MPI_IN_PLACE, extremes, 2, MPI_DOUBLE, MPI_MAX, world);
+  range.count = sums[0];
+  range.sum = sums[1];
+  range.max = extremes[0];
+  range.min = -extremes[1];
+
+  // reduction 2: power sums about the mean plane and bearing counts below the highest summit
+  try {
+    runin::tribo::HeightMoments moments(range.mean(), range.max, depths);
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit) moments.add(summit(i));
+    MPI_Allreduce(MPI_IN_PLACE, moments.sums().data(), static_cast<int>(moments.size()), MPI_DOUBLE, MPI_SUM,
+                  world);
+    const auto stats = runin::tribo::roughness(range, moments);
+    vector[RA] = stats.Ra;
+    vector[RQ] = stats.Rq;
+    vector[RSK] = stats.Rsk;
+    vector[RKU] = stats.Rku;
+    vector[RP] = stats.Rp;
+    vector[RV] = stats.Rv;
+    vector[RZ] = stats.Rz;
+    for (std::size_t k = 0; k < depths.size(); k++) vector[NFIXED + k] = stats.bearing[k];
+  } catch (std::exception &e) {
+    error->all(FLERR, "compute runin/roughness: {}", e.what());
+  }
+}
+
+void ComputeRuninRoughness::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  if (atom->nmax > nmax) {
+    memory->destroy(height);
+    nmax = atom->nmax;
+    memory->create(height, nmax, "runin/roughness:height");
+    vector_atom = height;
+  }
+  const double mean = mean_height();
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++) height[i] = (mask[i] & groupbit) ? summit(i) - mean : 0.0;
+}
+
+double ComputeRuninRoughness::memory_usage()
+{
+  return static_cast<double>(nmax) * sizeof(double);
+}

@@ -1,0 +1,42 @@
+// compute runin/roughness: surface statistics (Ra, Rq, Rsk, Rku, Rp, Rv, Rz, bearing ratios) of the
+// summit heights of a group of asperity particles; per-atom summit height above the mean plane.
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(runin/roughness,ComputeRuninRoughness);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_RUNIN_ROUGHNESS_H
+#define LMP_COMPUTE_RUNIN_ROUGHNESS_H
+
+#include "compute.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class ComputeRuninRoughness : public Compute {
+ public:
+  enum Entry { RA = 0, RQ, RSK, RKU, RP, RV, RZ, NFIXED };
+
+  ComputeRuninRoughness(class LAMMPS *, int, char **);
+  ~ComputeRuninRoughness() override;
+  void init() override;
+  void compute_vector() override;
+  void compute_peratom() override;
+  double memory_usage() override;
+
+ private:
+  std::vector<double> depths;    // bearing depths below the highest summit
+  double sign;                    // +1: side up (z + r); -1: side down (-(z - r))
+  int nmax;
+  double *height;                 // per-atom summit height above the mean plane
+
+  double summit(int i) const;
+  double mean_height();           // first reduction: count and sum of summit heights
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
