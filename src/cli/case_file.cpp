@@ -1,5 +1,6 @@
 #include "cli/case_file.h"
 
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
@@ -12,13 +13,22 @@ namespace {
 using continuum::SlidingFriction;
 
 // Allowed keys per table; "" is the top level.
-const std::map<std::string, std::set<std::string>> kSchema = {
+using Schema = std::map<std::string, std::set<std::string>>;
+const Schema kSchema = {
     {"", {"title", "pin", "loading", "friction", "run", "solver"}},
     {"pin", {"mass", "track_radius", "normal_load"}},
     {"loading", {"ramp_time", "applied_torque", "target_speed", "target_time"}},
     {"friction", {"model", "mu0", "mu_static", "mu_kinetic", "alpha", "distance_scale", "branch"}},
     {"run", {"t_end", "output_interval", "initial_speed"}},
     {"solver", {"method", "rtol", "atol", "max_steps"}},
+};
+
+const Schema kFeedbackSchema = {
+    {"", {"title", "model", "run", "solver", "sweep"}},
+    {"model", {"kind", "C1", "C2", "K1", "K2", "A", "B"}},
+    {"run", {"R0", "t_end", "output_interval"}},
+    {"solver", {"method", "rtol", "atol", "max_steps"}},
+    {"sweep", {"parameter", "values"}},
 };
 
 // Keys each friction model reads besides "model" and "alpha".
@@ -37,7 +47,8 @@ std::string type_name(const toml::node &node) {
 // Typed, checked access to the parsed document; every error names file and key.
 class CaseReader {
  public:
-  CaseReader(std::string path, toml::table root) : path_(std::move(path)), root_(std::move(root)) {}
+  CaseReader(std::string path, toml::table root, const Schema &schema = kSchema)
+      : path_(std::move(path)), root_(std::move(root)), schema_(schema) {}
 
   [[noreturn]] void fail(const std::string &key, const std::string &problem) const {
     throw InputError(path_ + ": key '" + key + "': " + problem);
@@ -46,13 +57,13 @@ class CaseReader {
   void reject_unknown_keys() const {
     for (const auto &[key, node] : root_) {
       const std::string name(key.str());
-      if (!kSchema.at("").count(name)) fail(name, "unknown key");
+      if (!schema_.at("").count(name)) fail(name, "unknown key");
       if (name == "title") continue;
       const auto *table = node.as_table();
       if (!table) fail(name, "expected a table, got " + type_name(node));
       for (const auto &[sub, ignored] : *table) {
         (void)ignored;
-        if (!kSchema.at(name).count(std::string(sub.str()))) fail(name + "." + std::string(sub.str()), "unknown key");
+        if (!schema_.at(name).count(std::string(sub.str()))) fail(name + "." + std::string(sub.str()), "unknown key");
       }
     }
   }
@@ -104,6 +115,22 @@ class CaseReader {
     }
     return value;
   }
+  // Non-empty array of numbers.
+  std::vector<double> numbers(const std::string &key) const {
+    const toml::node *node = root_.at_path(key).node();
+    if (!node) fail(key, "missing (required)");
+    const auto *array = node->as_array();
+    if (!array) fail(key, "expected an array of numbers, got " + type_name(*node));
+    if (array->empty()) fail(key, "must not be empty");
+    std::vector<double> values;
+    for (const auto &element : *array) {
+      if (!element.is_number())
+        fail(key, "element " + std::to_string(values.size()) + ": expected a number, got " + type_name(element));
+      values.push_back(*element.value<double>());
+      if (!std::isfinite(values.back())) fail(key, "element " + std::to_string(values.size() - 1) + ": must be finite");
+    }
+    return values;
+  }
   std::string text(const std::string &key, const std::string &fallback) const {
     const toml::node *node = root_.at_path(key).node();
     if (!node) return fallback;
@@ -120,6 +147,7 @@ class CaseReader {
  private:
   std::string path_;
   toml::table root_;
+  const Schema &schema_;
 };
 
 toml::table parse_toml(const std::string &path) {
@@ -217,6 +245,91 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   run.integrator.rtol = reader.positive("solver.rtol", 1e-8);
   run.integrator.atol = reader.positive("solver.atol", 1e-10);
   run.integrator.max_steps = reader.positive_integer("solver.max_steps", 100000);
+  return c;
+}
+
+namespace {
+continuum::CvodeIntegrator::Settings read_solver(const CaseReader &reader, continuum::CvodeIntegrator::Settings s) {
+  s.method = reader.choice("solver.method", {"bdf", "adams"}, std::string("bdf")) == "bdf"
+                 ? continuum::CvodeIntegrator::Method::Bdf
+                 : continuum::CvodeIntegrator::Method::Adams;
+  s.rtol = reader.positive("solver.rtol", s.rtol);
+  s.atol = reader.positive("solver.atol", s.atol);
+  s.max_steps = reader.positive_integer("solver.max_steps", s.max_steps);
+  return s;
+}
+
+tribo::FeedbackModel build_model(const CaseReader &reader, const tribo::FeedbackCoefficients &c, tribo::FeedbackKind kind,
+                                 const std::string &key) {
+  try {
+    return tribo::FeedbackModel(c, kind);
+  } catch (const tribo::InvalidCoefficient &e) {
+    reader.fail(key, e.what());
+  }
+}
+}  // namespace
+
+const std::set<std::string> &feedback_sweep_parameters() {
+  static const std::set<std::string> names = {"A", "B", "C1", "C2", "K1", "K2", "R0"};
+  return names;
+}
+
+void set_feedback_parameter(tribo::FeedbackCoefficients &c, double &r0, const std::string &name, double value) {
+  if (name == "C1") c.C1 = value;
+  else if (name == "C2") c.C2 = value;
+  else if (name == "K1") c.K1 = value;
+  else if (name == "K2") c.K2 = value;
+  else if (name == "A") c.A = value;
+  else if (name == "B") c.B = value;
+  else if (name == "R0") r0 = value;
+  else throw std::invalid_argument("unknown feedback parameter " + name);
+}
+
+FeedbackCase read_feedback_case(const std::string &path) {
+  const CaseReader reader(path, parse_toml(path), kFeedbackSchema);
+  reader.reject_unknown_keys();
+
+  FeedbackCase c;
+  c.path = path;
+  c.title = reader.text("title", path);
+  const auto kind = reader.choice("model.kind", {"lubricated", "dry"}) == "dry" ? tribo::FeedbackKind::dry
+                                                                               : tribo::FeedbackKind::lubricated;
+  auto &k = c.coefficients;
+  k.C1 = reader.positive("model.C1");
+  k.C2 = reader.non_negative("model.C2");
+  k.K1 = reader.positive("model.K1");
+  k.K2 = reader.positive("model.K2");
+  k.A = reader.positive("model.A");
+  k.B = reader.positive("model.B");
+  c.model.emplace(build_model(reader, k, kind, "model"));
+
+  auto &run = c.run;
+  run.initial_roughness = reader.positive("run.R0");
+  run.t_end = reader.positive("run.t_end");
+  run.output_interval = reader.positive("run.output_interval", run.t_end / 1000.0);
+  if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
+  run.integrator = read_solver(reader, continuum::FeedbackRun::default_settings());
+
+  if (reader.has("sweep")) {
+    FeedbackSweep sweep;
+    sweep.parameter = reader.choice("sweep.parameter", feedback_sweep_parameters());
+    sweep.values = reader.numbers("sweep.values");
+    if (sweep.values.size() > 50) reader.fail("sweep.values", "more than 50 values");
+    for (std::size_t i = 0; i < sweep.values.size(); ++i) {
+      auto coefficients = k;
+      double r0 = run.initial_roughness;
+      set_feedback_parameter(coefficients, r0, sweep.parameter, sweep.values[i]);
+      const std::string where = "element " + std::to_string(i) + " (" + sweep.parameter + " = " +
+                                CaseReader::format(sweep.values[i]) + "): ";
+      if (!(r0 > 0.0)) reader.fail("sweep.values", where + "R0 must be positive");
+      try {
+        tribo::FeedbackModel(coefficients, kind);
+      } catch (const tribo::InvalidCoefficient &e) {
+        reader.fail("sweep.values", where + e.what());
+      }
+    }
+    c.sweep = sweep;
+  }
   return c;
 }
 

@@ -3,8 +3,11 @@
 
 #include <optional>
 #include <stdexcept>
+#include <set>
 #include <string>
+#include <vector>
 
+#include "continuum/feedback_system.h"
 #include "continuum/pin_on_disk.h"
 #include "coupling/friction_law.h"
 
@@ -28,5 +31,26 @@ struct PinOnDiskCase {
 
 // `law_path` is the --law option; required exactly when friction.model = "law_file".
 PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path);
+
+// Feedback-model case (thesis ch. 3): [model] kind, C1, C2, K1, K2, A, B; [run] R0, t_end,
+// output_interval; optional [solver]; optional [sweep] parameter + values.
+struct FeedbackSweep {
+  std::string parameter;  // one of feedback_sweep_parameters()
+  std::vector<double> values;
+};
+
+struct FeedbackCase {
+  std::string path;
+  std::string title;
+  tribo::FeedbackCoefficients coefficients;
+  std::optional<tribo::FeedbackModel> model;  // always set after reading
+  continuum::FeedbackRun run;
+  std::optional<FeedbackSweep> sweep;  // every value already checked to give a valid model
+};
+
+FeedbackCase read_feedback_case(const std::string &path);
+const std::set<std::string> &feedback_sweep_parameters();  // A, B, C1, C2, K1, K2, R0
+// Sets coefficient `name` in `c`, or `r0` for "R0".
+void set_feedback_parameter(tribo::FeedbackCoefficients &c, double &r0, const std::string &name, double value);
 
 }  // namespace runin::cli

@@ -1,7 +1,9 @@
 // runin: command-line driver of the continuum side.
 //   runin fit-law --input FILE --distance-column NAME --mu-column NAME --output law.json
 //   runin pin-on-disk CASE.toml [--law law.json] --output-dir DIR [--no-plot]
+//   runin feedback CASE.toml --output-dir DIR [--no-plot]
 // Exit codes: 0 success, 1 numerical/plot/I/O failure, 2 bad input.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -16,6 +18,7 @@
 
 #include "cli/case_file.h"
 #include "cli/staged_file.h"
+#include "continuum/feedback_system.h"
 #include "continuum/pin_on_disk.h"
 #include "coupling/ave_time_reader.h"
 #include "coupling/friction_law.h"
@@ -95,11 +98,13 @@ std::string csv_text(const std::vector<continuum::PinOnDiskSample> &samples) {
   return text;
 }
 
-void run_plot(const fs::path &csv, const fs::path &png, const std::string &title) {
+// Runs tools/<script_name> with /usr/bin/python3 (or $RUNIN_PYTHON) and `script_args`.
+void run_python_plot(const std::string &script_name, const std::vector<std::string> &script_args) {
   const char *python_env = std::getenv("RUNIN_PYTHON");
   const std::string python = python_env && *python_env ? python_env : RUNIN_DEFAULT_PYTHON;
-  const std::string script = std::string(RUNIN_SOURCE_DIR) + "/tools/plot_curves.py";
-  std::vector<std::string> args = {python, script, csv.string(), png.string(), "--title", title};
+  const std::string script = std::string(RUNIN_SOURCE_DIR) + "/tools/" + script_name;
+  std::vector<std::string> args = {python, script};
+  args.insert(args.end(), script_args.begin(), script_args.end());
   std::vector<char *> argv;
   for (auto &a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -109,6 +114,135 @@ void run_plot(const fs::path &csv, const fs::path &png, const std::string &title
   int status = 0;
   if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw RunError("plotting failed: " + python + " " + script + " (use --no-plot to skip)");
+}
+
+void run_plot(const fs::path &csv, const fs::path &png, const std::string &title) {
+  run_python_plot("plot_curves.py", {csv.string(), png.string(), "--title", title});
+}
+
+std::string g17(double x) { return fmt::format("{:.17g}", x); }
+
+struct FeedbackCurve {
+  std::vector<continuum::FeedbackSample> samples;
+  continuum::FeedbackReport report;
+};
+
+FeedbackCurve run_feedback(const tribo::FeedbackModel &model, const continuum::FeedbackRun &run) {
+  FeedbackCurve curve;
+  curve.report = continuum::simulate(continuum::FeedbackSystem(model), run,
+                                     [&](const auto &s) { curve.samples.push_back(s); });
+  if (!curve.report.ok())
+    throw RunError(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
+  return curve;
+}
+
+int feedback(const std::string &case_path, const std::string &output_dir, bool plot) {
+  const FeedbackCase c = read_feedback_case(case_path);
+  const tribo::FeedbackModel &m = *c.model;
+  const FeedbackCurve curve = run_feedback(m, c.run);
+  const auto &samples = curve.samples;
+  const double rs = m.stationary_roughness();
+  const double settle = continuum::settling_time(samples, rs, 0.01);
+
+  // Sweep: one run per value, everything else as in the case.
+  struct SweepRow {
+    double value, r_star, mu_star, k_star, settle, settle_exact;
+  };
+  std::vector<SweepRow> rows;
+  std::string sweep_curves = "value,t,R,mu\n";
+  if (c.sweep) {
+    for (double value : c.sweep->values) {
+      auto coefficients = c.coefficients;
+      auto run = c.run;
+      set_feedback_parameter(coefficients, run.initial_roughness, c.sweep->parameter, value);
+      const tribo::FeedbackModel model(coefficients, m.kind());
+      const auto sweep_curve = run_feedback(model, run);
+      const double r = model.stationary_roughness();
+      rows.push_back({value, r, model.mu(r), model.k(r), continuum::settling_time(sweep_curve.samples, r, 0.01),
+                      model.exact_settling_time(run.initial_roughness, 0.01)});
+      for (const auto &s : sweep_curve.samples)
+        sweep_curves += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g}\n", value, s.t, s.roughness, s.mu);
+    }
+  }
+
+  // Everything is computed; only now touch the output directory.
+  std::error_code error;
+  fs::create_directories(output_dir, error);
+  if (error) throw RunError("cannot create " + output_dir + ": " + error.message());
+  const fs::path dir(output_dir);
+  StagedFile csv(dir / "feedback.csv");
+  std::string text = "t,R,mu,k,wear\n";
+  for (const auto &s : samples)
+    text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", s.t, s.roughness, s.mu, s.wear_rate, s.wear);
+  csv.write(text);
+  std::optional<StagedFile> sweep_csv, curves_csv, png, sweep_png;
+  if (c.sweep) {
+    sweep_csv.emplace(dir / "feedback_sweep.csv");
+    std::string sweep_text = c.sweep->parameter + ",R_star,mu_R_star,k_R_star,time_to_1pct,time_to_1pct_exact\n";
+    for (const auto &r : rows)
+      sweep_text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g}\n", r.value, r.r_star, r.mu_star, r.k_star,
+                                r.settle < 0.0 ? std::string("nan") : fmt::format("{:.12g}", r.settle),
+                                r.settle_exact);
+    sweep_csv->write(sweep_text);
+  }
+  if (plot) {
+    png.emplace(dir / "feedback.png");
+    run_python_plot("plot_feedback.py",
+                    {"curve", csv.temp_path().string(), png->temp_path().string(), "--title", c.title, "--r-star",
+                     g17(rs), "--r-min-wear", g17(m.min_wear_roughness()), "--r-min-friction",
+                     g17(m.min_friction_roughness()), "--mu-min", g17(m.min_mu())});
+    if (c.sweep) {
+      curves_csv.emplace(dir / "feedback_sweep_curves.csv");  // plot input only, never committed
+      curves_csv->write(sweep_curves);
+      sweep_png.emplace(dir / "feedback_sweep.png");
+      run_python_plot("plot_feedback.py", {"sweep", curves_csv->temp_path().string(),
+                                           sweep_csv->temp_path().string(), sweep_png->temp_path().string(),
+                                           "--title", c.title, "--parameter", c.sweep->parameter});
+    }
+  }
+  csv.commit();
+  if (sweep_csv) sweep_csv->commit();
+  if (png) png->commit();
+  if (sweep_png) sweep_png->commit();
+
+  const auto &k = m.coefficients();
+  const bool dry = m.kind() == tribo::FeedbackKind::dry;
+  auto or_none = [](double t) { return t < 0.0 ? std::string("not reached") : fmt::format("{:.6g}", t); };
+  const auto &first = samples.front(), &last = samples.back();
+  fmt::print("runin feedback: {}\n  {}\n", case_path, c.title);
+  fmt::print("  model             {} ({} smooths, {} roughens)\n", tribo::to_string(m.kind()),
+             dry ? "deformation" : "viscous erosion", dry ? "adhesion" : "capillarity");
+  fmt::print("  coefficients      C1 = {} = {:.6g}, C2 = {} = {:.6g}, K1 = {} = {:.6g}, K2 = {} = {:.6g}, A = {:.6g}, B = {:.6g}\n",
+             m.thesis_name("C1"), k.C1, m.thesis_name("C2"), k.C2, m.thesis_name("K1"), k.K1, m.thesis_name("K2"), k.K2,
+             k.A, k.B);
+  fmt::print("  R*                {:.10g}  = sqrt(B K2 / (A K1)), eq. 3.7\n", rs);
+  fmt::print("  R_min_wear        {:.10g}  = sqrt(K2 / K1), eq. 3.9; R* minimises wear: {} (A {} B)\n",
+             m.min_wear_roughness(), m.stationary_minimises_wear() ? "yes" : "no",
+             m.stationary_minimises_wear() ? "==" : "!=");
+  fmt::print("  R_min_friction    {:.10g}  = sqrt(C2 / C1), eq. 3.10; R* minimises friction: {} (B K2/(A K1) {} C2/C1)\n",
+             m.min_friction_roughness(), m.stationary_minimises_friction() ? "yes" : "no",
+             m.stationary_minimises_friction() ? "==" : "!=");
+  fmt::print("  mu_min            {:.10g}  = 2 sqrt(C1 C2); mu(R*) = {:.10g}\n", m.min_mu(), m.mu(rs));
+  fmt::print("  k_min             {:.10g}  = 2 sqrt(K1 K2); k(R*) = {:.10g}\n", m.min_k(), m.k(rs));
+  fmt::print("  run               R {:.6g} -> {:.10g}, mu {:.6g} -> {:.10g}, wear W = {:.6g} at t = {:g}\n",
+             first.roughness, last.roughness, first.mu, last.mu, last.wear, last.t);
+  fmt::print("  time to 1% of R*  {} (output grid {:g}); closed form {:.6g}\n", or_none(settle),
+             c.run.output_interval, m.exact_settling_time(c.run.initial_roughness, 0.01));
+  fmt::print("  CVODE             {} steps, rtol {:g}, atol {:g}\n", curve.report.steps, c.run.integrator.rtol,
+             c.run.integrator.atol);
+  if (c.sweep) {
+    fmt::print("  sweep             {} over {} values:\n", c.sweep->parameter, rows.size());
+    fmt::print("    {:>12} {:>12} {:>12} {:>12} {:>12}\n", c.sweep->parameter, "R*", "mu(R*)", "k(R*)", "t_1%");
+    for (const auto &r : rows)
+      fmt::print("    {:>12.6g} {:>12.6g} {:>12.6g} {:>12.6g} {:>12}\n", r.value, r.r_star, r.mu_star, r.k_star,
+                 or_none(r.settle));
+  }
+  fmt::print("  wrote             {}", csv.destination().string());
+  if (sweep_csv) fmt::print(", {}", sweep_csv->destination().string());
+  if (png) fmt::print(", {}", png->destination().string());
+  if (sweep_png) fmt::print(", {}", sweep_png->destination().string());
+  fmt::print("\n");
+  return 0;
 }
 
 int pin_on_disk(const std::string &case_path, const std::optional<std::string> &law_path,
@@ -201,6 +335,13 @@ int main(int argc, char **argv) {
   pod_cmd->add_option("--output-dir", output_dir, "directory for pin_on_disk.csv and pin_on_disk.png")->required();
   pod_cmd->add_flag("--no-plot", no_plot, "write the CSV only");
 
+  std::string fb_case, fb_dir;
+  bool fb_no_plot = false;
+  auto *fb_cmd = app.add_subcommand("feedback", "Two-mechanism roughness-feedback model R(t), mu(t) (thesis ch. 3)");
+  fb_cmd->add_option("case", fb_case, "case file (TOML)")->required();
+  fb_cmd->add_option("--output-dir", fb_dir, "directory for feedback.csv and feedback.png (+ sweep files)")->required();
+  fb_cmd->add_flag("--no-plot", fb_no_plot, "write the CSV(s) only");
+
   std::string dump_path, vtk_dir, vtk_stem = "asperities";
   auto *vtk_cmd = app.add_subcommand("dump-to-vtk", "Convert a LAMMPS custom dump to VTK (.vtp per snapshot + .pvd)");
   vtk_cmd->add_option("dump", dump_path, "LAMMPS dump file (style custom with x y z columns)")->required();
@@ -214,6 +355,7 @@ int main(int argc, char **argv) {
   }
   try {
     if (fit_cmd->parsed()) return fit_law(fit);
+    if (fb_cmd->parsed()) return feedback(fb_case, fb_dir, !fb_no_plot);
     if (vtk_cmd->parsed()) return dump_to_vtk(dump_path, vtk_dir, vtk_stem);
     return pin_on_disk(case_path, law_path, output_dir, !no_plot);
   } catch (const InputError &e) {
