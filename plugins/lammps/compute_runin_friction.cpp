@@ -1,20 +1,40 @@
 #include "compute_runin_friction.h"
 
 #include "fix_runin_wear_state.h"
-#include "pair_runin_asperity.h"
+#include "runin_contact_sums.h"
 
 #include "error.h"
+#include "fix.h"
 #include "force.h"
+#include "group.h"
+#include "modify.h"
+#include "pair.h"
 #include "update.h"
 
 #include <cmath>
+#include <cstring>
 
 using namespace LAMMPS_NS;
 
 ComputeRuninFriction::ComputeRuninFriction(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), pair(nullptr)
+    Compute(lmp, narg, arg), wear(nullptr), body_groupbit{0, 0}, bodies_given(false)
 {
-  if (narg != 3) error->all(FLERR, "compute runin/friction: expected no arguments after the style, got {}", narg - 3);
+  int iarg = 3;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "bodies") == 0) {
+      if (iarg + 3 > narg) error->all(FLERR, "compute runin/friction: keyword bodies needs two group IDs");
+      for (int b = 0; b < 2; b++) {
+        const int igroup = group->find(arg[iarg + 1 + b]);
+        if (igroup < 0)
+          error->all(FLERR, "compute runin/friction: bodies group {} does not exist", arg[iarg + 1 + b]);
+        body_groupbit[b] = group->bitmask[igroup];
+      }
+      bodies_given = true;
+      iarg += 3;
+    } else {
+      error->all(FLERR, "compute runin/friction: unknown keyword {}", arg[iarg]);
+    }
+  }
   vector_flag = 1;
   size_vector = NENTRIES;
   extvector = 0;
@@ -28,26 +48,57 @@ ComputeRuninFriction::~ComputeRuninFriction()
 
 void ComputeRuninFriction::init()
 {
-  pair = dynamic_cast<PairRuninAsperity *>(force->pair_match("runin/asperity", 1));
-  if (!pair) error->all(FLERR, "compute runin/friction: requires pair_style runin/asperity");
+  sources.clear();
+  wear = nullptr;
+  if (auto *pair = dynamic_cast<RuninContactSource *>(force->pair)) sources.push_back(pair);
+  for (int i = 0; i < modify->nfix; i++)
+    if (auto *host = dynamic_cast<RuninContactSource *>(modify->fix[i])) sources.push_back(host);
+  if (sources.empty())
+    error->all(FLERR, "compute runin/friction: requires pair_style runin/asperity or a fix runin/wall");
+  for (int i = 0; i < modify->nfix; i++)
+    if (auto *state = dynamic_cast<FixRuninWearState *>(modify->fix[i])) wear = state;
 }
 
 void ComputeRuninFriction::compute_vector()
 {
   invoked_vector = update->ntimestep;
 
-  const auto &sums = pair->contact_sums();
-  const auto *wear = pair->wear_state();
-  double local[6] = {sums.normal_force, sums.tangential_force[0], sums.tangential_force[1],
-                     sums.tangential_force[2], sums.contacts,
-                     wear ? wear->local_sum(FixRuninWearState::VOLUME_LOST, groupbit) : 0.0};
-  double global[6];
-  MPI_Allreduce(local, global, 6, MPI_DOUBLE, MPI_SUM, world);
+  constexpr int N = RuninContactSums::NVALUES;
+  double local[N + 3] = {};
+  for (const auto *source : sources) source->contact_sums().pack(local);
+  if (wear) {
+    local[N] = wear->local_sum(FixRuninWearState::VOLUME_LOST, groupbit);
+    if (bodies_given) {
+      local[N + 1] = wear->local_sum(FixRuninWearState::VOLUME_LOST, body_groupbit[0]);
+      local[N + 2] = wear->local_sum(FixRuninWearState::VOLUME_LOST, body_groupbit[1]);
+    }
+  }
+  double global[N + 3];
+  MPI_Allreduce(local, global, N + 3, MPI_DOUBLE, MPI_SUM, world);
 
+  RuninContactSums sum;
+  sum.normal_force = global[0];
   const double ft = std::sqrt(global[1] * global[1] + global[2] * global[2] + global[3] * global[3]);
-  vector[NORMAL_FORCE] = global[0];
+  sum.adhesion_force = global[4];
+  sum.ploughing_force = global[5];
+  sum.contacts = global[6];
+  sum.sticking_contacts = global[7];
+  sum.contact_area = global[8];
+  sum.wear_volume = global[9];
+  sum.frictional_power = global[10];
+
+  const double fn = sum.normal_force;
+  vector[NORMAL_FORCE] = fn;
   vector[TANGENTIAL_FORCE] = ft;
-  vector[MU_EFF] = global[0] > 0.0 ? ft / global[0] : 0.0;
-  vector[CONTACTS] = global[4];
-  vector[WEAR_VOLUME] = global[5];
+  vector[MU_EFF] = fn > 0.0 ? ft / fn : 0.0;
+  vector[CONTACTS] = sum.contacts;
+  vector[WEAR_VOLUME] = global[N];
+  vector[MU_ADHESION] = fn > 0.0 ? sum.adhesion_force / fn : 0.0;
+  vector[MU_PLOUGHING] = fn > 0.0 ? sum.ploughing_force / fn : 0.0;
+  vector[STICK_FRACTION] = sum.contacts > 0.0 ? sum.sticking_contacts / sum.contacts : 0.0;
+  vector[CONTACT_AREA] = sum.contact_area;
+  vector[WEAR_VOLUME_BODY1] = global[N + 1];
+  vector[WEAR_VOLUME_BODY2] = global[N + 2];
+  vector[WEAR_RATE] = update->dt > 0.0 ? sum.wear_volume / update->dt : 0.0;
+  vector[FRICTIONAL_POWER] = sum.frictional_power;
 }

@@ -1,4 +1,5 @@
-// compute runin/friction: global contact sums of pair runin/asperity.
+// compute runin/friction: global contact sums of every RunIn contact host
+// (pair runin/asperity and any fix runin/wall), reduced over MPI ranks.
 #ifdef COMPUTE_CLASS
 // clang-format off
 ComputeStyle(runin/friction,ComputeRuninFriction);
@@ -10,11 +11,29 @@ ComputeStyle(runin/friction,ComputeRuninFriction);
 
 #include "compute.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class ComputeRuninFriction : public Compute {
  public:
-  enum Entry { NORMAL_FORCE = 0, TANGENTIAL_FORCE, MU_EFF, CONTACTS, WEAR_VOLUME, NENTRIES };
+  // Entries 1-5 are those of the first version, so older decks keep their column numbers.
+  enum Entry {
+    NORMAL_FORCE = 0,
+    TANGENTIAL_FORCE,
+    MU_EFF,
+    CONTACTS,
+    WEAR_VOLUME,
+    MU_ADHESION,
+    MU_PLOUGHING,
+    STICK_FRACTION,
+    CONTACT_AREA,
+    WEAR_VOLUME_BODY1,
+    WEAR_VOLUME_BODY2,
+    WEAR_RATE,
+    FRICTIONAL_POWER,
+    NENTRIES
+  };
 
   ComputeRuninFriction(class LAMMPS *, int, char **);
   ~ComputeRuninFriction() override;
@@ -22,7 +41,10 @@ class ComputeRuninFriction : public Compute {
   void compute_vector() override;
 
  private:
-  class PairRuninAsperity *pair;
+  std::vector<class RuninContactSource *> sources;
+  class FixRuninWearState *wear;
+  int body_groupbit[2];
+  bool bodies_given;
 };
 
 }    // namespace LAMMPS_NS

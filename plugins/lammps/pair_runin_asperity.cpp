@@ -328,7 +328,7 @@ double PairRuninAsperity::init_one(int i, int j)
 void PairRuninAsperity::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  sums = ContactSums();
+  sums = RuninContactSums();
   const bool advance = update->setupflag == 0;
   const bool track_wear = wear_on && advance;
 

@@ -12,6 +12,7 @@ PairStyle(runin/asperity,PairRuninAsperity);
 #define LMP_PAIR_RUNIN_ASPERITY_H
 
 #include "pair.h"
+#include "runin_contact_sums.h"
 #include "tribo/contact.h"
 #include "tribo/wear.h"
 
@@ -21,7 +22,7 @@ PairStyle(runin/asperity,PairRuninAsperity);
 
 namespace LAMMPS_NS {
 
-class PairRuninAsperity : public Pair {
+class PairRuninAsperity : public Pair, public RuninContactSource {
  public:
   // Per type-pair coefficients (SI units), validated where they are parsed.
   struct Coefficients {
@@ -35,14 +36,6 @@ class PairRuninAsperity : public Pair {
     // From {E*, G*, e, mu_s, mu_k, d_c, k, H_I, H_J}, the order of the explicit pair_coeff form.
     static constexpr int NPACKED = 9;
     static Coefficients unpack(const double *values);
-  };
-
-  // Sums over this rank's contacts in the last force evaluation (read by compute runin/friction).
-  struct ContactSums {
-    double normal_force = 0.0;                 // sum of |F_n|
-    double tangential_force[3] = {0, 0, 0};    // sum of F_t on the higher-type atom of each contact
-    double contacts = 0.0;
-    double wear_volume = 0.0;                  // volume worn in that step
   };
 
   // Kernel objects for one type pair, rebuilt from the coefficients at every init.
@@ -72,7 +65,8 @@ class PairRuninAsperity : public Pair {
   double atom2cut(int) override;
   double radii2cut(double, double) override;
 
-  const ContactSums &contact_sums() const { return sums; }
+  // Sums over this rank's contacts in the last force evaluation (read by compute runin/friction).
+  const RuninContactSums &contact_sums() const override { return sums; }
   class FixRuninWearState *wear_state() const { return fix_wear; }
   bool wear_enabled() const { return wear_on; }
 
@@ -84,7 +78,7 @@ class PairRuninAsperity : public Pair {
   runin::tribo::ArchardForm archard_form;
   std::vector<Coefficients> coeffs;    // (ntypes+1)^2; [J][I] has the hardnesses swapped
   std::vector<std::optional<TypePairModel>> models;    // same layout, built in init_one
-  ContactSums sums;
+  RuninContactSums sums;
 
   double *wear_increment;    // owned + ghost, reverse-communicated each step
   int nmax_increment;

@@ -6,8 +6,11 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLStructuredGridWriter.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -17,6 +20,20 @@ namespace runin::coupling {
 namespace fs = std::filesystem;
 
 namespace {
+
+template <class Writer, class Data>
+void write_atomically(Data &data, const fs::path &destination) {
+  const fs::path temp = destination.string() + ".part";
+  vtkNew<Writer> writer;
+  writer->SetFileName(temp.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToBinary();
+  if (writer->Write() != 1) {
+    fs::remove(temp);
+    throw std::runtime_error("cannot write VTK file " + destination.string());
+  }
+  fs::rename(temp, destination);
+}
 
 void write_snapshot(const DumpSnapshot &snap, const std::string &dump_path, const fs::path &destination) {
   const std::size_t ix = snap.column("x", dump_path), iy = snap.column("y", dump_path), iz = snap.column("z", dump_path);
@@ -43,16 +60,21 @@ void write_snapshot(const DumpSnapshot &snap, const std::string &dump_path, cons
     poly->GetPointData()->AddArray(array);
   }
 
-  const fs::path temp = destination.string() + ".part";
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetFileName(temp.c_str());
-  writer->SetInputData(poly);
-  writer->SetDataModeToBinary();
-  if (writer->Write() != 1) {
-    fs::remove(temp);
-    throw std::runtime_error("cannot write VTK file " + destination.string());
+  write_atomically<vtkXMLPolyDataWriter>(poly, destination);
+}
+
+void write_collection(const std::vector<std::pair<std::string, std::string>> &time_and_file, const fs::path &pvd) {
+  std::string collection = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  for (const auto &[time, file] : time_and_file)
+    collection += "    <DataSet timestep=\"" + time + "\" file=\"" + file + "\"/>\n";
+  collection += "  </Collection>\n</VTKFile>\n";
+  const fs::path temp = pvd.string() + ".part";
+  {
+    std::ofstream out(temp);
+    out << collection;
+    if (!out) throw std::runtime_error("cannot write " + pvd.string());
   }
-  fs::rename(temp, destination);
+  fs::rename(temp, pvd);
 }
 
 }  // namespace
@@ -61,23 +83,61 @@ std::vector<std::string> write_vtk_series(const std::vector<DumpSnapshot> &snaps
                                           const std::string &output_dir, const std::string &stem) {
   fs::create_directories(output_dir);
   std::vector<std::string> written;
-  std::string collection = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  std::vector<std::pair<std::string, std::string>> entries;
   for (const auto &snap : snapshots) {
     const std::string name = stem + "_" + std::to_string(snap.timestep) + ".vtp";
     write_snapshot(snap, dump_path, fs::path(output_dir) / name);
     written.push_back((fs::path(output_dir) / name).string());
-    collection += "    <DataSet timestep=\"" + std::to_string(snap.timestep) + "\" file=\"" + name + "\"/>\n";
+    entries.emplace_back(std::to_string(snap.timestep), name);
   }
-  collection += "  </Collection>\n</VTKFile>\n";
-
   const fs::path pvd = fs::path(output_dir) / (stem + ".pvd");
-  const fs::path temp = pvd.string() + ".part";
-  {
-    std::ofstream out(temp);
-    out << collection;
-    if (!out) throw std::runtime_error("cannot write " + pvd.string());
+  write_collection(entries, pvd);
+  written.push_back(pvd.string());
+  return written;
+}
+
+void SurfaceFrame::validate() const {
+  const std::size_t n = static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv);
+  if (nu < 1 || nv < 1) throw std::invalid_argument("surface frame: grid size must be at least 1 x 1");
+  if (points.size() != n) throw std::invalid_argument("surface frame: expected nu*nv points");
+  for (const auto &[name, values] : fields)
+    if (values.size() != n) throw std::invalid_argument("surface frame: field " + name + " needs nu*nv values");
+}
+
+std::vector<std::string> write_surface_series(const std::vector<SurfaceFrame> &frames, const std::string &output_dir,
+                                              const std::string &stem) {
+  fs::create_directories(output_dir);
+  std::vector<std::string> written;
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const SurfaceFrame &frame = frames[f];
+    frame.validate();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(frame.points.size()));
+    for (std::size_t a = 0; a < frame.points.size(); ++a)
+      points->SetPoint(static_cast<vtkIdType>(a), frame.points[a].data());
+    vtkNew<vtkStructuredGrid> grid;
+    grid->SetDimensions(frame.nu, frame.nv, 1);
+    grid->SetPoints(points);
+    for (const auto &[name, values] : frame.fields) {
+      vtkNew<vtkDoubleArray> array;
+      array->SetName(name.c_str());
+      array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+      for (std::size_t a = 0; a < values.size(); ++a) array->SetValue(static_cast<vtkIdType>(a), values[a]);
+      grid->GetPointData()->AddArray(array);
+    }
+    char index[16];
+    std::snprintf(index, sizeof index, "%04zu", f);
+    const std::string name = stem + "_" + index + ".vts";
+    write_atomically<vtkXMLStructuredGridWriter>(grid, fs::path(output_dir) / name);
+    written.push_back((fs::path(output_dir) / name).string());
+    char time[32];
+    std::snprintf(time, sizeof time, "%.9g", frame.time);
+    entries.emplace_back(time, name);
   }
-  fs::rename(temp, pvd);
+  const fs::path pvd = fs::path(output_dir) / (stem + ".pvd");
+  write_collection(entries, pvd);
   written.push_back(pvd.string());
   return written;
 }

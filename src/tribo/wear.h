@@ -13,6 +13,12 @@ class ArchardWear {
 
   // Worn volume for a normal load |W| and a slip distance |ds|: k |W| |ds| / H (or / 3H).
   double volume(double normal_force, double slip_distance) const;
+  // Wear depth per unit slip under contact pressure p: dh/ds = (k/H) p (or k p / 3H).
+  double depth_rate(double pressure) const { return factor_ * pressure; }
+  // Largest stable explicit wear step (slip distance) on a surface whose pressure falls by
+  // k_c [Pa/m] per unit wear depth. The linearised update h += (k/H)(p0 - k_c h) ds has the
+  // amplification factor 1 - (k/H) k_c ds, so it is stable for ds < 2H/(k k_c).
+  double stable_slip_step(double contact_stiffness_per_area) const;
   double coefficient() const { return k_; }
   double hardness() const { return hardness_; }
   ArchardForm form() const { return form_; }

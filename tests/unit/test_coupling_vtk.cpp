@@ -13,7 +13,9 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkXMLStructuredGridReader.h>
 #endif
 
 namespace fs = std::filesystem;
@@ -78,6 +80,41 @@ TEST(VtkExport, RoundTripThroughVtkReader) {
   EXPECT_EQ(poly->GetNumberOfVerts(), 2);
   for (const auto &entry : fs::directory_iterator(dir / "vtk"))
     EXPECT_EQ(entry.path().extension().string().find(".part"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(VtkExport, SurfaceSeriesRoundTrip) {
+  const auto dir = fs::temp_directory_path() / "runin_vtk_surface_test";
+  SurfaceFrame frame;
+  frame.time = 0.5;
+  frame.nu = 3;
+  frame.nv = 2;
+  std::vector<double> pressure;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) {
+      frame.points.push_back({0.1 * i, 0.2 * j, 0.0});
+      pressure.push_back(10.0 * i + j);
+    }
+  frame.fields.emplace_back("pressure", pressure);
+  const auto written = write_surface_series({frame, frame}, (dir / "vtk").string(), "contact");
+  ASSERT_EQ(written.size(), 3u);
+
+  vtkNew<vtkXMLStructuredGridReader> reader;
+  reader->SetFileName(written[1].c_str());
+  reader->Update();
+  vtkStructuredGrid *grid = reader->GetOutput();
+  int dims[3];
+  grid->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 3);
+  EXPECT_EQ(dims[1], 2);
+  double p[3];
+  grid->GetPoint(4, p);
+  EXPECT_DOUBLE_EQ(p[0], 0.1);
+  EXPECT_DOUBLE_EQ(p[1], 0.2);
+  EXPECT_DOUBLE_EQ(grid->GetPointData()->GetArray("pressure")->GetTuple1(5), 21.0);
+
+  frame.fields[0].second.pop_back();
+  EXPECT_THROW(write_surface_series({frame}, (dir / "bad").string(), "contact"), std::invalid_argument);
   fs::remove_all(dir);
 }
 #endif

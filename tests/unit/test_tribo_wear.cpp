@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace runin::tribo;
 
 TEST(Archard, IncrementMatchesClosedForm)
@@ -35,4 +37,23 @@ TEST(Archard, RejectsImpossibleCoefficients)
 {
   EXPECT_THROW(ArchardWear(-1e-4, 1e9), InvalidCoefficient);
   EXPECT_THROW(ArchardWear(1e-4, 0.0), InvalidCoefficient);
+}
+
+// The explicit wear update on a linear-elastic foundation, h += (k/H)(p0 - k_c h) ds, relaxes to
+// h* = p0/k_c for any ds under the bound and grows without limit just above it.
+TEST(Archard, StableSlipStepSeparatesDecayFromOscillation)
+{
+  const ArchardWear wear(1e-3, 1e9);
+  const double k_c = 1e13, p0 = 1e8;
+  const double bound = wear.stable_slip_step(k_c);
+  EXPECT_DOUBLE_EQ(bound, 2.0 * 1e9 / (1e-3 * k_c));
+  auto final_error = [&](double ds) {
+    double h = 0.0;
+    for (int n = 0; n < 400; n++) h += wear.depth_rate(p0 - k_c * h) * ds;
+    return std::fabs(h - p0 / k_c) / (p0 / k_c);
+  };
+  EXPECT_LT(final_error(0.9 * bound), 1e-12);
+  EXPECT_GT(final_error(1.1 * bound), 1.0);
+  EXPECT_DOUBLE_EQ(ArchardWear(1e-3, 1e9, ArchardForm::thesis).stable_slip_step(k_c), 3.0 * bound);
+  EXPECT_THROW(wear.stable_slip_step(0.0), InvalidCoefficient);
 }

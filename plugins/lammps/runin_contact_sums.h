@@ -1,0 +1,39 @@
+// Per-rank contact sums that every RunIn contact host (pair runin/asperity, fix runin/wall)
+// fills during its force evaluation and compute runin/friction reduces over ranks.
+#ifndef LMP_RUNIN_CONTACT_SUMS_H
+#define LMP_RUNIN_CONTACT_SUMS_H
+
+namespace LAMMPS_NS {
+
+struct RuninContactSums {
+  double normal_force = 0.0;               // sum of |F_n| [N]
+  double tangential_force[3] = {0, 0, 0};  // sum of F_t on the counter-body side of each contact [N]
+  double adhesion_force = 0.0;             // sum of the adhesion part of the friction strength [N]
+  double ploughing_force = 0.0;            // sum of the ploughing part of the friction strength [N]
+  double contacts = 0.0;
+  double sticking_contacts = 0.0;
+  double contact_area = 0.0;               // real contact area [m^2]
+  double wear_volume = 0.0;                // volume removed in this step [m^3]
+  double frictional_power = 0.0;           // sum of F_t . v_slip dissipated [W]
+
+  static constexpr int NVALUES = 11;
+  // Flat view for MPI reductions, in declaration order.
+  void pack(double *out) const
+  {
+    const double v[NVALUES] = {normal_force, tangential_force[0], tangential_force[1], tangential_force[2],
+                               adhesion_force, ploughing_force, contacts, sticking_contacts, contact_area,
+                               wear_volume, frictional_power};
+    for (int i = 0; i < NVALUES; i++) out[i] += v[i];
+  }
+};
+
+// Implemented by the styles that own contacts, so the compute needs no list of them.
+class RuninContactSource {
+ public:
+  virtual ~RuninContactSource() = default;
+  virtual const RuninContactSums &contact_sums() const = 0;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
