@@ -1,11 +1,11 @@
 #include "cli/case_file.h"
+#include "cli/case_reader.h"
 
 #include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
 
-#include <toml++/toml.h>
 
 namespace runin::cli {
 namespace {
@@ -13,7 +13,6 @@ namespace {
 using continuum::SlidingFriction;
 
 // Allowed keys per table; "" is the top level.
-using Schema = std::map<std::string, std::set<std::string>>;
 const Schema kSchema = {
     {"", {"title", "pin", "loading", "friction", "run", "solver"}},
     {"pin", {"mass", "track_radius", "normal_load"}},
@@ -38,133 +37,10 @@ const std::map<std::string, std::set<std::string>> kModelKeys = {
     {"law_file", {"distance_scale", "branch"}},
 };
 
-std::string type_name(const toml::node &node) {
-  std::ostringstream out;
-  out << node.type();
-  return out.str();
-}
 
-// Typed, checked access to the parsed document; every error names file and key.
-class CaseReader {
- public:
-  CaseReader(std::string path, toml::table root, const Schema &schema = kSchema)
-      : path_(std::move(path)), root_(std::move(root)), schema_(schema) {}
+}  // namespace
 
-  [[noreturn]] void fail(const std::string &key, const std::string &problem) const {
-    throw InputError(path_ + ": key '" + key + "': " + problem);
-  }
-
-  void reject_unknown_keys() const {
-    for (const auto &[key, node] : root_) {
-      const std::string name(key.str());
-      if (!schema_.at("").count(name)) fail(name, "unknown key");
-      if (name == "title") continue;
-      const auto *table = node.as_table();
-      if (!table) fail(name, "expected a table, got " + type_name(node));
-      for (const auto &[sub, ignored] : *table) {
-        (void)ignored;
-        if (!schema_.at(name).count(std::string(sub.str()))) fail(name + "." + std::string(sub.str()), "unknown key");
-      }
-    }
-  }
-
-  bool has(const std::string &key) const { return static_cast<bool>(root_.at_path(key)); }
-
-  double number(const std::string &key, std::optional<double> fallback = std::nullopt) const {
-    const toml::node *node = root_.at_path(key).node();
-    if (!node) {
-      if (fallback) return *fallback;
-      fail(key, "missing (required)");
-    }
-    if (!node->is_number()) fail(key, "expected a number, got " + type_name(*node));
-    const double value = *node->value<double>();
-    if (!std::isfinite(value)) fail(key, "must be finite");
-    return value;
-  }
-  double positive(const std::string &key, std::optional<double> fallback = std::nullopt) const {
-    const double value = number(key, fallback);
-    if (!(value > 0.0)) fail(key, "must be positive, got " + format(value));
-    return value;
-  }
-  double non_negative(const std::string &key, std::optional<double> fallback = std::nullopt) const {
-    const double value = number(key, fallback);
-    if (value < 0.0) fail(key, "must be >= 0, got " + format(value));
-    return value;
-  }
-  long positive_integer(const std::string &key, long fallback) const {
-    const toml::node *node = root_.at_path(key).node();
-    if (!node) return fallback;
-    if (!node->is_integer()) fail(key, "expected an integer, got " + type_name(*node));
-    const long value = static_cast<long>(*node->value<int64_t>());
-    if (value <= 0) fail(key, "must be positive, got " + std::to_string(value));
-    return value;
-  }
-  std::string choice(const std::string &key, const std::set<std::string> &options,
-                     std::optional<std::string> fallback = std::nullopt) const {
-    const toml::node *node = root_.at_path(key).node();
-    if (!node) {
-      if (fallback) return *fallback;
-      fail(key, "missing (required)");
-    }
-    if (!node->is_string()) fail(key, "expected a string, got " + type_name(*node));
-    const std::string value = *node->value<std::string>();
-    if (!options.count(value)) {
-      std::string list;
-      for (const auto &o : options) list += (list.empty() ? "" : ", ") + o;
-      fail(key, "'" + value + "' is not one of " + list);
-    }
-    return value;
-  }
-  // Non-empty array of numbers.
-  std::vector<double> numbers(const std::string &key) const {
-    const toml::node *node = root_.at_path(key).node();
-    if (!node) fail(key, "missing (required)");
-    const auto *array = node->as_array();
-    if (!array) fail(key, "expected an array of numbers, got " + type_name(*node));
-    if (array->empty()) fail(key, "must not be empty");
-    std::vector<double> values;
-    for (const auto &element : *array) {
-      if (!element.is_number())
-        fail(key, "element " + std::to_string(values.size()) + ": expected a number, got " + type_name(element));
-      values.push_back(*element.value<double>());
-      if (!std::isfinite(values.back())) fail(key, "element " + std::to_string(values.size() - 1) + ": must be finite");
-    }
-    return values;
-  }
-  std::string text(const std::string &key, const std::string &fallback) const {
-    const toml::node *node = root_.at_path(key).node();
-    if (!node) return fallback;
-    if (!node->is_string()) fail(key, "expected a string, got " + type_name(*node));
-    return *node->value<std::string>();
-  }
-
-  static std::string format(double x) {
-    std::ostringstream out;
-    out << x;
-    return out.str();
-  }
-
- private:
-  std::string path_;
-  toml::table root_;
-  const Schema &schema_;
-};
-
-toml::table parse_toml(const std::string &path) {
-  try {
-    return toml::parse_file(path);
-  } catch (const toml::parse_error &e) {
-    std::string description(e.description());
-    for (char &c : description)
-      if (c == '\n') c = ' ';
-    const auto &where = e.source().begin;
-    if (where.line == 0) throw InputError(path + ": " + description);  // e.g. file not readable
-    throw InputError(path + ":" + std::to_string(where.line) + ":" + std::to_string(where.column) +
-                     ": invalid TOML: " + description);
-  }
-}
-
-SlidingFriction read_friction(const CaseReader &reader, const std::optional<std::string> &law_path) {
+continuum::SlidingFriction read_friction(const CaseReader &reader, const std::optional<std::string> &law_path) {
   const std::string model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file"});
   for (const auto &[other, keys] : kModelKeys)
     if (other != model)
@@ -199,10 +75,8 @@ SlidingFriction read_friction(const CaseReader &reader, const std::optional<std:
   }
 }
 
-}  // namespace
-
 PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path) {
-  const CaseReader reader(path, parse_toml(path));
+  const CaseReader reader(path, parse_toml(path), kSchema);
   reader.reject_unknown_keys();
 
   PinOnDiskCase c;
@@ -239,26 +113,15 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   run.output_interval = reader.positive("run.output_interval", 1e-3);
   if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
   run.initial_speed = reader.number("run.initial_speed", 0.0);
-  run.integrator.method = reader.choice("solver.method", {"bdf", "adams"}, std::string("bdf")) == "bdf"
-                              ? continuum::CvodeIntegrator::Method::Bdf
-                              : continuum::CvodeIntegrator::Method::Adams;
-  run.integrator.rtol = reader.positive("solver.rtol", 1e-8);
-  run.integrator.atol = reader.positive("solver.atol", 1e-10);
-  run.integrator.max_steps = reader.positive_integer("solver.max_steps", 100000);
+  continuum::CvodeIntegrator::Settings defaults;
+  defaults.rtol = 1e-8;
+  defaults.atol = 1e-10;
+  defaults.max_steps = 100000;
+  run.integrator = read_solver(reader, defaults);
   return c;
 }
 
 namespace {
-continuum::CvodeIntegrator::Settings read_solver(const CaseReader &reader, continuum::CvodeIntegrator::Settings s) {
-  s.method = reader.choice("solver.method", {"bdf", "adams"}, std::string("bdf")) == "bdf"
-                 ? continuum::CvodeIntegrator::Method::Bdf
-                 : continuum::CvodeIntegrator::Method::Adams;
-  s.rtol = reader.positive("solver.rtol", s.rtol);
-  s.atol = reader.positive("solver.atol", s.atol);
-  s.max_steps = reader.positive_integer("solver.max_steps", s.max_steps);
-  return s;
-}
-
 tribo::FeedbackModel build_model(const CaseReader &reader, const tribo::FeedbackCoefficients &c, tribo::FeedbackKind kind,
                                  const std::string &key) {
   try {

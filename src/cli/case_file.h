@@ -29,6 +29,11 @@ struct PinOnDiskCase {
   std::string torque_origin;  // how applied_torque was obtained, for the summary
 };
 
+class CaseReader;
+// The [friction] table shared by every machine-element case: model = "constant" | "static_kinetic" |
+// "law_file" (+ alpha for mu0 +/- alpha V). `law_path` is the --law option.
+continuum::SlidingFriction read_friction(const CaseReader &reader, const std::optional<std::string> &law_path);
+
 // `law_path` is the --law option; required exactly when friction.model = "law_file".
 PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path);
 
