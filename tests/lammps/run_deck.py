@@ -87,7 +87,7 @@ def run_slider(args):
         fail(f"mu_eff outside (0, mu_s]: {mu}")
     with open(os.path.join(args.workdir, "sliding.tsv"), "w") as out:
         for row in sliding:
-            out.write(f"{int(row['Step'])}\t{row['c_fric[3]']!r}\t{row['c_fric[5]']!r}\n")
+            out.write(f"{int(row['Step'])}\t{row['c_fric[3]']!r}\t{row['c_fric[5]']!r}\t{row['c_rough[2]']!r}\n")
     print(f"ok: {len(sliding)} sliding rows, contacts {min(contacts):.0f}-{max(contacts):.0f}, "
           f"mu_eff {mu[-1]:.6g}, wear {wear[-1]:.6g} m^3")
 
@@ -123,15 +123,15 @@ def compare(args):
     if len(a) != len(b) or len(a) < 10:
         fail(f"row counts differ or too few: {len(a)} vs {len(b)}")
     worst = 0.0
-    for (step_a, mu_a, wear_a), (step_b, mu_b, wear_b) in zip(a, b):
+    for (step_a, *values_a), (step_b, *values_b) in zip(a, b):
         if step_a != step_b:
             fail(f"steps differ: {step_a} vs {step_b}")
-        for x, y in ((mu_a, mu_b), (wear_a, wear_b)):
+        for x, y in zip(values_a, values_b):
             scale = max(abs(x), abs(y))
             if scale > 0:
                 worst = max(worst, abs(x - y) / scale)
     if worst > 1e-8:
-        fail(f"mu_eff / wear differ between rank counts by {worst:.3e} relative (limit 1e-8)")
+        fail(f"mu_eff / wear / Rq differ between rank counts by {worst:.3e} relative (limit 1e-8)")
     print(f"ok: {len(a)} rows agree, worst relative difference {worst:.3e}")
 
 
