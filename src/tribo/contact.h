@@ -91,6 +91,14 @@ TangentialUpdate mindlin_coulomb(double tangential_stiffness, double normal_forc
                                  const double tangential_velocity[3], double dt, double spring[3],
                                  double &slip, bool advance);
 
+// Re-stick (healing): a contact that did not slip in this step while its tangential relative speed is
+// below 'restick_speed' sticks again, and its accumulated slip resets so the limit returns to mu_s.
+// restick_speed = 0 never heals (the limit stays weakened for the life of the contact).
+inline bool resticks(const TangentialUpdate &update, double tangential_speed, double restick_speed)
+{
+  return restick_speed > 0.0 && !update.slipping && tangential_speed < restick_speed;
+}
+
 inline double mindlin_stiffness(double effective_shear_modulus, double contact_radius)
 {
   return 8.0 * effective_shear_modulus * contact_radius;

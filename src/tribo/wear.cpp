@@ -26,4 +26,16 @@ double ArchardWear::stable_slip_step(double contact_stiffness_per_area) const
   return 2.0 / (factor_ * contact_stiffness_per_area);
 }
 
+WearExchange exchange_wear(double removed, double share_a, double transfer)
+{
+  if (!(transfer >= 0.0 && transfer <= 1.0)) throw InvalidCoefficient("transfer: fraction must be in [0, 1]");
+  WearExchange out;
+  out.lost_a = removed * share_a;
+  out.lost_b = removed - out.lost_a;
+  out.gained_a = transfer * out.lost_b;
+  out.gained_b = transfer * out.lost_a;
+  out.debris = (1.0 - transfer) * removed;
+  return out;
+}
+
 }    // namespace runin::tribo

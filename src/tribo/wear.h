@@ -35,4 +35,15 @@ inline double wear_share(double hardness_a, double hardness_b)
   return hardness_b / (hardness_a + hardness_b);
 }
 
+// Where one contact's removed volume goes: each body loses its 1/H share, and the fraction
+// 'transfer' of what it loses is deposited on the other body; the rest leaves as debris.
+// removed = lost_a + lost_b = gained_a + gained_b + debris.
+struct WearExchange {
+  double lost_a = 0.0, lost_b = 0.0;
+  double gained_a = 0.0, gained_b = 0.0;
+  double debris = 0.0;
+};
+// share_a from wear_share; transfer in [0, 1] (throws InvalidCoefficient otherwise).
+WearExchange exchange_wear(double removed_volume, double share_a, double transfer);
+
 }    // namespace runin::tribo

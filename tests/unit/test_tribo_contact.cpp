@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace runin::tribo;
@@ -116,4 +117,35 @@ TEST(StaticKinetic, SlipWeakeningIsLinearOverDc)
   EXPECT_NEAR(friction.coefficient(0.5e-6), 0.5, kRoundOff);
   EXPECT_DOUBLE_EQ(friction.coefficient(2e-6), 0.2);
   EXPECT_THROW(StaticKineticFriction(0.2, 0.3, 0.0), InvalidCoefficient);
+}
+
+// Slide past d_c (limit mu_k F_n), stop, then push again: with re-stick the contact breaks away at
+// mu_s F_n a second time; without it the second peak stays at mu_k F_n.
+TEST(Mindlin, RestickHealsToStaticLimitAfterAStop)
+{
+  const double kt = 7.6e3, fn = 1.6e-5, dt = 1e-10, speed = 1.0;
+  const StaticKineticFriction friction(0.6, 0.4, 5e-9);
+  const double n[3] = {0.0, 0.0, 1.0};
+  for (double restick_speed : {0.0, 0.1}) {
+    double spring[3] = {0.0, 0.0, 0.0}, slip = 0.0, second_peak = 0.0;
+    auto push = [&](double v, int steps, double *peak) {
+      const double vt[3] = {v, 0.0, 0.0};
+      for (int k = 0; k < steps; ++k) {
+        const TangentialUpdate update = mindlin_coulomb(kt, fn, friction, n, vt, dt, spring, slip, true);
+        if (resticks(update, std::fabs(v), restick_speed)) slip = 0.0;
+        if (peak) *peak = std::max(*peak, std::fabs(update.force[0]));
+      }
+    };
+    push(speed, 200, nullptr);
+    EXPECT_NEAR(kt * std::fabs(spring[0]), 0.4 * fn, 1e-12 * fn);    // sliding at mu_k
+    push(0.0, 3, nullptr);
+    push(speed, 200, &second_peak);
+    const double expected = restick_speed > 0.0 ? 0.6 * fn : 0.4 * fn;
+    EXPECT_NEAR(second_peak, expected, 1e-12 * fn) << "restick speed " << restick_speed;
+  }
+  TangentialUpdate slipping;
+  slipping.slipping = true;
+  EXPECT_FALSE(resticks(slipping, 0.0, 0.1));    // a slipping contact never re-sticks
+  EXPECT_FALSE(resticks(TangentialUpdate(), 0.2, 0.1));
+  EXPECT_TRUE(resticks(TangentialUpdate(), 0.05, 0.1));
 }

@@ -57,3 +57,21 @@ TEST(Archard, StableSlipStepSeparatesDecayFromOscillation)
   EXPECT_DOUBLE_EQ(ArchardWear(1e-3, 1e9, ArchardForm::thesis).stable_slip_step(k_c), 3.0 * bound);
   EXPECT_THROW(wear.stable_slip_step(0.0), InvalidCoefficient);
 }
+
+// removed = lost_a + lost_b = deposited + debris, each body loses its 1/H share and receives
+// 'transfer' times what the other loses.
+TEST(Archard, WearExchangeBookkeepingIsExact)
+{
+  const double removed = 3.7e-22, share = wear_share(0.245e9, 0.87e9);
+  for (double transfer : {0.0, 0.3, 1.0}) {
+    const WearExchange x = exchange_wear(removed, share, transfer);
+    EXPECT_NEAR(x.lost_a + x.lost_b, removed, 1e-15 * removed);
+    EXPECT_NEAR(x.lost_a, removed * 0.87 / (0.245 + 0.87), 1e-14 * removed);
+    EXPECT_NEAR(x.gained_a, transfer * x.lost_b, 1e-16 * removed);
+    EXPECT_NEAR(x.gained_b, transfer * x.lost_a, 1e-16 * removed);
+    EXPECT_NEAR(x.gained_a + x.gained_b + x.debris, removed, 1e-15 * removed) << transfer;
+  }
+  EXPECT_EQ(exchange_wear(removed, share, 1.0).debris, 0.0);
+  EXPECT_THROW(exchange_wear(removed, share, 1.5), InvalidCoefficient);
+  EXPECT_THROW(exchange_wear(removed, share, -0.1), InvalidCoefficient);
+}
