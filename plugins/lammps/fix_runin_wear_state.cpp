@@ -1,27 +1,50 @@
 #include "fix_runin_wear_state.h"
 
+#include "runin_lammps_compat.h"
+#include "tribo/asperity_geometry.h"
+#include "tribo/contact.h"
+
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
+#include "input.h"
 #include "memory.h"
+#include "variable.h"
+
+#include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
+
+namespace {
+constexpr int kGeometryColumns = 2;    // WEAR_DEPTH, FLAT_RADIUS: all the force needs from a ghost
+}
 
 FixRuninWearState::FixRuninWearState(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), values(nullptr)
 {
-  if (narg != 3) error->all(FLERR, "fix RUNIN/WEAR_STATE: expected no arguments, got {}", narg - 3);
-
   restart_peratom = 1;
   create_attribute = 1;
   peratom_flag = 1;
   size_peratom_cols = NCOLUMNS;
   peratom_freq = 1;
-  comm_forward = NCOLUMNS;
+  comm_forward = kGeometryColumns;
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+
+  for (int iarg = 3; iarg < narg; iarg += 2) {
+    if (iarg + 1 >= narg) error->all(FLERR, "fix RUNIN/WEAR_STATE: keyword '{}' needs a value", arg[iarg]);
+    if (strcmp(arg[iarg], "lost") == 0)
+      assign_from_variable(VOLUME_LOST, arg[iarg + 1]);
+    else if (strcmp(arg[iarg], "gained") == 0)
+      assign_from_variable(VOLUME_GAINED, arg[iarg + 1]);
+    else
+      error->all(FLERR, "fix RUNIN/WEAR_STATE: unknown keyword '{}' (expected lost or gained)", arg[iarg]);
+  }
+  if (narg > 3) refresh_geometry_all();
 }
 
 FixRuninWearState::~FixRuninWearState()
@@ -29,6 +52,49 @@ FixRuninWearState::~FixRuninWearState()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(values);
+}
+
+// Initial volumes from an atom-style variable, evaluated once here (atoms outside the group keep 0).
+void FixRuninWearState::assign_from_variable(Column column, const char *reference)
+{
+  const char *keyword = column == VOLUME_LOST ? "lost" : "gained";
+  if (strncmp(reference, "v_", 2) != 0)
+    error->all(FLERR, "fix RUNIN/WEAR_STATE: {} must be an atom-style variable v_name, got '{}'", keyword,
+               reference);
+  const int ivar = input->variable->find(reference + 2);
+  if (ivar < 0 || !input->variable->atomstyle(ivar))
+    error->all(FLERR, "fix RUNIN/WEAR_STATE: {} needs an atom-style variable, got '{}'", keyword, reference);
+  std::vector<double> result(atom->nlocal + 1, 0.0);
+  input->variable->compute_atom(ivar, igroup, result.data(), 1, 0);
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(result[i] >= 0.0))
+      error->one(FLERR, "fix RUNIN/WEAR_STATE: {} volume must be >= 0, got {} for atom {}", keyword, result[i],
+                 atom->tag[i]);
+    values[i][column] = result[i];
+  }
+}
+
+void FixRuninWearState::refresh_geometry(int i)
+{
+  const double radius = atom->radius ? atom->radius[i] : 0.0;
+  if (!(radius > 0.0)) {
+    values[i][WEAR_DEPTH] = values[i][FLAT_RADIUS] = 0.0;
+    return;
+  }
+  const runin::tribo::WornAsperity worn =
+      runin::tribo::worn_asperity(radius, values[i][VOLUME_LOST], values[i][VOLUME_GAINED]);
+  values[i][WEAR_DEPTH] = worn.summit_drop;
+  values[i][FLAT_RADIUS] = worn.flat_radius;
+}
+
+void FixRuninWearState::refresh_geometry_all()
+{
+  for (int i = 0; i < atom->nlocal; i++) refresh_geometry(i);
+}
+
+void FixRuninWearState::forward_geometry()
+{
+  runin_compat::forward_comm(comm, this);
 }
 
 double FixRuninWearState::local_sum(Column column, int groupbit) const
@@ -88,16 +154,20 @@ void FixRuninWearState::unpack_restart(int nlocal, int nth)
 int FixRuninWearState::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  for (int k = 0; k < n; k++)
-    for (int c = 0; c < NCOLUMNS; c++) buf[m++] = values[list[k]][c];
+  for (int k = 0; k < n; k++) {
+    buf[m++] = values[list[k]][WEAR_DEPTH];
+    buf[m++] = values[list[k]][FLAT_RADIUS];
+  }
   return m;
 }
 
 void FixRuninWearState::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  for (int i = first; i < first + n; i++)
-    for (int c = 0; c < NCOLUMNS; c++) values[i][c] = buf[m++];
+  for (int i = first; i < first + n; i++) {
+    values[i][WEAR_DEPTH] = buf[m++];
+    values[i][FLAT_RADIUS] = buf[m++];
+  }
 }
 
 double FixRuninWearState::memory_usage()

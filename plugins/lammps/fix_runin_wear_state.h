@@ -1,6 +1,10 @@
 // Per-atom wear state of RunIn asperities (internal fix, created by pair runin/asperity).
 // Holds the full per-atom storage method set so the state follows atoms across ranks,
-// to ghosts when asked, and through write_restart/read_restart.
+// to ghosts (the geometry columns, which the contact force reads) and through write_restart/read_restart.
+//
+//   fix RUNIN_WEAR_STATE group RUNIN/WEAR_STATE [lost v_name] [gained v_name]
+//
+// Defined by the user (before pair_style, with this ID) only to start from a given worn state.
 #ifdef FIX_CLASS
 // clang-format off
 FixStyle(RUNIN/WEAR_STATE,FixRuninWearState);
@@ -16,7 +20,9 @@ namespace LAMMPS_NS {
 
 class FixRuninWearState : public Fix {
  public:
-  enum Column { VOLUME_LOST = 0, NCOLUMNS };
+  // VOLUME_LOST: removed by wear; VOLUME_GAINED: deposited by transfer from counter-asperities [m^3].
+  // WEAR_DEPTH h (summit drop) and FLAT_RADIUS a_w follow from them and the radius (truncated sphere).
+  enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, NCOLUMNS };
   static constexpr const char *default_id = "RUNIN_WEAR_STATE";
 
   FixRuninWearState(class LAMMPS *, int, char **);
@@ -25,6 +31,11 @@ class FixRuninWearState : public Fix {
 
   double **state() { return values; }
   double local_sum(Column column, int groupbit) const;
+  // Recompute WEAR_DEPTH and FLAT_RADIUS of owned atom i from its volumes and radius.
+  void refresh_geometry(int i);
+  void refresh_geometry_all();
+  // Send the geometry columns to the ghosts.
+  void forward_geometry();
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -41,6 +52,7 @@ class FixRuninWearState : public Fix {
 
  private:
   double **values;
+  void assign_from_variable(Column column, const char *name);
 };
 
 }    // namespace LAMMPS_NS

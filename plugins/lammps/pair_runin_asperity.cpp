@@ -2,6 +2,8 @@
 
 #include "fix_runin_wear_state.h"
 #include "runin_lammps_compat.h"
+#include "runin_timestep_guard.h"    // timestep guard hook (micro-bench)
+#include "tribo/asperity_geometry.h"
 #include "tribo/contact.h"
 
 #include "atom.h"
@@ -11,6 +13,7 @@
 #include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
+#include "math_const.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -23,6 +26,7 @@
 #include <map>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 namespace tribo = runin::tribo;
 
 namespace {
@@ -42,6 +46,7 @@ TypePairModel make_model(const PairRuninAsperity::Coefficients &c, tribo::Archar
   return TypePairModel{tribo::RestitutionDamping(c.restitution),
                        tribo::StaticKineticFriction(c.mu_static, c.mu_kinetic, c.slip_weakening_distance),
                        tribo::ArchardWear(c.wear_coefficient, softer, form),
+                       tribo::AdhesionPloughing(c.shear_strength, c.ploughing_factor),
                        tribo::wear_share(c.hardness_i, c.hardness_j)};
 }
 
@@ -56,14 +61,16 @@ inline void cross(const double *a, const double *b, double *out)
 }    // namespace
 
 PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
-    Pair(lmp), dt(0.0), wear_on(true), archard_form(tribo::ArchardForm::plain),
-    wear_increment(nullptr), nmax_increment(0), maxrad(nullptr), fix_history(nullptr), fix_wear(nullptr)
+    Pair(lmp), dt(0.0), wear_on(true), reshape(true), archard_form(tribo::ArchardForm::plain),
+    friction_model(FrictionModel::coulomb), transfer_fraction(0.0), restick_speed(0.0),
+    wear_increment(nullptr), gain_increment(nullptr), nmax_increment(0), maxrad(nullptr), fix_history(nullptr),
+    fix_wear(nullptr)
 {
   single_enable = 0;
   no_virial_fdotr_compute = 1;
   finitecutflag = 1;
   restartinfo = 1;
-  comm_reverse = 1;
+  comm_reverse = 2;    // wear and transfer increments
   // slip distance is a scalar: do not negate it when LAMMPS swaps i and j
   nondefault_history_transfer = 1;
   beyond_contact = 0;
@@ -85,6 +92,7 @@ PairRuninAsperity::~PairRuninAsperity()
     delete[] maxrad;
   }
   memory->destroy(wear_increment);
+  memory->destroy(gain_increment);
 }
 
 void PairRuninAsperity::allocate()
@@ -140,8 +148,35 @@ void PairRuninAsperity::settings(int narg, char **arg)
         archard_form = tribo::ArchardForm::thesis;
       else
         error->all(FLERR, "pair_style runin/asperity: archard must be 'plain' or 'thesis', got '{}'", value);
+    } else if (keyword == "reshape") {
+      if (value == "yes" || value == "on")
+        reshape = true;
+      else if (value == "no" || value == "off")
+        reshape = false;
+      else
+        error->all(FLERR, "pair_style runin/asperity: reshape must be 'yes' or 'no', got '{}'", value);
+    } else if (keyword == "friction") {
+      if (value == "coulomb")
+        friction_model = FrictionModel::coulomb;
+      else if (value == "strength")
+        friction_model = FrictionModel::strength;
+      else
+        error->all(FLERR, "pair_style runin/asperity: friction must be 'coulomb' or 'strength', got '{}'", value);
+    } else if (keyword == "transfer") {
+      const double fraction = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;
+      if (!(fraction >= 0.0 && fraction <= 1.0))
+        error->all(FLERR, "pair_style runin/asperity: transfer fraction must be in [0, 1], got '{}'", value);
+      transfer_fraction = fraction;
+    } else if (keyword == "restick") {
+      const double speed = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;
+      if (!(speed >= 0.0))
+        error->all(FLERR, "pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value);
+      restick_speed = speed;
     } else {
-      error->all(FLERR, "pair_style runin/asperity: unknown keyword '{}' (expected wear or archard)", keyword);
+      error->all(FLERR,
+                 "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, friction, "
+                 "transfer or restick)",
+                 keyword);
     }
   }
   if (wear_on && domain->box_exist) attach_wear_state();
@@ -175,10 +210,12 @@ void PairRuninAsperity::coeff(int narg, char **arg)
 
   Coefficients c;
   const char *origin = "explicit";
-  if (narg == 6 && strcmp(arg[2], "file") == 0) {
+  int optional_first = narg;
+  if (narg >= 6 && strcmp(arg[2], "file") == 0) {
     c = read_coefficients_file(arg[3], arg[4], arg[5]);
     origin = "file";
-  } else if (narg == 10) {
+    optional_first = 6;
+  } else if (narg == 10 || (narg > 10 && !utils::is_double(arg[10]))) {
     const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
     double v[Coefficients::NPACKED];
     for (int k = 0; k < 8; k++) {
@@ -188,12 +225,14 @@ void PairRuninAsperity::coeff(int narg, char **arg)
     }
     v[8] = v[7];    // one hardness for both types
     c = Coefficients::unpack(v);
+    optional_first = 10;
   } else {
     error->all(FLERR,
                "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values) or "
-               "'I J file <path> <material-I> <material-J>', got {} arguments",
+               "'I J file <path> <material-I> <material-J>', then optional 'tau_s X' 'plough X'; got {} arguments",
                narg);
   }
+  read_optional_coefficients(c, narg, arg, optional_first);
   validate(c, origin);
 
   int ilo, ihi, jlo, jhi;
@@ -210,6 +249,20 @@ void PairRuninAsperity::coeff(int narg, char **arg)
       count++;
     }
   if (count == 0) error->all(FLERR, "pair_coeff runin/asperity: no type pair in range {} {}", arg[0], arg[1]);
+}
+
+void PairRuninAsperity::read_optional_coefficients(Coefficients &c, int narg, char **arg, int first)
+{
+  for (int iarg = first; iarg < narg; iarg += 2) {
+    const std::string keyword = arg[iarg];
+    if (keyword != "tau_s" && keyword != "plough")
+      error->all(FLERR, "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s or plough)", keyword);
+    if (iarg + 1 >= narg || !utils::is_double(arg[iarg + 1]))
+      error->all(FLERR, "pair_coeff runin/asperity: {} needs a number, got '{}'", keyword,
+                 iarg + 1 < narg ? arg[iarg + 1] : "");
+    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    (keyword == "tau_s" ? c.shear_strength : c.ploughing_factor) = value;
+  }
 }
 
 // File format (potentials/*.runin), SI units, '#' comments:
@@ -313,6 +366,14 @@ void PairRuninAsperity::init_style()
   MPI_Allreduce(local.data(), maxrad, atom->ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
 
   models.assign(coeffs.size(), std::nullopt);
+
+  // --- timestep guard hook (runin_timestep_guard.h): WARNING/ERROR on dt vs the Rayleigh time ---
+  runin_lammps::guard_timestep(lmp, "pair runin/asperity", [this](int i, int j) {
+    return setflag[i][j] ? runin_lammps::PairModuli{coeff_of(i, j).effective_modulus,
+                                                    coeff_of(i, j).effective_shear_modulus}
+                         : runin_lammps::PairModuli{};
+  });
+  // --- end timestep guard hook ---
 }
 
 double PairRuninAsperity::init_one(int i, int j)
@@ -332,6 +393,14 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   const bool advance = update->setupflag == 0;
   const bool track_wear = wear_on && advance;
 
+  // worn geometry of owned atoms (all of them at setup: radii or volumes may have been set), then ghosts
+  double **state = fix_wear ? fix_wear->state() : nullptr;
+  if (fix_wear) {
+    if (!advance) fix_wear->refresh_geometry_all();
+    fix_wear->forward_geometry();
+  }
+  const bool worn_geometry = reshape && state;
+
   double **x = atom->x, **v = atom->v, **f = atom->f;
   double **omega = atom->omega, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass;
@@ -346,9 +415,12 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     if (atom->nmax > nmax_increment) {
       nmax_increment = atom->nmax;
       memory->destroy(wear_increment);
+      memory->destroy(gain_increment);
       memory->create(wear_increment, nmax_increment, "pair:wear_increment");
+      memory->create(gain_increment, nmax_increment, "pair:gain_increment");
     }
     std::fill(wear_increment, wear_increment + nall, 0.0);
+    std::fill(gain_increment, gain_increment + nall, 0.0);
   }
 
   const int inum = list->inum;
@@ -373,8 +445,12 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       const double rsq = dot(del, del);
       const double radj = radius[j];
       const double radsum = radi + radj;
+      // worn summits sit lower by their wear depth (higher if material was deposited)
+      const double summit_drop =
+          worn_geometry ? state[i][FixRuninWearState::WEAR_DEPTH] + state[j][FixRuninWearState::WEAR_DEPTH] : 0.0;
+      const double reach = radsum - summit_drop;
 
-      if (rsq >= radsum * radsum) {
+      if (reach <= 0.0 || rsq >= reach * reach) {
         touch[jj] = 0;
         for (int k = 0; k < HISTORY_SIZE; k++) history[k] = 0.0;
         continue;
@@ -385,7 +461,7 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       const Coefficients &c = coeffs[itype * ntypes1 + jtype];
       const TypePairModel &model = *models[itype * ntypes1 + jtype];
       const double r = std::sqrt(rsq);
-      const double overlap = radsum - r;
+      const double overlap = reach - r;
       const double normal[3] = {del[0] / r, del[1] / r, del[2] / r};
       const double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
 
@@ -399,14 +475,32 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       double vt[3];
       for (int k = 0; k < 3; k++) vt[k] = vr[k] - vn * normal[k] + spin_velocity[k];
 
-      const tribo::HertzNormal hertz(c.effective_modulus, radi * radj / radsum);
-      const double stiffness = hertz.stiffness(overlap);
-      double fn = hertz.force(overlap) + model.damping.force(stiffness, meff, vn);
+      const double flat = worn_geometry ? tribo::combined_flat_radius(state[i][FixRuninWearState::FLAT_RADIUS],
+                                                                      state[j][FixRuninWearState::FLAT_RADIUS])
+                                        : 0.0;
+      const tribo::FlatHertzNormal contact(c.effective_modulus, radi * radj / radsum, flat);
+      const double contact_radius = contact.contact_radius(overlap);
+      const double stiffness = contact.stiffness(overlap);
+      double fn = contact.force(overlap) + model.damping.force(stiffness, meff, vn);
       if (fn < 0.0) fn = 0.0;    // damping must not glue asperities together
 
-      const double kt = tribo::mindlin_stiffness(c.effective_shear_modulus, hertz.contact_radius(overlap));
-      const tribo::TangentialUpdate tangential = tribo::mindlin_coulomb(
-          kt, fn, model.friction, normal, vt, dt, &history[SPRING_X], history[SLIP], advance);
+      const double kt = tribo::mindlin_stiffness(c.effective_shear_modulus, contact_radius);
+      tribo::FrictionStrengthParts strength;
+      tribo::TangentialUpdate tangential;
+      if (friction_model == FrictionModel::strength && fn > 0.0) {
+        // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
+        strength = model.strength.strength(fn, contact_radius, overlap);
+        const double mu_kinetic = strength.total() / fn;
+        const tribo::StaticKineticFriction limit(mu_kinetic + c.mu_static - c.mu_kinetic, mu_kinetic,
+                                                 c.slip_weakening_distance);
+        tangential = tribo::mindlin_coulomb(kt, fn, limit, normal, vt, dt, &history[SPRING_X], history[SLIP],
+                                            advance);
+      } else {
+        tangential = tribo::mindlin_coulomb(kt, fn, model.friction, normal, vt, dt, &history[SPRING_X],
+                                            history[SLIP], advance);
+      }
+      if (advance && tribo::resticks(tangential, std::sqrt(dot(vt, vt)), restick_speed))
+        history[SLIP] = 0.0;    // re-stuck: the contact heals to its static limit
       const double *ft = tangential.force;
 
       const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
@@ -429,16 +523,26 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       sums.normal_force += weight * fn;
       for (int k = 0; k < 3; k++) sums.tangential_force[k] += orient * ft[k];
       sums.contacts += weight;
+      if (!tangential.slipping) sums.sticking_contacts += weight;
+      sums.contact_area += weight * MY_PI * contact_radius * contact_radius;
+      sums.adhesion_force += weight * strength.adhesion;
+      sums.ploughing_force += weight * strength.ploughing;
+      if (dt > 0.0) sums.frictional_power += weight * std::sqrt(dot(ft, ft)) * tangential.slip_increment / dt;
 
       if (track_wear && tangential.slip_increment > 0.0) {
         const double worn = model.wear.volume(fn, tangential.slip_increment);
-        wear_increment[i] += worn * model.share_i;
-        if (j_here) wear_increment[j] += worn * (1.0 - model.share_i);
+        const tribo::WearExchange exchange = tribo::exchange_wear(worn, model.share_i, transfer_fraction);
+        wear_increment[i] += exchange.lost_a;
+        gain_increment[i] += exchange.gained_a;
+        if (j_here) {
+          wear_increment[j] += exchange.lost_b;
+          gain_increment[j] += exchange.gained_b;
+        }
         sums.wear_volume += weight * worn;
       }
 
       if (evflag) {
-        const double energy = eflag ? hertz.elastic_energy(overlap) : 0.0;
+        const double energy = eflag ? contact.elastic_energy(overlap) : 0.0;
         ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1],
                      del[2]);
       }
@@ -447,8 +551,12 @@ void PairRuninAsperity::compute(int eflag, int vflag)
 
   if (track_wear) {
     if (newton_pair) runin_compat::reverse_comm(comm, this);
-    double **state = fix_wear->state();
-    for (int i = 0; i < nlocal; i++) state[i][FixRuninWearState::VOLUME_LOST] += wear_increment[i];
+    for (int i = 0; i < nlocal; i++) {
+      if (wear_increment[i] == 0.0 && gain_increment[i] == 0.0) continue;
+      state[i][FixRuninWearState::VOLUME_LOST] += wear_increment[i];
+      state[i][FixRuninWearState::VOLUME_GAINED] += gain_increment[i];
+      fix_wear->refresh_geometry(i);
+    }
   }
 }
 
@@ -460,13 +568,21 @@ void PairRuninAsperity::transfer_history(double *source, double *target)
 
 int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) buf[k] = wear_increment[first + k];
-  return n;
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    buf[m++] = wear_increment[first + k];
+    buf[m++] = gain_increment[first + k];
+  }
+  return m;
 }
 
 void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  for (int k = 0; k < n; k++) wear_increment[list[k]] += buf[k];
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    wear_increment[list[k]] += buf[m++];
+    gain_increment[list[k]] += buf[m++];
+  }
 }
 
 void PairRuninAsperity::write_restart(FILE *fp)
@@ -499,17 +615,29 @@ void PairRuninAsperity::read_restart(FILE *fp)
 
 void PairRuninAsperity::write_restart_settings(FILE *fp)
 {
-  const int flags[2] = {wear_on ? 1 : 0, archard_form == tribo::ArchardForm::thesis ? 1 : 0};
-  fwrite(flags, sizeof(int), 2, fp);
+  const int flags[4] = {wear_on ? 1 : 0, archard_form == tribo::ArchardForm::thesis ? 1 : 0, reshape ? 1 : 0,
+                        friction_model == FrictionModel::strength ? 1 : 0};
+  fwrite(flags, sizeof(int), 4, fp);
+  const double values[2] = {transfer_fraction, restick_speed};
+  fwrite(values, sizeof(double), 2, fp);
 }
 
 void PairRuninAsperity::read_restart_settings(FILE *fp)
 {
-  int flags[2] = {1, 0};
-  if (comm->me == 0) utils::sfread(FLERR, flags, sizeof(int), 2, fp, nullptr, error);
-  MPI_Bcast(flags, 2, MPI_INT, 0, world);
+  int flags[4] = {1, 0, 1, 0};
+  double values[2] = {0.0, 0.0};
+  if (comm->me == 0) {
+    utils::sfread(FLERR, flags, sizeof(int), 4, fp, nullptr, error);
+    utils::sfread(FLERR, values, sizeof(double), 2, fp, nullptr, error);
+  }
+  MPI_Bcast(flags, 4, MPI_INT, 0, world);
+  MPI_Bcast(values, 2, MPI_DOUBLE, 0, world);
   wear_on = flags[0] == 1;
   archard_form = flags[1] == 1 ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain;
+  reshape = flags[2] == 1;
+  friction_model = flags[3] == 1 ? FrictionModel::strength : FrictionModel::coulomb;
+  transfer_fraction = values[0];
+  restick_speed = values[1];
 }
 
 void PairRuninAsperity::reset_dt()
@@ -519,7 +647,7 @@ void PairRuninAsperity::reset_dt()
 
 double PairRuninAsperity::memory_usage()
 {
-  return static_cast<double>(nmax_increment) * sizeof(double);
+  return 2.0 * static_cast<double>(nmax_increment) * sizeof(double);
 }
 
 double PairRuninAsperity::atom2cut(int i)

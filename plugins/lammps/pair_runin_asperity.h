@@ -1,7 +1,8 @@
 // pair_style runin/asperity: asperity-asperity contact between rough bodies.
-// A thin adapter around the runin::tribo kernels: Hertz normal force with restitution
-// damping, a Mindlin spring with per-contact history and a static/kinetic Coulomb limit,
-// and Archard wear accumulated per atom.
+// A thin adapter around the runin::tribo kernels: Hertz (or, for worn asperities, Sneddon's
+// flat punch + Hertz) normal force with restitution damping, a Mindlin spring with per-contact
+// history and a static/kinetic Coulomb limit (optionally from adhesion + ploughing), and Archard
+// wear that flattens and lowers the asperities, with optional transfer to the counter-asperity.
 #ifdef PAIR_CLASS
 // clang-format off
 PairStyle(runin/asperity,PairRuninAsperity);
@@ -14,6 +15,7 @@ PairStyle(runin/asperity,PairRuninAsperity);
 #include "pair.h"
 #include "runin_contact_sums.h"
 #include "tribo/contact.h"
+#include "tribo/friction_strength.h"
 #include "tribo/wear.h"
 
 #include <optional>
@@ -32,6 +34,9 @@ class PairRuninAsperity : public Pair, public RuninContactSource {
     double mu_static = 0.0, mu_kinetic = 0.0, slip_weakening_distance = 0.0;
     double wear_coefficient = 0.0;         // k [-]
     double hardness_i = 0.0, hardness_j = 0.0;  // H of the type-I and type-J asperity [Pa]
+    // optional (trailing pair_coeff keywords), used with 'friction strength'
+    double shear_strength = 0.0;           // tau_s [Pa]
+    double ploughing_factor = 1.0;         // scales Rabinowicz's mu_p [-]
 
     // From {E*, G*, e, mu_s, mu_k, d_c, k, H_I, H_J}, the order of the explicit pair_coeff form.
     static constexpr int NPACKED = 9;
@@ -43,6 +48,7 @@ class PairRuninAsperity : public Pair, public RuninContactSource {
     runin::tribo::RestitutionDamping damping;
     runin::tribo::StaticKineticFriction friction;
     runin::tribo::ArchardWear wear;
+    runin::tribo::AdhesionPloughing strength;
     double share_i;    // part of a contact's wear volume taken by the type-I atom
   };
 
@@ -72,15 +78,21 @@ class PairRuninAsperity : public Pair, public RuninContactSource {
 
  protected:
   enum HistoryIndex { SPRING_X = 0, SPRING_Y, SPRING_Z, SLIP, HISTORY_SIZE };
+  enum class FrictionModel { coulomb, strength };
 
   double dt;
   bool wear_on;
+  bool reshape;                    // worn geometry (summit drop, flat) enters the normal force
   runin::tribo::ArchardForm archard_form;
+  FrictionModel friction_model;
+  double transfer_fraction;        // part of the removed volume deposited on the counter-asperity
+  double restick_speed;            // below this tangential speed a contact heals to mu_s (0: never)
   std::vector<Coefficients> coeffs;    // (ntypes+1)^2; [J][I] has the hardnesses swapped
   std::vector<std::optional<TypePairModel>> models;    // same layout, built in init_one
   RuninContactSums sums;
 
   double *wear_increment;    // owned + ghost, reverse-communicated each step
+  double *gain_increment;    // volume deposited by transfer, same layout
   int nmax_increment;
   double *maxrad;            // per type
 
@@ -94,6 +106,7 @@ class PairRuninAsperity : public Pair, public RuninContactSource {
   Coefficients read_coefficients_file(const std::string &file, const std::string &material_i,
                                       const std::string &material_j);
   void validate(const Coefficients &c, const char *origin);
+  void read_optional_coefficients(Coefficients &c, int narg, char **arg, int first);
 };
 
 }    // namespace LAMMPS_NS

@@ -2,8 +2,10 @@
 
 #include "compute_runin_friction.h"
 #include "compute_runin_roughness.h"
+#include "fix_runin_wall.h"
 #include "fix_runin_wear_state.h"
 #include "pair_runin_asperity.h"
+#include "runin_timestep_guard.h"
 
 #include "force.h"
 #include "lammps.h"
@@ -43,6 +45,10 @@ const std::vector<StyleEntry> &styles()
        &create_pair<PairRuninAsperity>, nullptr},
       {"fix", "RUNIN/WEAR_STATE", "RunIn per-atom wear state (internal)", nullptr,
        &create_with_args<FixRuninWearState>},
+      {"fix", "RUNIN/FINITE_CHECK", "RunIn non-finite force check (internal)", nullptr,
+       &create_with_args<FixRuninFiniteCheck>},
+      {"fix", "runin/wall", "RunIn asperities against a rigid flat counterface (displacement or load control)",
+       nullptr, &create_with_args<FixRuninWall>},
       {"compute", "runin/friction", "RunIn contact force, friction and wear sums", nullptr,
        &create_with_args<ComputeRuninFriction>},
       {"compute", "runin/roughness", "RunIn surface statistics (Ra, Rq, Rsk, Rku, Rp, Rv, Rz, bearing ratio)",
@@ -55,6 +61,8 @@ void register_styles(LAMMPS *lmp)
 {
   (*lmp->force->pair_map)["runin/asperity"] = &pair_creator<PairRuninAsperity>;
   (*lmp->modify->fix_map)["RUNIN/WEAR_STATE"] = &fix_creator<FixRuninWearState>;
+  (*lmp->modify->fix_map)["RUNIN/FINITE_CHECK"] = &fix_creator<FixRuninFiniteCheck>;
+  (*lmp->modify->fix_map)["runin/wall"] = &fix_creator<FixRuninWall>;
   (*lmp->modify->compute_map)["runin/friction"] = &compute_creator<ComputeRuninFriction>;
   (*lmp->modify->compute_map)["runin/roughness"] = &compute_creator<ComputeRuninRoughness>;
 }

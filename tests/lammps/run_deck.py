@@ -6,6 +6,8 @@
   run_deck.py compare DIR_A DIR_B
   run_deck.py roughness --lmp LMP --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
   run_deck.py expect-error --lmp LMP --deck DECK --workdir DIR --pattern REGEX
+  run_deck.py expect-warning --lmp LMP --deck DECK --workdir DIR --pattern REGEX
+  run_deck.py materials --lmp LMP --deck DECK --workdir DIR FILE:MAT_A:MAT_B ...
 """
 import argparse
 import math
@@ -235,6 +237,303 @@ def expect_error(args):
     print("ok: " + errors[0])
 
 
+def expect_warning(args):
+    """The deck runs to the end and prints exactly one WARNING matching the pattern per run."""
+    fresh_dir(args.workdir)
+    result = subprocess.run([args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"],
+                            cwd=args.workdir, env=mpi_env(), capture_output=True, text=True, timeout=60)
+    output = result.stdout + result.stderr
+    if result.returncode != 0:
+        fail(f"lmp_runin exited with {result.returncode}\n{output}")
+    matching = [line for line in output.splitlines() if line.startswith("WARNING") and re.search(args.pattern, line)]
+    if len(matching) != 1:
+        fail(f"expected one WARNING matching {args.pattern!r}, got {matching}\n{output}")
+    if "Loop time" not in output:
+        fail("the run did not finish")
+    print("ok: " + matching[0])
+
+
+def runin_materials(path):
+    """{name: (E, nu)} from the material lines of a .runin coefficient file."""
+    materials = {}
+    for line in open(path):
+        words = line.split("#")[0].split()
+        if words and words[0] == "material":
+            materials[words[1]] = (float(words[2]), float(words[3]))
+    return materials
+
+
+def materials(args):
+    """Each coefficient file through 'pair_coeff * * file': the Hertz energy of two asperities of
+    radius R overlapping by delta, 8/15 E* sqrt(R/2) delta^5/2, from the file's E and nu."""
+    radius, delta = 1.0e-6, 1.0e-8
+    for spec in args.entries:
+        name, mat_a, mat_b = spec.split(":")
+        workdir = os.path.join(args.workdir, f"{name}_{mat_a}_{mat_b}")
+        fresh_dir(workdir)
+        command = [args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-var", "potdir",
+                   os.path.join(SOURCE_DIR, "potentials"), "-var", "file", name, "-var", "matA", mat_a,
+                   "-var", "matB", mat_b, "-var", "R", repr(radius), "-var", "delta", repr(delta),
+                   "-log", "log.lammps", "-screen", "none"]
+        result = subprocess.run(command, cwd=workdir, env=mpi_env(), capture_output=True, text=True, timeout=60)
+        log = open(os.path.join(workdir, "log.lammps")).read()
+        if result.returncode != 0 or "WARNING" in log:
+            fail(f"{name} {mat_a} {mat_b}: exit {result.returncode}, log:\n{log[-2000:]}")
+        table = runin_materials(os.path.join(SOURCE_DIR, "potentials", name))
+        (e_a, nu_a), (e_b, nu_b) = table[mat_a], table[mat_b]
+        e_eff = 1.0 / ((1.0 - nu_a ** 2) / e_a + (1.0 - nu_b ** 2) / e_b)
+        expected = 8.0 / 15.0 * e_eff * math.sqrt(radius / 2.0) * delta ** 2.5
+        got = thermo_blocks(log)[-1][-1]["PotEng"]
+        if abs(got - expected) > 1e-10 * expected:
+            fail(f"{name} {mat_a} {mat_b}: Hertz energy {got!r} J, closed form {expected!r} J")
+        print(f"ok: {name} {mat_a}/{mat_b}: E* = {e_eff:.4g} Pa, energy {got:.6g} J matches the closed form")
+
+
+# Greenwood-Williamson sample: 100 x 100 summits of radius R on a square grid of spacing a
+# (eta = 1/a^2), heights sigma * Phi^-1(u), u stratified over (0, 1) with a seeded jitter and then
+# shuffled: a deterministic Gaussian sample whose histogram follows phi closely in the tail.
+GW = {"n": 100, "a": 2.0e-6, "R": 5.0e-6, "sigma": 1.0e-7, "Estar": 1.0e11, "seed": 20261122}
+
+
+def gw_sample(path):
+    import random
+    import statistics
+    rng = random.Random(GW["seed"])
+    n = GW["n"] ** 2
+    gauss = statistics.NormalDist(0.0, GW["sigma"])
+    heights = [gauss.inv_cdf((k + rng.random()) / n) for k in range(n)]
+    rng.shuffle(heights)
+    side = GW["n"] * GW["a"]
+    with open(path, "w") as out:
+        out.write(f"RunIn GW sample (run_deck.py gw)\n\n{n} atoms\n1 atom types\n\n")
+        out.write(f"0 {side!r} xlo xhi\n0 {side!r} ylo yhi\n{-3 * GW['R']!r} {2 * GW['R']!r} zlo zhi\n\n")
+        out.write("Atoms # sphere\n\n")
+        for k, h in enumerate(heights):
+            x = (k % GW["n"] + 0.5) * GW["a"]
+            y = (k // GW["n"] + 0.5) * GW["a"]
+            out.write(f"{k + 1} 1 {2 * GW['R']!r} 7800.0 {x!r} {y!r} {h - GW['R']!r}\n")
+    return heights
+
+
+def hertz_sum(heights, wall_z):
+    """Exact load of the sample: every summit above the flat is one Hertz contact."""
+    c = 4.0 / 3.0 * GW["Estar"] * math.sqrt(GW["R"])
+    return sum(c * (h - wall_z) ** 1.5 for h in heights if h > wall_z)
+
+
+def run_gw(args):
+    """Wall load vs separation: exact sum over the sample (1e-9) and the GW integral (3 %)."""
+    fresh_dir(args.workdir)
+    heights = gw_sample(os.path.join(args.workdir, "gw.data"))
+    n = len(heights)
+    mean = sum(heights) / n
+    sigma = math.sqrt(sum((h - mean) ** 2 for h in heights) / n)
+    area = (GW["n"] * GW["a"]) ** 2
+    separations = [-1.0, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5]    # (wall z - mean) / sigma
+    walls = [mean + s * sigma for s in separations]
+    command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck),
+               "-var", "data", "gw.data", "-var", "R", repr(GW["R"]), "-var", "Estar", repr(GW["Estar"]),
+               "-var", "zw", *[repr(z) for z in walls], "-log", "log.lammps", "-screen", "none"]
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+    log_path = os.path.join(args.workdir, "log.lammps")
+    log = open(log_path).read() if os.path.exists(log_path) else ""
+    if result.returncode != 0:
+        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout}\n{result.stderr}\n{log[-2000:]}")
+    if args.np > 1 and f"with {args.np} MPI tasks" not in log:
+        fail(f"the run did not use {args.np} MPI ranks")
+    rows = [[float(w) for w in line.split()[1:]] for line in log.splitlines() if line.startswith("GW_LOAD")]
+    if len(rows) != len(walls):
+        fail(f"expected {len(walls)} GW_LOAD lines, got {len(rows)}")
+    gw = subprocess.run([args.gw_expected, repr(1.0 / GW["a"] ** 2), repr(GW["R"]), repr(sigma), repr(GW["Estar"]),
+                         *[repr(z - mean) for z in walls]], capture_output=True, text=True, check=True)
+    expected_gw = [float(line.split()[1]) * area for line in gw.stdout.splitlines()]
+    with open(os.path.join(args.workdir, "gw_load.tsv"), "w") as out:
+        out.write("# (z-mean)/sigma  wall_z[m]  F_wall[N]  F_sum[N]  F_GW[N]  contacts\n")
+        for s, z, (zw, force, contacts, fric_fn, fric_contacts), f_gw in zip(separations, walls, rows, expected_gw):
+            exact = hertz_sum(heights, z)
+            touching = sum(1 for h in heights if h > z)
+            if abs(zw - z) > 1e-12 * GW["sigma"]:
+                fail(f"wall z {zw!r} reported, {z!r} requested")
+            if contacts != touching or fric_contacts != touching:
+                fail(f"d = {s} sigma: {contacts:.0f} wall / {fric_contacts:.0f} compute contacts, sample has {touching}")
+            if abs(force - exact) > 1e-9 * exact or abs(fric_fn - exact) > 1e-9 * exact:
+                fail(f"d = {s} sigma: wall force {force!r} / compute {fric_fn!r} vs exact Hertz sum {exact!r}")
+            if abs(force - f_gw) > 0.03 * f_gw:
+                fail(f"d = {s} sigma: wall force {force:.6e} N vs GW {f_gw:.6e} N "
+                     f"({100 * (force / f_gw - 1):+.2f} %, limit 3 %)")
+            out.write(f"{s}\t{z!r}\t{force!r}\t{exact!r}\t{f_gw!r}\t{contacts:.0f}\n")
+            print(f"d = {s:3.1f} sigma: {contacts:5.0f} contacts, F = {force:.6e} N, GW {f_gw:.6e} N "
+                  f"({100 * (force / f_gw - 1):+.2f} %)")
+    print(f"ok: {args.np} rank(s), sample mean {mean:.3e} m, sigma {sigma:.6e} m")
+
+
+def run_lmp(args, deck, extra, log_name):
+    command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", os.path.join(SOURCE_DIR, deck), *extra,
+               "-log", log_name, "-screen", "none"]
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+    log_path = os.path.join(args.workdir, log_name)
+    log = open(log_path).read() if os.path.exists(log_path) else ""
+    if result.returncode != 0:
+        fail(f"{deck} exited with {result.returncode}\n{result.stdout}\n{result.stderr}\n{log[-2000:]}")
+    if args.np > 1 and f"with {args.np} MPI tasks" not in log:
+        fail(f"the run did not use {args.np} MPI ranks")
+    return thermo_blocks(log)
+
+
+def run_gw_servo(args):
+    """fix runin/wall load control, sliding, wear and restart on the GW sample (closed forms)."""
+    fresh_dir(args.workdir)
+    heights = gw_sample(os.path.join(args.workdir, "gw.data"))
+    pressure, speed, dt, nload, nslide = 1.5e8, 1.0, 1.0e-9, 400, 200
+    mu_k, k, h_asperity, h_wall = 0.4, 1.0e-3, 1.0e9, 3.0e9    # the deck's friction and wear values
+    target = pressure * (GW["n"] * GW["a"]) ** 2
+    load, slide1, slide2 = run_lmp(args, args.deck, ["-var", "data", "gw.data", "-var", "z0", "5.0e-7"], "log.lammps")
+
+    # 1. servo: monotone approach, no overshoot, converged onto the sample's exact Hertz-sum root
+    forces = [row["f_wall[3]"] for row in load]
+    if any(b < a * (1 - 1e-12) for a, b in zip(forces, forces[1:])):
+        fail(f"servo force is not monotone: {forces}")
+    if max(forces) > target * (1 + 1e-9):
+        fail(f"servo overshoots: max {max(forces)!r} N, target {target!r} N")
+    if abs(forces[-1] - target) > 1e-9 * target:
+        fail(f"servo did not converge: {forces[-1]!r} N, target {target!r} N")
+    lo, hi = min(heights) - GW["sigma"], max(heights)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if hertz_sum(heights, mid) > target else (lo, mid)
+    z_wall = load[-1]["f_wall[4]"]
+    if abs(z_wall - lo) > 1e-6 * GW["sigma"]:
+        fail(f"wall z {z_wall!r} m vs exact-sum root {lo!r} m")
+
+    # 2. sliding under load: Coulomb (kinetic) friction and the Archard budget of both bodies
+    rows = slide1 + slide2
+    share_asperity = h_wall / (h_asperity + h_wall)
+    for row in rows:
+        travel = speed * dt * (row["Step"] - nload)
+        if abs(row["f_wall[5]"] - travel) > 1e-9 * max(travel, 1e-12) or row["f_wall[6]"] != 0.0:
+            fail(f"wall travel {row['f_wall[5]']!r}, {row['f_wall[6]']!r} at step {row['Step']:.0f}; want {travel!r}, 0")
+    steady = [row for row in rows if row["Step"] >= nload + 100]    # springs saturate within ~30 steps
+    for a, b in zip(steady, steady[1:]):
+        fz = b["f_wall[3]"]
+        if abs(-b["f_wall[1]"] - mu_k * fz) > 1e-9 * fz or abs(b["c_fric[2]"] - mu_k * b["c_fric[1]"]) > 1e-9 * fz:
+            fail(f"step {b['Step']:.0f}: friction {b['f_wall[1]']!r} N, want -mu_k Fz = {-mu_k * fz!r} N")
+        worn = k * fz * speed * dt * (b["Step"] - a["Step"]) / min(h_asperity, h_wall)
+        d_wall, d_asperity = b["f_wall[7]"] - a["f_wall[7]"], b["c_fric[5]"] - a["c_fric[5]"]
+        if abs(d_wall - (1 - share_asperity) * worn) > 1e-6 * worn or abs(d_asperity - share_asperity * worn) > 1e-6 * worn:
+            fail(f"step {b['Step']:.0f}: wear wall {d_wall!r} / asperities {d_asperity!r} m^3, "
+                 f"Archard k F s / H = {worn!r} m^3 split {1 - share_asperity:.2f}/{share_asperity:.2f}")
+
+    with open(os.path.join(args.workdir, "servo.tsv"), "w") as out:
+        out.write("# step  Fx  Fz  z_wall  wall_wear  asperity_wear\n")
+        for row in load + rows:
+            out.write("\t".join(repr(row[name]) for name in ("Step", "f_wall[1]", "f_wall[3]", "f_wall[4]",
+                                                              "f_wall[7]", "c_fric[5]")) + "\n")
+
+    # 3. restart: the continued run repeats the last run of the original
+    (again,) = run_lmp(args, "tests/lammps/decks/in.gw_servo_restart", [], "log.restart")
+    for original, repeated in zip(slide2, again):
+        for name, value in original.items():
+            if abs(repeated[name] - value) > 1e-12 * max(abs(value), 1e-30):
+                fail(f"after restart {name} = {repeated[name]!r} at step {original['Step']:.0f}, original {value!r}")
+    if len(again) != len(slide2):
+        fail(f"restart run has {len(again)} rows, original {len(slide2)}")
+    print(f"ok: {args.np} rank(s): servo reached {forces[-1]:.6g} N (target {target:.6g} N) at z = {z_wall:.6e} m, "
+          f"mu = {-rows[-1]['f_wall[1]'] / rows[-1]['f_wall[3]']:.6g}, wall wear {rows[-1]['f_wall[7]']:.4e} m^3, "
+          f"asperity wear {rows[-1]['c_fric[5]']:.4e} m^3, restart repeats {len(again)} rows")
+
+
+def run_wall_bounce(args):
+    """Elastic head-on impact on the wall, both sides: rebound speed v0 and the Hertz contact time."""
+    fresh_dir(args.workdir)
+    radius, v0, density, dt = 1.0e-6, 1.0, 7800.0, 1.0e-11    # the deck's values
+    mass = density * 4.0 / 3.0 * math.pi * radius ** 3
+    # file form: 1/E* = (1 - nu_A^2)/E_A + (1 - nu_B^2)/E_B
+    with open(os.path.join(args.workdir, "bounce_coefficients"), "w") as out:
+        out.write("material A 200.0e9 0.30 7800.0 2.0e9\nmaterial B 70.0e9 0.33 2700.0 0.5e9\n"
+                  "pair A B 1.0 0.5 0.5 0.0 0.0\n")
+    e_file = 1.0 / ((1 - 0.30 ** 2) / 200.0e9 + (1 - 0.33 ** 2) / 70.0e9)
+    integral = 0.4 * math.gamma(0.4) * math.gamma(0.5) / math.gamma(0.9)    # int_0^1 dx / sqrt(1 - x^5/2)
+    cases = (("lo", 1.0, "none", 1.0e11), ("hi", -1.0, "none", 1.0e11), ("lo", 1.0, "bounce_coefficients", e_file))
+    for side, sign, coefficients, e_star in cases:
+        overlap_max = (15.0 * mass * v0 ** 2 / (16.0 * e_star * math.sqrt(radius))) ** 0.4
+        contact_time = 2.0 * integral * overlap_max / v0
+        (rows,) = run_lmp(args, args.deck, ["-var", "side", side, "-var", "file", coefficients],
+                          f"log.{side}.{coefficients}")
+        touching = [row for row in rows if row["f_wall[8]"] == 1.0]
+        duration = len(touching) * dt
+        rebound = rows[-1]["v_vz"]
+        if rows[-1]["f_wall[8]"] != 0.0:
+            fail(f"side {side}: the asperity is still on the wall at the end")
+        if abs(rebound - sign * v0) > 1e-6 * v0:
+            fail(f"side {side}: rebound velocity {rebound!r} m/s, elastic impact gives {sign * v0!r}")
+        if abs(duration - contact_time) > 0.01 * contact_time:
+            fail(f"side {side}: contact time {duration:.4e} s, Hertz {contact_time:.4e} s (limit 1 %)")
+        if not touching or max(sign * row["f_wall[3]"] for row in touching) >= 0.0:
+            fail(f"side {side}: the asperity must push the wall away from itself while they touch")
+        print(f"ok: side {side}, coefficients {coefficients}: rebound {rebound:.9f} m/s, contact time "
+              f"{duration:.4e} s vs Hertz {contact_time:.4e} s")
+
+
+def run_wall_worn(args):
+    """Worn asperity on the wall: Sneddon flat punch + Hertz (reshape yes), Hertz (reshape no)."""
+    fresh_dir(args.workdir)
+    radius, e_star = 1.0e-6, 1.0e11    # the deck's values
+    h = 0.05 * radius
+    lost = math.pi * h * h * (3 * radius - h) / 3.0    # cap volume of a truncated sphere
+    b2 = 2 * radius * h - h * h                          # flat radius squared
+    overlaps = [1.0e-9, 5.0e-9, 2.0e-8, 6.0e-8]
+    for reshape in ("yes", "no"):
+        drop = h if reshape == "yes" else 0.0
+        walls = [drop + d for d in overlaps]    # the asperity's centre is at z = R
+        args_lmp = ["-var", "lost", repr(lost), "-var", "reshape", reshape, "-var", "ztouch", repr(drop),
+                    "-var", "zw", *[repr(z) for z in walls]]
+        blocks = run_lmp(args, args.deck, args_lmp, f"log.{reshape}")
+        log = open(os.path.join(args.workdir, f"log.{reshape}")).read()
+        rows = [[float(w) for w in line.split()[1:]] for line in log.splitlines() if line.startswith("WALL_WORN")]
+        if len(rows) != len(walls):
+            fail(f"expected {len(walls)} WALL_WORN lines, got {len(rows)}")
+        def closed_form(d):
+            if reshape == "yes":
+                a2 = 0.5 * (b2 + math.sqrt(b2 * b2 + 4 * radius * radius * d * d))
+                c = radius * d / math.sqrt(a2)
+                return 2 * e_star / (3 * radius) * c * (2 * a2 + b2)
+            return 4.0 / 3.0 * e_star * math.sqrt(radius) * d ** 1.5
+
+        for d, (z, force) in zip(overlaps, rows):
+            expected = closed_form(d)
+            if abs(-force - expected) > 1e-9 * expected:
+                fail(f"reshape {reshape}, overlap {d:.1e} m: wall force {-force!r} N, closed form {expected!r} N")
+            print(f"ok: reshape {reshape}, overlap {d:.1e} m: F = {-force:.9e} N (closed form {expected:.9e} N)")
+        # moving wall: z(n) = z0 + sum over steps k = 1..n of vz(k) dt, vz = 1 + 0.5 (k > 50) m/s
+        moving = blocks[-1]
+        if len(moving) != 11:
+            fail(f"expected 11 rows of the moving-wall run, got {len(moving)}")
+        for row in moving:
+            n = row["Step"] - moving[0]["Step"]
+            z = drop + 1.0e-11 * (n + 0.5 * max(0.0, row["Step"] - 50))
+            if abs(row["f_wall[4]"] - z) > 1e-12 * z + 1e-24:
+                fail(f"moving wall at step {row['Step']:.0f}: z = {row['f_wall[4]']!r}, want {z!r}")
+            expected = closed_form(z - drop) if z > drop else 0.0
+            if abs(-row["f_wall[3]"] - expected) > 1e-9 * expected + 1e-30:
+                fail(f"moving wall at step {row['Step']:.0f}: force {-row['f_wall[3]']!r} N, closed form {expected!r} N")
+        print(f"ok: reshape {reshape}, moving wall: z and force follow vz(t) over {len(moving)} rows")
+
+
+def compare_gw(args):
+    """Every value of gw_load.tsv (or --file) of two runs with different rank counts."""
+    def load(directory):
+        with open(os.path.join(directory, args.file)) as f:
+            return [float(x) for line in f if not line.startswith("#") for x in line.split()]
+
+    a, b = load(args.dir_a), load(args.dir_b)
+    if len(a) != len(b) or not a:
+        fail(f"value counts differ or empty: {len(a)} vs {len(b)}")
+    worst = max(abs(x - y) / max(abs(x), abs(y)) if x != y else 0.0 for x, y in zip(a, b))
+    if worst > 1e-12:
+        fail(f"{args.file}: values differ between rank counts by {worst:.3e} relative (limit 1e-12)")
+    print(f"ok: {len(a)} values of {args.file} agree, worst relative difference {worst:.3e}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     sub = parser.add_subparsers(dest="command", required=True)
@@ -255,9 +554,37 @@ def main():
     p = sub.add_parser("expect-error")
     for name in ("--lmp", "--deck", "--workdir", "--pattern"):
         p.add_argument(name, required=True)
+    p = sub.add_parser("expect-warning")
+    for name in ("--lmp", "--deck", "--workdir", "--pattern"):
+        p.add_argument(name, required=True)
+    p = sub.add_parser("materials")
+    for name in ("--lmp", "--deck", "--workdir"):
+        p.add_argument(name, required=True)
+    p.add_argument("entries", nargs="+", help="FILE:MATERIAL_A:MATERIAL_B")
+    p = sub.add_parser("gw")
+    for name in ("--lmp", "--mpiexec", "--deck", "--workdir", "--gw-expected"):
+        p.add_argument(name, required=True)
+    p.add_argument("--np", type=int, default=1)
+    p = sub.add_parser("gw-servo")
+    for name in ("--lmp", "--mpiexec", "--deck", "--workdir"):
+        p.add_argument(name, required=True)
+    p.add_argument("--np", type=int, default=1)
+    p = sub.add_parser("wall-bounce")
+    for name in ("--lmp", "--mpiexec", "--deck", "--workdir"):
+        p.add_argument(name, required=True)
+    p.add_argument("--np", type=int, default=1)
+    p = sub.add_parser("wall-worn")
+    for name in ("--lmp", "--mpiexec", "--deck", "--workdir"):
+        p.add_argument(name, required=True)
+    p.add_argument("--np", type=int, default=1)
+    p = sub.add_parser("compare-gw")
+    p.add_argument("dir_a")
+    p.add_argument("dir_b")
+    p.add_argument("--file", default="gw_load.tsv")
     args = parser.parse_args()
     {"slider": run_slider, "archard": archard_budget, "compare": compare, "roughness": roughness,
-     "expect-error": expect_error}[args.command](args)
+     "expect-error": expect_error, "expect-warning": expect_warning, "materials": materials,
+     "gw": run_gw, "gw-servo": run_gw_servo, "wall-bounce": run_wall_bounce, "wall-worn": run_wall_worn, "compare-gw": compare_gw}[args.command](args)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,548 @@
+#include "fix_runin_wall.h"
+
+#include "fix_runin_wear_state.h"
+#include "tribo/asperity_geometry.h"
+#include "tribo/contact.h"
+#include "tribo/load_servo.h"
+#include "tribo/wear.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "input.h"
+#include "memory.h"
+#include "modify.h"
+#include "tokenizer.h"
+#include "update.h"
+#include "variable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace tribo = runin::tribo;
+
+namespace {
+
+inline double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline void cross(const double *a, const double *b, double *out)
+{
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// Values per keyword (after the keyword itself).
+const std::map<std::string, int> kKeywordValues = {
+    {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
+    {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2}};
+
+}    // namespace
+
+FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), e_star(-1.0), g_star(-1.0), restitution(1.0), mu_s(-1.0), mu_k(-1.0),
+    slip_weakening(0.0), wear_k(-1.0), hardness_asperity(-1.0), hardness_wall(-1.0), thesis_archard(false),
+    reshape(true),
+    side_sign(0.0), wall_z(0.0), wall_dx(0.0), wall_dy(0.0), wall_wear(0.0), control(Control::displacement),
+    load_target(0.0), servo_gain(-1.0), servo_vmax(-1.0), last_normal_force(0.0), last_stiffness(0.0),
+    wall_velocity{0.0, 0.0, 0.0}, vz_given(false), dt(0.0), history(nullptr),
+    fix_wear(nullptr)
+{
+  if (!atom->sphere_flag) error->all(FLERR, "fix runin/wall: requires atom_style sphere");
+
+  bool have_zplane = false, have_file = false, have_elastic = false, have_friction = false, have_wear = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string keyword = arg[iarg];
+    const auto known = kKeywordValues.find(keyword);
+    if (known == kKeywordValues.end())
+      error->all(FLERR,
+                 "fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, wear, "
+                 "archard, reshape, vel, vz, load, pressure or servo)",
+                 keyword);
+    const int nvalues = known->second;
+    if (iarg + nvalues >= narg)
+      error->all(FLERR, "fix runin/wall: keyword '{}' needs {} value(s), got {}", keyword, nvalues, narg - iarg - 1);
+    char **values = &arg[iarg + 1];
+    auto number = [&](int k, const char *name) {
+      if (!utils::is_double(values[k]))
+        error->all(FLERR, "fix runin/wall: {} {} must be a number, got '{}'", keyword, name, values[k]);
+      return utils::numeric(FLERR, values[k], false, lmp);
+    };
+
+    if (keyword == "zplane") {
+      wall_z = number(0, "Z");
+      have_zplane = true;
+    } else if (keyword == "side") {
+      if (strcmp(values[0], "lo") == 0)
+        side_sign = 1.0;
+      else if (strcmp(values[0], "hi") == 0)
+        side_sign = -1.0;
+      else
+        error->all(FLERR, "fix runin/wall: side must be 'lo' or 'hi', got '{}'", values[0]);
+    } else if (keyword == "file") {
+      read_coefficients_file(values[0], values[1], values[2]);
+      have_file = true;
+    } else if (keyword == "elastic") {
+      e_star = number(0, "E*");
+      g_star = number(1, "G*");
+      restitution = number(2, "e");
+      have_elastic = true;
+    } else if (keyword == "friction") {
+      mu_s = number(0, "mu_s");
+      mu_k = number(1, "mu_k");
+      slip_weakening = number(2, "d_c");
+      have_friction = true;
+    } else if (keyword == "wear") {
+      wear_k = number(0, "k");
+      hardness_asperity = number(1, "H_asperity");
+      hardness_wall = number(2, "H_wall");
+      have_wear = true;
+    } else if (keyword == "archard") {
+      if (strcmp(values[0], "plain") == 0)
+        thesis_archard = false;
+      else if (strcmp(values[0], "thesis") == 0)
+        thesis_archard = true;
+      else
+        error->all(FLERR, "fix runin/wall: archard must be 'plain' or 'thesis', got '{}'", values[0]);
+    } else if (keyword == "reshape") {
+      if (strcmp(values[0], "yes") == 0)
+        reshape = true;
+      else if (strcmp(values[0], "no") == 0)
+        reshape = false;
+      else
+        error->all(FLERR, "fix runin/wall: reshape must be 'yes' or 'no', got '{}'", values[0]);
+    } else if (keyword == "vel") {
+      parse_setting(vel[0], values[0], "vel vx");
+      parse_setting(vel[1], values[1], "vel vy");
+    } else if (keyword == "vz") {
+      parse_setting(vz, values[0], "vz");
+      vz_given = true;
+    } else if (keyword == "load" || keyword == "pressure") {
+      load_target = number(0, keyword == "load" ? "F" : "p");
+      if (!(load_target > 0.0)) error->all(FLERR, "fix runin/wall: {} must be > 0, got {}", keyword, load_target);
+      control = keyword == "load" ? Control::force : Control::pressure;
+    } else if (keyword == "servo") {
+      servo_gain = number(0, "gain");
+      servo_vmax = number(1, "vmax");
+      if (!(servo_gain > 0.0 && servo_gain <= 1.0))
+        error->all(FLERR, "fix runin/wall: servo gain must be in (0, 1], got {}", servo_gain);
+      if (!(servo_vmax > 0.0)) error->all(FLERR, "fix runin/wall: servo vmax must be > 0, got {}", servo_vmax);
+    }
+    iarg += nvalues + 1;
+  }
+
+  if (!have_zplane) error->all(FLERR, "fix runin/wall: keyword 'zplane' is required");
+  if (side_sign == 0.0) error->all(FLERR, "fix runin/wall: keyword 'side' (lo or hi) is required");
+  if (have_file && (have_elastic || have_friction || have_wear))
+    error->all(FLERR, "fix runin/wall: give either 'file' or 'elastic'/'friction'/'wear', not both");
+  if (!have_file && !(have_elastic && have_friction && have_wear))
+    error->all(FLERR, "fix runin/wall: coefficients missing: give 'file PATH ASPERITY WALL' or all of "
+                      "'elastic', 'friction' and 'wear'");
+  if (control != Control::displacement && servo_vmax < 0.0)
+    error->all(FLERR, "fix runin/wall: load control needs 'servo GAIN VMAX'");
+  if (control != Control::displacement && vz_given)
+    error->all(FLERR, "fix runin/wall: 'vz' and 'load'/'pressure' exclude each other");
+
+  // the kernels validate their coefficients; the message names the offending one
+  try {
+    tribo::HertzNormal(e_star, 1.0);
+    if (!(g_star > 0.0)) throw tribo::InvalidCoefficient("G*: effective shear modulus must be > 0");
+    tribo::RestitutionDamping{restitution};
+    tribo::StaticKineticFriction(mu_s, mu_k, slip_weakening);
+    if (!(hardness_asperity > 0.0))
+      throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", hardness_asperity));
+    if (!(hardness_wall > 0.0))
+      throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", hardness_wall));
+    tribo::ArchardWear(wear_k, std::min(hardness_asperity, hardness_wall));
+  } catch (const tribo::InvalidCoefficient &e) {
+    error->all(FLERR, "fix runin/wall: {}", e.what());
+  }
+
+  vector_flag = 1;
+  size_vector = NOUTPUT;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  std::fill(totals, totals + NOUTPUT, 0.0);
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+FixRuninWall::~FixRuninWall()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(history);
+}
+
+int FixRuninWall::setmask()
+{
+  return POST_FORCE;
+}
+
+// Adding a fix from the constructor would corrupt the fix list; here it is safe.
+void FixRuninWall::post_constructor()
+{
+  attach_wear_state();
+}
+
+void FixRuninWall::attach_wear_state()
+{
+  const int ifix = modify->find_fix(FixRuninWearState::default_id);
+  if (ifix >= 0)
+    fix_wear = dynamic_cast<FixRuninWearState *>(modify->fix[ifix]);
+  else
+    fix_wear = dynamic_cast<FixRuninWearState *>(
+        modify->add_fix(fmt::format("{} all RUNIN/WEAR_STATE", FixRuninWearState::default_id)));
+}
+
+void FixRuninWall::parse_setting(Setting &s, const char *arg, const char *keyword)
+{
+  if (strncmp(arg, "v_", 2) == 0) {
+    s.variable = arg + 2;
+  } else {
+    if (!utils::is_double(arg))
+      error->all(FLERR, "fix runin/wall: {} must be a number or v_name, got '{}'", keyword, arg);
+    s.value = utils::numeric(FLERR, arg, false, lmp);
+    s.variable.clear();
+  }
+}
+
+void FixRuninWall::resolve(Setting &s, const char *keyword)
+{
+  if (s.variable.empty()) return;
+  s.ivar = input->variable->find(s.variable.c_str());
+  if (s.ivar < 0) error->all(FLERR, "fix runin/wall: {} variable '{}' does not exist", keyword, s.variable);
+  if (!input->variable->equalstyle(s.ivar))
+    error->all(FLERR, "fix runin/wall: {} variable '{}' must be equal-style", keyword, s.variable);
+}
+
+double FixRuninWall::current(const Setting &s) const
+{
+  return s.ivar >= 0 ? input->variable->compute_equal(s.ivar) : s.value;
+}
+
+void FixRuninWall::init()
+{
+  resolve(vel[0], "vel vx");
+  resolve(vel[1], "vel vy");
+  resolve(vz, "vz");
+  dt = update->dt;
+  // the wear-state fix may have been redefined since this fix was created: look it up again
+  const int ifix = modify->find_fix(FixRuninWearState::default_id);
+  fix_wear = ifix >= 0 ? dynamic_cast<FixRuninWearState *>(modify->fix[ifix]) : nullptr;
+  if (!fix_wear) error->all(FLERR, "fix runin/wall: the per-atom wear state fix is missing");
+}
+
+void FixRuninWall::reset_dt()
+{
+  dt = update->dt;
+}
+
+void FixRuninWall::setup(int)
+{
+  update_wall_velocity();
+  if (control != Control::displacement) wall_velocity[2] = 0.0;
+  compute_contacts(false);
+}
+
+void FixRuninWall::post_force(int)
+{
+  update_wall_velocity();
+  move_wall();
+  compute_contacts(true);
+}
+
+void FixRuninWall::update_wall_velocity()
+{
+  modify->clearstep_compute();
+  wall_velocity[0] = current(vel[0]);
+  wall_velocity[1] = current(vel[1]);
+  wall_velocity[2] = control == Control::displacement ? current(vz) : 0.0;
+  modify->addstep_compute(update->ntimestep + 1);
+}
+
+// Displacement control: z += vz dt. Load control: runin::tribo::LoadServo moves the wall toward the
+// asperities from the previous step's total normal force and contact stiffness (monotone approach).
+void FixRuninWall::move_wall()
+{
+  wall_dx += wall_velocity[0] * dt;
+  wall_dy += wall_velocity[1] * dt;
+  if (control == Control::displacement) {
+    wall_z += wall_velocity[2] * dt;
+    return;
+  }
+  const double target = control == Control::force ? load_target : load_target * domain->xprd * domain->yprd;
+  const tribo::LoadServo servo(servo_gain, servo_vmax * dt);
+  const double approach = servo.approach(last_normal_force, last_stiffness, target);
+  wall_z += side_sign * approach;
+  wall_velocity[2] = side_sign * approach / dt;
+}
+
+void FixRuninWall::compute_contacts(bool advance)
+{
+  sums = RuninContactSums();
+  const tribo::RestitutionDamping damping(restitution);
+  const tribo::StaticKineticFriction friction(mu_s, mu_k, slip_weakening);
+  const tribo::ArchardWear wear(wear_k, std::min(hardness_asperity, hardness_wall),
+                                thesis_archard ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain);
+  const double share_asperity = tribo::wear_share(hardness_asperity, hardness_wall);
+  const bool track_wear = advance && wear_k > 0.0;
+
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **omega = atom->omega, **torque = atom->torque;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  double **wear_state = fix_wear ? fix_wear->state() : nullptr;
+  const bool worn_geometry = reshape && wear_state;
+  if (worn_geometry && !advance) fix_wear->refresh_geometry_all();    // volumes may have been set or restarted
+  const double normal[3] = {0.0, 0.0, side_sign};    // from the wall to the asperity
+
+  // force on the wall xyz, contacts, normal force, stiffness, wall wear this step
+  double local[7] = {0, 0, 0, 0, 0, 0, 0};
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double r = radius[i];
+    // a worn summit sits lower by its wear depth and carries a flat (pair runin/asperity reshape)
+    const double summit_drop = worn_geometry ? wear_state[i][FixRuninWearState::WEAR_DEPTH] : 0.0;
+    const double flat = worn_geometry ? wear_state[i][FixRuninWearState::FLAT_RADIUS] : 0.0;
+    const double overlap = r - summit_drop - side_sign * (x[i][2] - wall_z);
+    if (overlap <= 0.0) {
+      for (int k = 0; k < HISTORY_SIZE; k++) history[i][k] = 0.0;
+      continue;
+    }
+    const double vr[3] = {v[i][0] - wall_velocity[0], v[i][1] - wall_velocity[1], v[i][2] - wall_velocity[2]};
+    const double vn = dot(vr, normal);
+    const double spin[3] = {r * omega[i][0], r * omega[i][1], r * omega[i][2]};
+    double spin_velocity[3];
+    cross(normal, spin, spin_velocity);
+    double vt[3];
+    for (int k = 0; k < 3; k++) vt[k] = vr[k] - vn * normal[k] + spin_velocity[k];
+
+    const tribo::FlatHertzNormal contact(e_star, r, flat);
+    const double stiffness = contact.stiffness(overlap);
+    double fn = contact.force(overlap) + damping.force(stiffness, rmass[i], vn);
+    if (fn < 0.0) fn = 0.0;    // damping must not glue the asperity to the wall
+    const double contact_radius = contact.contact_radius(overlap);
+    const double kt = tribo::mindlin_stiffness(g_star, contact_radius);
+    const tribo::TangentialUpdate tangential = tribo::mindlin_coulomb(
+        kt, fn, friction, normal, vt, dt, &history[i][SPRING_X], history[i][SLIP], advance);
+    const double *ft = tangential.force;
+
+    double tor[3];
+    cross(normal, ft, tor);
+    for (int k = 0; k < 3; k++) {
+      const double fk = fn * normal[k] + ft[k];
+      f[i][k] += fk;
+      torque[i][k] -= r * tor[k];
+      local[k] -= fk;
+    }
+    local[3] += 1.0;
+    local[4] += fn;
+    local[5] += stiffness;
+
+    sums.normal_force += fn;
+    for (int k = 0; k < 3; k++) sums.tangential_force[k] -= ft[k];
+    sums.contacts += 1.0;
+    if (!tangential.slipping) sums.sticking_contacts += 1.0;
+    sums.contact_area += pi * contact_radius * contact_radius;
+    if (advance && dt > 0.0) sums.frictional_power += std::sqrt(dot(ft, ft)) * tangential.slip_increment / dt;
+    if (track_wear && tangential.slip_increment > 0.0) {
+      const double worn = wear.volume(fn, tangential.slip_increment);
+      if (wear_state) {
+        wear_state[i][FixRuninWearState::VOLUME_LOST] += worn * share_asperity;
+        if (worn_geometry) fix_wear->refresh_geometry(i);
+      }
+      local[6] += worn * (1.0 - share_asperity);
+      sums.wear_volume += worn;
+    }
+  }
+
+  double global[7];
+  MPI_Allreduce(local, global, 7, MPI_DOUBLE, MPI_SUM, world);
+  totals[FX] = global[0];
+  totals[FY] = global[1];
+  totals[FZ] = global[2];
+  totals[CONTACTS] = global[3];
+  last_normal_force = global[4];
+  last_stiffness = global[5];
+  wall_wear += global[6];
+}
+
+double FixRuninWall::compute_vector(int n)
+{
+  switch (n) {
+    case WALL_Z: return wall_z;
+    case WALL_DX: return wall_dx;
+    case WALL_DY: return wall_dy;
+    case WALL_WEAR: return wall_wear;
+    default: return totals[n];
+  }
+}
+
+// Coefficient file (potentials/*.runin, the pair_coeff file form), SI units, '#' comments:
+//   material NAME  E[Pa]  nu[-]  rho[kg/m^3]  H[Pa]
+//   pair NAME_A NAME_B  e[-]  mu_s[-]  mu_k[-]  d_c[m]  k[-]
+void FixRuninWall::read_coefficients_file(const std::string &file, const std::string &asperity,
+                                          const std::string &wall)
+{
+  std::string problem;
+  double packed[9] = {0};
+  if (comm->me == 0) {
+    FILE *fp = utils::open_potential(file, lmp, nullptr);
+    if (!fp) {
+      problem = fmt::format("cannot open coefficient file '{}'", file);
+    } else {
+      std::map<std::string, tribo::Material> materials;
+      std::optional<std::vector<double>> pair_values;
+      char line[1024];
+      int lineno = 0;
+      try {
+        while (fgets(line, sizeof(line), fp)) {
+          lineno++;
+          ValueTokenizer words(utils::trim_comment(line));
+          if (!words.has_next()) continue;
+          const std::string kind = words.next_string();
+          if (kind == "material") {
+            if (words.count() != 6) throw TokenizerException("material needs NAME E nu rho H", "");
+            const std::string name = words.next_string();
+            tribo::Material m;
+            m.youngs_modulus = words.next_double();
+            m.poisson_ratio = words.next_double();
+            words.next_double();    // density is not used by the contact force
+            m.hardness = words.next_double();
+            m.validate(fmt::format("{} line {}: material {}", file, lineno, name));
+            materials[name] = m;
+          } else if (kind == "pair") {
+            if (words.count() != 8) throw TokenizerException("pair needs A B e mu_s mu_k d_c k", "");
+            const std::string a = words.next_string(), b = words.next_string();
+            if ((a == asperity && b == wall) || (a == wall && b == asperity)) {
+              std::vector<double> values;
+              for (int k = 0; k < 5; k++) values.push_back(words.next_double());
+              pair_values = values;
+            }
+          } else {
+            throw TokenizerException(fmt::format("unknown entry '{}'", kind), "");
+          }
+        }
+        if (!materials.count(asperity))
+          problem = fmt::format("material '{}' not found in '{}'", asperity, file);
+        else if (!materials.count(wall))
+          problem = fmt::format("material '{}' not found in '{}'", wall, file);
+        else if (!pair_values)
+          problem = fmt::format("no 'pair {} {}' entry in '{}'", asperity, wall, file);
+        else {
+          const auto &ma = materials[asperity], &mw = materials[wall];
+          const auto &pv = *pair_values;
+          const double values[9] = {tribo::effective_modulus(ma, mw), tribo::effective_shear_modulus(ma, mw),
+                                    pv[0], pv[1], pv[2], pv[3], pv[4], ma.hardness, mw.hardness};
+          std::copy(values, values + 9, packed);
+        }
+      } catch (const TokenizerException &e) {
+        problem = fmt::format("{} line {}: {}", file, lineno, e.what());
+      } catch (const tribo::InvalidCoefficient &e) {
+        problem = e.what();
+      }
+      fclose(fp);
+    }
+  }
+  int length = problem.size();
+  MPI_Bcast(&length, 1, MPI_INT, 0, world);
+  problem.resize(length);
+  MPI_Bcast(&problem[0], length, MPI_CHAR, 0, world);
+  if (length) error->all(FLERR, "fix runin/wall: file: {}", problem);
+  MPI_Bcast(packed, 9, MPI_DOUBLE, 0, world);
+  e_star = packed[0];
+  g_star = packed[1];
+  restitution = packed[2];
+  mu_s = packed[3];
+  mu_k = packed[4];
+  slip_weakening = packed[5];
+  wear_k = packed[6];
+  hardness_asperity = packed[7];
+  hardness_wall = packed[8];
+}
+
+// Global restart state: the wall position, its in-plane travel, the counterface wear and the
+// servo's last force and stiffness, so a restarted load-controlled run continues smoothly.
+void FixRuninWall::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double state[6] = {wall_z, wall_dx, wall_dy, wall_wear, last_normal_force, last_stiffness};
+  const int size = sizeof(state);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(state, sizeof(state), 1, fp);
+}
+
+void FixRuninWall::restart(char *buf)
+{
+  const auto *state = reinterpret_cast<const double *>(buf);
+  wall_z = state[0];
+  wall_dx = state[1];
+  wall_dy = state[2];
+  wall_wear = state[3];
+  last_normal_force = state[4];
+  last_stiffness = state[5];
+}
+
+void FixRuninWall::grow_arrays(int nmax)
+{
+  memory->grow(history, nmax, HISTORY_SIZE, "fix_runin_wall:history");
+}
+
+void FixRuninWall::copy_arrays(int i, int j, int)
+{
+  for (int k = 0; k < HISTORY_SIZE; k++) history[j][k] = history[i][k];
+}
+
+void FixRuninWall::set_arrays(int i)
+{
+  for (int k = 0; k < HISTORY_SIZE; k++) history[i][k] = 0.0;
+}
+
+int FixRuninWall::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < HISTORY_SIZE; k++) buf[k] = history[i][k];
+  return HISTORY_SIZE;
+}
+
+int FixRuninWall::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < HISTORY_SIZE; k++) history[nlocal][k] = buf[k];
+  return HISTORY_SIZE;
+}
+
+int FixRuninWall::pack_restart(int i, double *buf)
+{
+  buf[0] = HISTORY_SIZE + 1;    // LAMMPS skips per-fix blocks by this count
+  for (int k = 0; k < HISTORY_SIZE; k++) buf[k + 1] = history[i][k];
+  return HISTORY_SIZE + 1;
+}
+
+void FixRuninWall::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < HISTORY_SIZE; k++) history[nlocal][k] = extra[nlocal][m++];
+}
+
+double FixRuninWall::memory_usage()
+{
+  return static_cast<double>(atom->nmax) * HISTORY_SIZE * sizeof(double);
+}

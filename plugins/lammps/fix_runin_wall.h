@@ -1,0 +1,96 @@
+// fix runin/wall: asperities (finite-size spheres) against a rigid flat counterface z = z_wall.
+// Same kernels as pair runin/asperity (Hertz + restitution damping, Mindlin spring with per-atom
+// history, static/kinetic Coulomb limit, Archard wear of both bodies). The plane slides in x-y and
+// is either displacement controlled (fixed or moving z) or load controlled by a servo.
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(runin/wall,FixRuninWall);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_RUNIN_WALL_H
+#define LMP_FIX_RUNIN_WALL_H
+
+#include "fix.h"
+#include "runin_contact_sums.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class FixRuninWall : public Fix, public RuninContactSource {
+ public:
+  // Global vector entries (1-based in input decks).
+  enum Output { FX = 0, FY, FZ, WALL_Z, WALL_DX, WALL_DY, WALL_WEAR, CONTACTS, NOUTPUT };
+
+  FixRuninWall(class LAMMPS *, int, char **);
+  ~FixRuninWall() override;
+  int setmask() override;
+  void post_constructor() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override { return HISTORY_SIZE + 1; }
+  int maxsize_restart() override { return HISTORY_SIZE + 1; }
+  double memory_usage() override;
+
+  const RuninContactSums &contact_sums() const override { return sums; }
+
+ private:
+  enum HistoryIndex { SPRING_X = 0, SPRING_Y, SPRING_Z, SLIP, HISTORY_SIZE };
+  enum class Control { displacement, force, pressure };
+
+  // A constant or an equal-style variable (v_name), evaluated every step.
+  struct Setting {
+    double value = 0.0;
+    std::string variable;
+    int ivar = -1;
+  };
+
+  // Coefficients in SI units (the same set as a pair_coeff line of pair runin/asperity).
+  double e_star, g_star, restitution, mu_s, mu_k, slip_weakening, wear_k, hardness_asperity, hardness_wall;
+  bool thesis_archard;
+  bool reshape;    // worn geometry (summit drop, flat) of the wear state enters the normal force
+
+  double side_sign;    // +1 side lo (wall below the atoms), -1 side hi (wall above)
+  double wall_z, wall_dx, wall_dy, wall_wear;
+  Setting vel[2], vz;
+  Control control;
+  double load_target, servo_gain, servo_vmax;
+  double last_normal_force;    // sum F_n of the last evaluation (servo)
+  double last_stiffness;       // sum dF_n/d(overlap) of the last evaluation (servo)
+  double wall_velocity[3];
+  bool vz_given;
+  double dt;
+
+  double **history;
+  double totals[NOUTPUT];    // reduced over ranks at every evaluation
+  RuninContactSums sums;
+  class FixRuninWearState *fix_wear;
+
+  void parse_setting(Setting &s, const char *arg, const char *keyword);
+  void resolve(Setting &s, const char *keyword);
+  double current(const Setting &s) const;
+  void read_coefficients_file(const std::string &file, const std::string &asperity, const std::string &wall);
+  void attach_wear_state();
+  void update_wall_velocity();
+  void move_wall();
+  void compute_contacts(bool advance);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,131 @@
+#include "runin_timestep_guard.h"
+
+#include "tribo/stability.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "modify.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace LAMMPS_NS;
+namespace tribo = runin::tribo;
+
+FixRuninFiniteCheck::FixRuninFiniteCheck(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg) {}
+
+int FixRuninFiniteCheck::setmask()
+{
+  return FixConst::PRE_REVERSE;
+}
+
+void FixRuninFiniteCheck::setup_pre_reverse(int, int)
+{
+  check();
+}
+
+void FixRuninFiniteCheck::pre_reverse(int, int)
+{
+  check();
+}
+
+void FixRuninFiniteCheck::check()
+{
+  constexpr int kShown = 4;
+  double **f = atom->f;
+  const int nall = atom->nlocal + atom->nghost;
+  // one pass of sums (NaN and inf propagate); the per-atom pass runs only when it is not finite
+  double total = 0.0;
+  for (int i = 0; i < nall; i++) total += f[i][0] + f[i][1] + f[i][2];
+  std::vector<tagint> bad;
+  if (!std::isfinite(total))
+    for (int i = 0; i < nall; i++)
+      if (!std::isfinite(f[i][0] + f[i][1] + f[i][2])) bad.push_back(atom->tag[i]);
+  int anywhere = bad.empty() ? 0 : 1;
+  if (comm->nprocs > 1) {
+    const int here = anywhere;
+    MPI_Allreduce(&here, &anywhere, 1, MPI_INT, MPI_MAX, world);
+  }
+  if (!anywhere) return;
+
+  std::sort(bad.begin(), bad.end());
+  bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+  bad.resize(kShown, std::numeric_limits<tagint>::max());
+  std::vector<tagint> all(static_cast<size_t>(kShown) * comm->nprocs);
+  MPI_Allgather(bad.data(), kShown, MPI_LMP_TAGINT, all.data(), kShown, MPI_LMP_TAGINT, world);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  std::string ids;
+  for (int k = 0; k < kShown && k < static_cast<int>(all.size()); k++)
+    if (all[k] != std::numeric_limits<tagint>::max()) ids += fmt::format(" {}", all[k]);
+  error->all(FLERR, "{}: non-finite force at step {} on atoms{}; the run is unstable (coincident atoms or "
+             "a timestep too large: dt = {} s)", style_label, update->ntimestep, ids, update->dt);
+}
+
+namespace runin_lammps {
+
+double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairModuli(int, int)> &moduli_of)
+{
+  Atom *atom = lmp->atom;
+  const int ntypes = atom->ntypes;
+  const double inf = std::numeric_limits<double>::infinity();
+  // per type: smallest radius and smallest density (both shorten the Rayleigh time)
+  std::vector<double> local(2 * (ntypes + 1), inf), global(2 * (ntypes + 1), inf);
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double r = atom->radius[i];
+    if (!(r > 0.0)) continue;
+    const double density = atom->rmass[i] / (4.0 / 3.0 * M_PI * r * r * r);
+    local[2 * atom->type[i]] = std::min(local[2 * atom->type[i]], r);
+    local[2 * atom->type[i] + 1] = std::min(local[2 * atom->type[i] + 1], density);
+  }
+  MPI_Allreduce(local.data(), global.data(), 2 * (ntypes + 1), MPI_DOUBLE, MPI_MIN, lmp->world);
+
+  double t_rayleigh = inf;
+  int worst_i = 0, worst_j = 0;
+  for (int i = 1; i <= ntypes; i++)
+    for (int j = i; j <= ntypes; j++) {
+      const PairModuli moduli = moduli_of(i, j);
+      if (!(moduli.effective_modulus > 0.0)) continue;
+      const tribo::Material equivalent =
+          tribo::equivalent_material(moduli.effective_modulus, moduli.effective_shear_modulus, 0.3);
+      for (int t : {i, j}) {
+        if (global[2 * t] == inf) continue;    // no atoms of this type
+        const double time = tribo::rayleigh_time(global[2 * t], equivalent, global[2 * t + 1]);
+        if (time < t_rayleigh) t_rayleigh = time, worst_i = i, worst_j = j;
+      }
+    }
+
+  if (lmp->modify->find_fix(LAMMPS_NS::FixRuninFiniteCheck::default_id) < 0) {
+    auto *fix = dynamic_cast<LAMMPS_NS::FixRuninFiniteCheck *>(lmp->modify->add_fix(
+        fmt::format("{} all RUNIN/FINITE_CHECK", LAMMPS_NS::FixRuninFiniteCheck::default_id)));
+    if (fix) fix->style_label = style;
+  }
+  if (t_rayleigh == inf) return 0.0;
+
+  const double dt = lmp->update->dt;
+  using Policy = tribo::TimeStepPolicy;
+  switch (tribo::judge_time_step(dt, t_rayleigh)) {
+    case tribo::TimeStepVerdict::fail:
+      lmp->error->all(FLERR, "{}: timestep {:.4g} s is {:.3g} x the Rayleigh time {:.4g} s (types {} {}); explicit "
+                      "integration diverges above {} x, use a timestep <= {:.4g} s",
+                      style, dt, dt / t_rayleigh, t_rayleigh, worst_i, worst_j, Policy::fail_factor,
+                      Policy::warn_fraction * t_rayleigh);
+      break;
+    case tribo::TimeStepVerdict::warn:
+      if (lmp->comm->me == 0)
+        lmp->error->warning(FLERR, "{}: timestep {:.4g} s exceeds the critical timestep {:.4g} s ({} x the Rayleigh "
+                            "time {:.4g} s, types {} {})",
+                            style, dt, Policy::warn_fraction * t_rayleigh, Policy::warn_fraction, t_rayleigh,
+                            worst_i, worst_j);
+      break;
+    case tribo::TimeStepVerdict::ok:
+      break;
+  }
+  return t_rayleigh;
+}
+
+}    // namespace runin_lammps
