@@ -2,9 +2,13 @@
 """Plot a pin-on-disk run-in curve written by `runin pin-on-disk`.
 
 usage: plot_curves.py CSV PNG [--title TEXT]
+       plot_curves.py --overlay SWEEP_CSV PNG [--title TEXT]
 
 Top panel: friction force, mobilised friction coefficient F/W and the law's run-in
-value mu(s) (during slip) vs time; stick phase shaded, break-away marked. Bottom panel: sliding speed and sliding distance vs time.
+value mu(s) (during slip) vs time; stick phase shaded, break-away marked. Second panel: sliding
+speed and sliding distance vs time. With the pin contact modelled, two more panels: wear volume
+and contact radius, and peak/mean contact pressure vs time.
+--overlay: friction force and speed of each mu0 of a sweep (pin_on_disk_mu0.csv) on shared axes.
 Uses Debian's matplotlib: run with /usr/bin/python3.
 """
 import argparse
@@ -21,13 +25,20 @@ def main():
     parser.add_argument("csv")
     parser.add_argument("png")
     parser.add_argument("--title", default="pin-on-disk run-in")
+    parser.add_argument("--overlay", action="store_true", help="CSV is a mu0 sweep")
     args = parser.parse_args()
+    if args.overlay:
+        overlay(args)
+        return
 
     data = np.genfromtxt(args.csv, delimiter=",", names=True)
     t = data["t_s"]
     slip = data["state_slip"] > 0.5
 
-    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 7), constrained_layout=True)
+    contact = "contact_radius_m" in data.dtype.names and np.any(data["contact_radius_m"] > 0)
+    fig, axes = plt.subplots(4 if contact else 2, 1, sharex=True, figsize=(8, 12 if contact else 7),
+                             constrained_layout=True)
+    top, bottom = axes[0], axes[1]
     fig.suptitle(args.title)
 
     top.plot(t, data["friction_force_N"], color="tab:red", label="friction force")
@@ -59,6 +70,39 @@ def main():
     bottom.set_xlabel("time t (s)")
     bottom.grid(alpha=0.3)
 
+    if contact:
+        wear = axes[2]
+        wear.plot(t, data["wear_volume_m3"] * 1e18, color="tab:brown")
+        wear.set_ylabel("pin wear volume (um^3)", color="tab:brown")
+        radius = wear.twinx()
+        radius.plot(t, data["contact_radius_m"] * 1e6, color="tab:gray", linestyle=":")
+        radius.set_ylabel("contact radius (um)", color="tab:gray")
+        wear.grid(alpha=0.3)
+        pressure = axes[3]
+        pressure.plot(t, data["peak_pressure_Pa"] / 1e6, color="tab:red", linestyle="--", label="peak")
+        pressure.plot(t, data["mean_pressure_Pa"] / 1e6, color="tab:pink", linestyle="-.", label="mean W / pi a^2")
+        pressure.set_ylabel("contact pressure (MPa)")
+        pressure.legend(loc="upper right", fontsize=8)
+        pressure.set_xlabel("time t (s)")
+        pressure.grid(alpha=0.3)
+
+    fig.savefig(args.png, dpi=120, format="png")
+
+
+def overlay(args):
+    data = np.genfromtxt(args.csv, delimiter=",", names=True)
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 7), constrained_layout=True)
+    fig.suptitle(args.title)
+    for mu0 in sorted(set(data["mu0"]), reverse=True):
+        rows = data["mu0"] == mu0
+        line, = top.plot(data["t_s"][rows], data["friction_force_N"][rows], label=f"mu0 = {mu0:g}")
+        bottom.plot(data["t_s"][rows], data["speed_m_s"][rows], color=line.get_color())
+    top.set_ylabel("friction force (N)")
+    top.legend(fontsize=8)
+    top.grid(alpha=0.3)
+    bottom.set_ylabel("speed V (m/s)")
+    bottom.set_xlabel("time t (s)")
+    bottom.grid(alpha=0.3)
     fig.savefig(args.png, dpi=120, format="png")
 
 

@@ -8,18 +8,31 @@
 
 
 namespace runin::cli {
+
+const std::set<std::string> &friction_keys() {
+  static const std::set<std::string> keys = {"model", "mu0", "mu_static", "mu_kinetic", "alpha", "speed_term",
+                                             "distance_scale", "branch", "kind", "C1", "C2", "K1", "K2",
+                                             "A", "B", "R0", "basis"};
+  return keys;
+}
+
 namespace {
 
 using continuum::SlidingFriction;
 
 // Allowed keys per table; "" is the top level.
 const Schema kSchema = {
-    {"", {"title", "pin", "loading", "friction", "run", "solver"}},
+    {"", {"title", "pin", "loading", "friction", "run", "solver", "contact", "wear", "output", "sweep"}},
+    {"contact", {"tip_radius", "pin_youngs_modulus", "pin_poisson_ratio", "disk_youngs_modulus",
+                 "disk_poisson_ratio", "rings", "grid_radius"}},
+    {"wear", {"k", "hardness", "form", "step_safety", "max_steps"}},
+    {"output", {"vtk_times"}},
     {"pin", {"mass", "track_radius", "normal_load"}},
     {"loading", {"ramp_time", "applied_torque", "target_speed", "target_time"}},
-    {"friction", {"model", "mu0", "mu_static", "mu_kinetic", "alpha", "distance_scale", "branch"}},
+    {"friction", friction_keys()},
     {"run", {"t_end", "output_interval", "initial_speed"}},
     {"solver", {"method", "rtol", "atol", "max_steps"}},
+    {"sweep", {"mu0"}},
 };
 
 const Schema kFeedbackSchema = {
@@ -30,23 +43,33 @@ const Schema kFeedbackSchema = {
     {"sweep", {"parameter", "values"}},
 };
 
-// Keys each friction model reads besides "model" and "alpha".
+// Keys each friction model reads besides "model", "alpha" and "speed_term".
 const std::map<std::string, std::set<std::string>> kModelKeys = {
     {"constant", {"mu0"}},
     {"static_kinetic", {"mu_static", "mu_kinetic"}},
     {"law_file", {"distance_scale", "branch"}},
+    {"feedback", {"kind", "C1", "C2", "K1", "K2", "A", "B", "R0", "basis"}},
 };
 
 
 }  // namespace
 
 continuum::SlidingFriction read_friction(const CaseReader &reader, const std::optional<std::string> &law_path) {
-  const std::string model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file"});
+  const std::string model =
+      reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback"});
   for (const auto &[other, keys] : kModelKeys)
     if (other != model)
       for (const auto &key : keys)
-        if (reader.has("friction." + key)) reader.fail("friction." + key, "not used by model '" + model + "'");
-  const double alpha = reader.number("friction.alpha", 0.0);
+        if (reader.has("friction." + key) && !kModelKeys.at(model).count(key))
+          reader.fail("friction." + key, "not used by model '" + model + "'");
+  // mu0 + alpha V (strengthening, default) or mu0 - alpha V (weakening, thesis eq. 4.5 with -).
+  double alpha = reader.number("friction.alpha", 0.0);
+  if (reader.has("friction.speed_term")) {
+    const bool weakening = reader.choice("friction.speed_term", {"strengthening", "weakening"}) == "weakening";
+    if (alpha < 0.0) reader.fail("friction.alpha", "must be >= 0 when friction.speed_term is given, got " +
+                                                       CaseReader::format(alpha));
+    if (weakening) alpha = -alpha;
+  }
   if (law_path && model != "law_file") reader.fail("friction.model", "is '" + model + "' but --law was given");
 
   try {
@@ -56,6 +79,25 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       const double mu_kinetic = reader.non_negative("friction.mu_kinetic");
       if (mu_kinetic > mu_static) reader.fail("friction.mu_kinetic", "must not exceed friction.mu_static");
       return SlidingFriction::static_kinetic(mu_static, mu_kinetic, alpha);
+    }
+    if (model == "feedback") {
+      const auto kind = reader.choice("friction.kind", {"lubricated", "dry"}, std::string("dry")) == "dry"
+                            ? tribo::FeedbackKind::dry
+                            : tribo::FeedbackKind::lubricated;
+      tribo::FeedbackCoefficients k;
+      k.C1 = reader.positive("friction.C1");
+      k.C2 = reader.non_negative("friction.C2");
+      k.K1 = reader.positive("friction.K1");
+      k.K2 = reader.positive("friction.K2");
+      k.A = reader.positive("friction.A");
+      k.B = reader.positive("friction.B");
+      const double r0 = reader.positive("friction.R0");
+      const bool per_distance = reader.choice("friction.basis", {"distance", "time"}, std::string("distance")) == "distance";
+      try {
+        return SlidingFriction::feedback(tribo::FeedbackModel(k, kind), r0, per_distance, alpha);
+      } catch (const tribo::InvalidCoefficient &e) {
+        reader.fail("friction", e.what());
+      }
     }
     if (!law_path) reader.fail("friction.model", "is 'law_file' but no --law FILE was given");
     const double distance_scale = reader.positive("friction.distance_scale");
@@ -100,6 +142,10 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     if (!targeted) reader.fail("loading.applied_torque", "missing (or give target_speed + target_time)");
     const double v1 = reader.positive("loading.target_speed");
     const double t1 = reader.positive("loading.target_time");
+    if (c.friction->speed_coefficient() < 0.0)
+      reader.fail("loading.target_speed",
+                  "eq. 4.11 with velocity weakening puts T_app at the static limit to within exp(-|alpha| W t1 / m); "
+                  "give loading.applied_torque instead");
     // Eq. 4.11 from rest with mu0 = the static coefficient (the thesis's mu0).
     p.applied_torque = continuum::thesis_torque_for_speed(p, c.friction->static_coefficient(),
                                                           c.friction->speed_coefficient(), 0.0, v1, t1);
@@ -118,7 +164,75 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   defaults.atol = 1e-10;
   defaults.max_steps = 100000;
   run.integrator = read_solver(reader, defaults);
+
+  c.friction_model = reader.text("friction.model", "");
+  if (targeted) c.torque_target = std::make_pair(reader.number("loading.target_speed"), reader.number("loading.target_time"));
+  if (reader.has("wear") && !reader.has("contact")) reader.fail("wear", "needs a [contact] table (tip geometry)");
+  if (reader.has("contact")) {
+    PinContactCase k;
+    k.tip_radius = reader.positive("contact.tip_radius");
+    // Thesis ch. 4: Cu pin E = 110 GPa, nu = 0.37; Al disk E = 69 GPa, nu = 0.33.
+    k.pin.youngs_modulus = reader.positive("contact.pin_youngs_modulus", 110e9);
+    k.pin.poisson_ratio = reader.non_negative("contact.pin_poisson_ratio", 0.37);
+    k.disk.youngs_modulus = reader.positive("contact.disk_youngs_modulus", 69e9);
+    k.disk.poisson_ratio = reader.non_negative("contact.disk_poisson_ratio", 0.33);
+    for (const char *key : {"contact.pin_poisson_ratio", "contact.disk_poisson_ratio"})
+      if (reader.number(key, 0.0) >= 0.5) reader.fail(key, "must be < 0.5");
+    const long rings = reader.positive_integer("contact.rings", 256);
+    if (rings < 8 || rings > 4096) reader.fail("contact.rings", "must be in [8, 4096], got " + std::to_string(rings));
+    k.rings = static_cast<int>(rings);
+    if (reader.has("contact.grid_radius")) k.grid_radius = reader.positive("contact.grid_radius");
+    if (reader.has("wear")) {
+      const double coefficient = reader.non_negative("wear.k");
+      const double hardness = reader.positive("wear.hardness");
+      const auto form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "thesis"
+                            ? tribo::ArchardForm::thesis
+                            : tribo::ArchardForm::plain;
+      k.wear.emplace(coefficient, hardness, form);
+      k.step_safety = reader.positive("wear.step_safety", 0.5);
+      if (k.step_safety > 1.0) reader.fail("wear.step_safety", "must be <= 1 (fraction of the stability bound)");
+      k.max_wear_steps = reader.positive_integer("wear.max_steps", 1000000);
+    }
+    c.contact = k;
+  }
+  if (reader.has("output.vtk_times")) {
+    if (!c.contact) reader.fail("output.vtk_times", "needs a [contact] table");
+    c.vtk_times = reader.numbers("output.vtk_times");
+    for (double t : c.vtk_times)
+      if (t < 0.0 || t > run.t_end) reader.fail("output.vtk_times", "time " + CaseReader::format(t) + " is outside [0, run.t_end]");
+    if (c.vtk_times.size() > 100) reader.fail("output.vtk_times", "more than 100 frames");
+  }
+  if (reader.has("sweep")) {
+    if (c.friction_model != "constant" && c.friction_model != "static_kinetic")
+      reader.fail("sweep.mu0", "needs friction.model 'constant' or 'static_kinetic'");
+    c.sweep_mu0 = reader.numbers("sweep.mu0");
+    if (c.sweep_mu0.size() > 20) reader.fail("sweep.mu0", "more than 20 values");
+    for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
+      if (c.sweep_mu0[i] < 0.0) reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0");
+      if (!(with_mu0(c, c.sweep_mu0[i]).parameters.applied_torque > 0.0))
+        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": eq. 4.11 gives a non-positive torque");
+    }
+  }
   return c;
+}
+
+PinOnDiskCase with_mu0(const PinOnDiskCase &c, double mu0) {
+  PinOnDiskCase out = c;
+  const double alpha = c.friction->speed_coefficient();
+  if (c.friction_model == "constant") {
+    out.friction = SlidingFriction::constant(mu0, alpha);
+  } else if (c.friction_model == "static_kinetic") {
+    const double ratio = c.friction->static_coefficient() > 0.0
+                             ? c.friction->kinetic(0.0, 0.0) / c.friction->static_coefficient()
+                             : 1.0;
+    out.friction = SlidingFriction::static_kinetic(mu0, ratio * mu0, alpha);
+  } else {
+    throw std::invalid_argument("a mu0 sweep needs friction model constant or static_kinetic");
+  }
+  if (c.torque_target)
+    out.parameters.applied_torque = continuum::thesis_torque_for_speed(
+        out.parameters, mu0, alpha, 0.0, c.torque_target->first, c.torque_target->second);
+  return out;
 }
 
 namespace {

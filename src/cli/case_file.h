@@ -7,8 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "continuum/axisymmetric_contact.h"
 #include "continuum/feedback_system.h"
 #include "continuum/pin_on_disk.h"
+#include "tribo/contact.h"
+#include "tribo/wear.h"
 #include "coupling/friction_law.h"
 
 namespace runin::cli {
@@ -20,6 +23,18 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// [contact] (Hertz tip on the flat disk, discretised face) and optional [wear] (Archard on the pin).
+struct PinContactCase {
+  double tip_radius = 0.0;                 // m
+  tribo::Material pin, disk;               // E, nu (hardness of the pin from [wear])
+  int rings = 256;
+  std::optional<double> grid_radius;       // m; absent: sized from Hertz and the Archard volume
+  std::optional<tribo::ArchardWear> wear;  // absent: contact only, no wear
+  double step_safety = 0.5;
+  long max_wear_steps = 1000000;
+  double effective_modulus() const { return tribo::effective_modulus(pin, disk); }
+};
+
 struct PinOnDiskCase {
   std::string path;
   std::string title;
@@ -27,12 +42,25 @@ struct PinOnDiskCase {
   continuum::PinOnDiskRun run;
   std::optional<continuum::SlidingFriction> friction;
   std::string torque_origin;  // how applied_torque was obtained, for the summary
+  std::optional<PinContactCase> contact;
+  std::vector<double> vtk_times;    // [output] vtk_times, s (needs [contact])
+  std::vector<double> sweep_mu0;    // [sweep] mu0: overlay runs with everything else fixed
+  // eq. 4.11 target (V1, t1) when the torque was targeted; the sweep recomputes T per mu0.
+  std::optional<std::pair<double, double>> torque_target;
+  std::string friction_model;       // [friction] model
 };
+
+// The case with friction.mu0 (constant) or friction.mu_static (static_kinetic, mu_kinetic scaled
+// in proportion) replaced by `mu0`, and the torque re-derived from eq. 4.11 if it was targeted.
+PinOnDiskCase with_mu0(const PinOnDiskCase &c, double mu0);
 
 class CaseReader;
 // The [friction] table shared by every machine-element case: model = "constant" | "static_kinetic" |
-// "law_file" (+ alpha for mu0 +/- alpha V). `law_path` is the --law option.
+// "law_file" | "feedback" (+ alpha, speed_term = "strengthening" | "weakening" for mu0 +/- alpha V).
+// `law_path` is the --law option.
 continuum::SlidingFriction read_friction(const CaseReader &reader, const std::optional<std::string> &law_path);
+// Every key read_friction may read, for a case's Schema entry "friction".
+const std::set<std::string> &friction_keys();
 
 // `law_path` is the --law option; required exactly when friction.model = "law_file".
 PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path);

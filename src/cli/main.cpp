@@ -2,6 +2,8 @@
 //   runin fit-law --input FILE --distance-column NAME --mu-column NAME --output law.json
 //   runin pin-on-disk CASE.toml [--law law.json] --output-dir DIR [--no-plot]
 //   runin feedback CASE.toml --output-dir DIR [--no-plot]
+//   runin journal-bearing CASE.toml [--law law.json] --output-dir DIR [--no-plot]
+//   runin piston-ring CASE.toml [--law law.json] --output-dir DIR [--no-plot]
 // Exit codes: 0 success, 1 numerical/plot/I/O failure, 2 bad input.
 #include <cmath>
 #include <cstdlib>
@@ -17,6 +19,9 @@
 #include <sys/wait.h>
 
 #include "cli/case_file.h"
+#include "cli/cmd_pin_on_disk.h"
+#include "cli/cmd_journal_bearing.h"
+#include "cli/cmd_piston_ring.h"
 #include "cli/staged_file.h"
 #include "continuum/feedback_system.h"
 #include "continuum/pin_on_disk.h"
@@ -88,16 +93,6 @@ int fit_law(const FitLawOptions &o) {
   return 0;
 }
 
-std::string csv_text(const std::vector<continuum::PinOnDiskSample> &samples) {
-  std::string text =
-      "t_s,applied_torque_N_m,friction_force_N,friction_torque_N_m,mu,speed_m_s,sliding_distance_m,state_slip,mu_law\n";
-  for (const auto &s : samples)
-    text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g}\n", s.t,
-                        s.applied_torque, s.friction_force, s.friction_torque, s.mu, s.speed, s.distance,
-                        s.state == continuum::ContactState::Slip ? 1 : 0, s.mu_law);
-  return text;
-}
-
 // Runs tools/<script_name> with /usr/bin/python3 (or $RUNIN_PYTHON) and `script_args`.
 void run_python_plot(const std::string &script_name, const std::vector<std::string> &script_args) {
   const char *python_env = std::getenv("RUNIN_PYTHON");
@@ -114,10 +109,6 @@ void run_python_plot(const std::string &script_name, const std::vector<std::stri
   int status = 0;
   if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw RunError("plotting failed: " + python + " " + script + " (use --no-plot to skip)");
-}
-
-void run_plot(const fs::path &csv, const fs::path &png, const std::string &title) {
-  run_python_plot("plot_curves.py", {csv.string(), png.string(), "--title", title});
 }
 
 std::string g17(double x) { return fmt::format("{:.17g}", x); }
@@ -245,51 +236,6 @@ int feedback(const std::string &case_path, const std::string &output_dir, bool p
   return 0;
 }
 
-int pin_on_disk(const std::string &case_path, const std::optional<std::string> &law_path,
-                const std::string &output_dir, bool plot) {
-  const PinOnDiskCase c = read_pin_on_disk_case(case_path, law_path);
-  const continuum::PinOnDiskSystem system(c.parameters, *c.friction);
-  std::vector<continuum::PinOnDiskSample> samples;
-  const auto report = continuum::simulate(system, c.run, [&](const auto &s) { samples.push_back(s); });
-  if (!report.ok()) throw RunError(std::string(continuum::to_string(report.status)) + ": " + report.message);
-
-  // Everything is computed; only now touch the output directory.
-  std::error_code error;
-  fs::create_directories(output_dir, error);
-  if (error) throw RunError("cannot create " + output_dir + ": " + error.message());
-  StagedFile csv(fs::path(output_dir) / "pin_on_disk.csv");
-  csv.write(csv_text(samples));
-  std::optional<StagedFile> png;
-  if (plot) {
-    png.emplace(fs::path(output_dir) / "pin_on_disk.png");
-    run_plot(csv.temp_path(), png->temp_path(), c.title);
-  }
-  csv.commit();
-  if (png) png->commit();
-
-  const auto s = continuum::summarise(samples);
-  const auto &p = c.parameters;
-  auto or_none = [](double t) { return t < 0.0 ? std::string("none") : fmt::format("{:.6g} s", t); };
-  fmt::print("runin pin-on-disk: {}\n  {}\n", case_path, c.title);
-  fmt::print("  friction          {}\n", c.friction->description());
-  fmt::print("  applied torque    {:.6g} N m ({}), ramp {:g} s\n", p.applied_torque, c.torque_origin, p.ramp_time);
-  fmt::print("  static limit      {:.6g} N m (mu_static = {:.6g})\n", system.static_torque_limit(),
-             c.friction->static_coefficient());
-  fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
-  fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
-  fmt::print("  steady state      {} (friction force and speed within {:g} % of final values from then on)\n",
-             or_none(s.steady_time), 100 * continuum::PinOnDiskSummary::steady_tolerance);
-  fmt::print("  steady mu         {:.6g} = F / W; law part without the speed term {:.6g}\n", s.steady_mu,
-             s.steady_mu_law);
-  fmt::print("  final speed       {:.6g} m/s, sliding distance {:.6g} m at t = {:g} s\n", s.final_speed,
-             samples.back().distance, samples.back().t);
-  fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", report.steps,
-             report.breakaway_times.size(), report.restick_times.size());
-  fmt::print("  wrote             {}{}\n", csv.destination().string(),
-             png ? ", " + png->destination().string() : std::string());
-  return 0;
-}
-
 int dump_to_vtk(const std::string &dump_path, const std::string &output_dir, const std::string &stem) {
 #ifdef RUNIN_HAVE_VTK
   std::vector<coupling::DumpSnapshot> snapshots;
@@ -326,14 +272,8 @@ int main(int argc, char **argv) {
   fit_cmd->add_option("--distance-unit", fit.distance_unit, "unit of the distance column: m, mm, um, nm, angstrom")
       ->capture_default_str();
 
-  std::string case_path, output_dir;
-  std::optional<std::string> law_path;
-  bool no_plot = false;
-  auto *pod_cmd = app.add_subcommand("pin-on-disk", "Pin-on-disk run-in curve (thesis ch. 4)");
-  pod_cmd->add_option("case", case_path, "case file (TOML)")->required();
-  pod_cmd->add_option("--law", law_path, "law file from fit-law, for friction.model = \"law_file\"");
-  pod_cmd->add_option("--output-dir", output_dir, "directory for pin_on_disk.csv and pin_on_disk.png")->required();
-  pod_cmd->add_flag("--no-plot", no_plot, "write the CSV only");
+  PinOnDiskOptions pod;
+  auto *pod_cmd = add_pin_on_disk_command(app, pod);
 
   std::string fb_case, fb_dir;
   bool fb_no_plot = false;
@@ -348,6 +288,9 @@ int main(int argc, char **argv) {
   vtk_cmd->add_option("--output-dir", vtk_dir, "directory for the .vtp files and the .pvd collection")->required();
   vtk_cmd->add_option("--stem", vtk_stem, "file name stem")->capture_default_str();
 
+  const Subcommand journal_bearing = add_journal_bearing_command(app);
+  const PistonRingCommand piston_ring = add_piston_ring_command(app, run_python_plot);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {
@@ -357,7 +300,10 @@ int main(int argc, char **argv) {
     if (fit_cmd->parsed()) return fit_law(fit);
     if (fb_cmd->parsed()) return feedback(fb_case, fb_dir, !fb_no_plot);
     if (vtk_cmd->parsed()) return dump_to_vtk(dump_path, vtk_dir, vtk_stem);
-    return pin_on_disk(case_path, law_path, output_dir, !no_plot);
+    if (journal_bearing.app->parsed()) return journal_bearing.run();
+    if (piston_ring.app->parsed()) return piston_ring.run();
+    if (pod_cmd->parsed()) return run_pin_on_disk(pod, run_python_plot);
+    return 2;
   } catch (const InputError &e) {
     std::cerr << "runin: error: " << e.what() << "\n";
     return 2;

@@ -43,21 +43,27 @@ double PinOnDiskSystem::static_torque_limit() const {
   return friction_.static_coefficient() * p_.normal_load * p_.track_radius;
 }
 
+double PinOnDiskSystem::static_torque_limit(const double *y) const {
+  return friction_.static_coefficient(y[2]) * p_.normal_load * p_.track_radius;
+}
+
 double PinOnDiskSystem::friction_torque(double t, const double *y, ContactState state, int direction) const {
   if (state == ContactState::Stick) return applied_torque(t);  // whatever keeps w = 0
   const double speed = p_.track_radius * y[0];
-  return direction * friction_.kinetic(y[1], speed) * p_.normal_load * p_.track_radius;
+  return direction * friction_.kinetic(y[1], speed, y[2]) * p_.normal_load * p_.track_radius;
 }
 
 void PinOnDiskSystem::rhs(double t, const double *y, double *dydt, ContactState state, int direction) const {
   if (state == ContactState::Stick) {
     dydt[0] = 0.0;
     dydt[1] = 0.0;
+    dydt[2] = friction_.state_rate(y[2], 0.0, false);
     return;
   }
   dydt[0] = (applied_torque(t) - friction_torque(t, y, state, direction)) / p_.inertia();
   // direction * V rather than |V|: smooth through the re-stick root, equal to |V| before it.
   dydt[1] = direction * p_.track_radius * y[0];
+  dydt[2] = friction_.state_rate(y[2], p_.track_radius * y[0], true);
 }
 
 PinOnDiskSample PinOnDiskSystem::sample(double t, const double *y, ContactState state, int direction) const {
@@ -67,7 +73,8 @@ PinOnDiskSample PinOnDiskSystem::sample(double t, const double *y, ContactState 
   s.friction_torque = friction_torque(t, y, state, direction);
   s.friction_force = s.friction_torque / p_.track_radius;
   s.mu = s.friction_force / p_.normal_load;
-  s.mu_law = friction_.kinetic(y[1], 0.0);
+  s.mu_law = friction_.kinetic(y[1], 0.0, y[2]);
+  s.roughness = y[2];
   s.speed = state == ContactState::Stick ? 0.0 : p_.track_radius * y[0];
   s.distance = y[1];
   s.state = state;
@@ -90,8 +97,8 @@ SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, con
   const double round_off = 64.0 * std::numeric_limits<double>::epsilon() * run.t_end;
 
   SolveReport report;
-  CvodeIntegrator integrator(2, run.integrator);
-  std::vector<double> y = {run.initial_speed / radius, 0.0};
+  CvodeIntegrator integrator(PinOnDiskSystem::state_size, run.integrator);
+  std::vector<double> y = {run.initial_speed / radius, 0.0, system.friction().initial_state()};
   ContactState state = run.initial_speed != 0.0 ? ContactState::Slip : ContactState::Stick;
   int direction = sign_of(run.initial_speed);
   double t = 0.0;
@@ -103,7 +110,7 @@ SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, con
       y[0] = 0.0;
       integrator.restart(
           t, y, [&](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Stick, 0); },
-          [&](double tt, const double *, double *g) { g[0] = system.breakaway_function(tt); }, {+1});
+          [&](double tt, const double *yy, double *g) { g[0] = system.breakaway_function(tt, yy); }, {+1});
     } else {
       const int dir = direction;
       integrator.restart(
@@ -115,11 +122,14 @@ SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, con
     report.breakaway_times.push_back(t);
     state = ContactState::Slip;
     direction = sign_of(system.applied_torque(t));
+    if (direction == 0) direction = sign_of(system.parameters().applied_torque);  // frictionless, ramp at 0
     y[0] = 0.0;
   };
 
-  // Already past the static limit at the start (step loading)?
-  if (state == ContactState::Stick && system.breakaway_function(t) > 0.0) {
+  // Already past the static limit at the start (step loading), or no static friction at all
+  // (CVODE does not report a root function that starts at zero)?
+  const bool frictionless = system.static_torque_limit(y.data()) == 0.0 && system.parameters().applied_torque != 0.0;
+  if (state == ContactState::Stick && (system.breakaway_function(t, y.data()) > 0.0 || frictionless)) {
     emit();
     break_away();
   }
@@ -151,7 +161,7 @@ SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, con
       }
       if (state == ContactState::Stick) {
         break_away();
-      } else if (system.breakaway_function(t) <= 0.0) {  // w reached 0 below the static limit
+      } else if (system.breakaway_function(t, y.data()) <= 0.0) {  // w reached 0 below the static limit
         report.restick_times.push_back(t);
         state = ContactState::Stick;
         direction = 0;

@@ -2,7 +2,8 @@
 // load W, driven about the disk axis by an applied torque that ramps up and is held:
 //   J dw/dt = T_app(t) - T_f,   J = m r^2,   V = r w,   ds/dt = |V|
 //   stick: w = 0, T_f = T_app            while |T_app| < mu_static W r
-//   slip:  T_f = sign(w) mu(s, |V|) W r
+//   slip:  T_f = sign(w) mu(s, |V|, R) W r
+// y = (w, s, R); R is the friction law's state (feedback roughness), constant 0 otherwise.
 // Break-away and re-stick are events located by CVODE root finding.
 #pragma once
 
@@ -37,10 +38,11 @@ struct PinOnDiskSample {
   double mu_law = 0.0;           // the law's sliding value at this s without the speed term
   double speed = 0.0;            // m/s, V = r w
   double distance = 0.0;         // m, accumulated sliding distance s
+  double roughness = 0.0;        // friction-law state R (feedback model), 0 without one
   ContactState state = ContactState::Stick;
 };
 
-// The physics only: right-hand side, friction torque and event functions for y = (w, s).
+// The physics only: right-hand side, friction torque and event functions for y = (w, s, R).
 class PinOnDiskSystem {
  public:
   PinOnDiskSystem(PinOnDiskParameters parameters, SlidingFriction friction);
@@ -49,12 +51,17 @@ class PinOnDiskSystem {
   const SlidingFriction &friction() const { return friction_; }
 
   double applied_torque(double t) const;
-  double static_torque_limit() const;  // mu_static W r
+  static constexpr std::size_t state_size = 3;
+  double static_torque_limit() const;  // mu_static W r at the initial friction state
+  double static_torque_limit(const double *y) const;  // at the state y
   // `direction` = +-1 is the sliding direction (sign of w) in slip, unused in stick.
   double friction_torque(double t, const double *y, ContactState state, int direction) const;
   void rhs(double t, const double *y, double *dydt, ContactState state, int direction) const;
   // Stick ends when this crosses zero upwards.
   double breakaway_function(double t) const { return std::abs(applied_torque(t)) - static_torque_limit(); }
+  double breakaway_function(double t, const double *y) const {
+    return std::abs(applied_torque(t)) - static_torque_limit(y);
+  }
   PinOnDiskSample sample(double t, const double *y, ContactState state, int direction) const;
 
  private:

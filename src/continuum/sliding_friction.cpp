@@ -51,4 +51,20 @@ SlidingFriction SlidingFriction::from_law(const coupling::FrictionLaw &law, coup
                              "), distance_scale = " + format(distance_scale) + ", + " + format(alpha) + " V");
 }
 
+SlidingFriction SlidingFriction::feedback(const tribo::FeedbackModel &model, double initial_roughness,
+                                          bool per_distance, double alpha) {
+  require(std::isfinite(initial_roughness) && initial_roughness > 0.0, "R0 must be > 0");
+  auto shared = std::make_shared<const tribo::FeedbackModel>(model);
+  SlidingFriction f(model.mu(initial_roughness), [shared, initial_roughness](double) { return shared->mu(initial_roughness); },
+                    alpha,
+                    std::string(tribo::to_string(model.kind())) + " feedback mu = C1 R + C2/R, dR/d" +
+                        (per_distance ? "s" : "t") + " = -A K1 R + B K2/R, R0 = " + format(initial_roughness) +
+                        " (mu0 = " + format(model.mu(initial_roughness)) + ", R* = " +
+                        format(model.stationary_roughness()) + "), + " + format(alpha) + " V");
+  f.feedback_ = std::move(shared);
+  f.r0_ = initial_roughness;
+  f.per_distance_ = per_distance;
+  return f;
+}
+
 }  // namespace runin::continuum

@@ -2,13 +2,21 @@
 //   stick:  |tangential load| <= mu_static * normal load
 //   slip:   mu(s, V) = mu_kinetic(s) + alpha * |V|
 // with s the accumulated sliding distance (m) and V the sliding speed (m/s).
+// alpha > 0 is velocity strengthening (thesis eq. 4.5 with +), alpha < 0 weakening (with -).
+// The feedback variant carries one state, the roughness R (thesis eq. 3.6):
+//   mu = C1 R + C2 / R,  dR/dx = -A K1 R + B K2 / R,  x = s (per metre slid) or t (per second),
+// and its static coefficient is mu(R) at the current R.
 #pragma once
 
 #include <cmath>
 #include <functional>
 #include <string>
 
+#include <memory>
+#include <optional>
+
 #include "coupling/friction_law.h"
+#include "tribo/feedback.h"
 
 namespace runin::continuum {
 
@@ -23,10 +31,33 @@ class SlidingFriction {
   static SlidingFriction from_law(const coupling::FrictionLaw &law, coupling::FrictionLaw::Branch branch,
                                   double distance_scale, double alpha = 0.0);
 
+  // Roughness-feedback friction; `per_distance` integrates R along the sliding distance
+  // (frozen in stick), otherwise along time.
+  static SlidingFriction feedback(const tribo::FeedbackModel &model, double initial_roughness, bool per_distance,
+                                  double alpha = 0.0);
+
+  // Static coefficient at the initial state (feedback: mu(R0)).
   double static_coefficient() const { return mu_static_; }
   double speed_coefficient() const { return alpha_; }
   double kinetic(double s, double speed) const { return mu_kinetic_(s) + alpha_ * std::abs(speed); }
   const std::string &description() const { return description_; }
+
+  // State-carrying variant (feedback). Without a state these fall back to the stateless forms.
+  // A system that does not integrate R and calls kinetic(s, V) sees the constant mu(R0) + alpha V.
+  bool has_state() const { return static_cast<bool>(feedback_); }
+  double initial_state() const { return feedback_ ? r0_ : 0.0; }
+  bool state_per_distance() const { return per_distance_; }
+  const tribo::FeedbackModel *feedback_model() const { return feedback_.get(); }
+  double static_coefficient(double state) const { return feedback_ ? feedback_->mu(state) : mu_static_; }
+  double kinetic(double s, double speed, double state) const {
+    return feedback_ ? feedback_->mu(state) + alpha_ * std::abs(speed) : kinetic(s, speed);
+  }
+  // dR/dt: `slipping` and `speed` matter only for the per-distance form.
+  double state_rate(double state, double speed, bool slipping) const {
+    if (!feedback_) return 0.0;
+    if (!per_distance_) return feedback_->dRdt(state);
+    return slipping ? feedback_->dRdt(state) * std::abs(speed) : 0.0;
+  }
 
  private:
   SlidingFriction(double mu_static, std::function<double(double)> mu_kinetic, double alpha,
@@ -36,6 +67,9 @@ class SlidingFriction {
   std::function<double(double)> mu_kinetic_;
   double alpha_;
   std::string description_;
+  std::shared_ptr<const tribo::FeedbackModel> feedback_;
+  double r0_ = 0.0;
+  bool per_distance_ = true;
 };
 
 }  // namespace runin::continuum

@@ -2,7 +2,8 @@
 """Sanity checks of a `runin pin-on-disk` output directory (stdlib only).
 
 usage: check_pin_on_disk_csv.py DIR --t-end T [--breakaway T_B] [--final-speed V]
-                                [--final-mu-law MU] [--png]
+                                [--final-mu-law MU] [--png] [--archard K/H W] [--sweep N]
+                                [--vtk N] [--run-in]
 """
 import argparse
 import csv
@@ -11,7 +12,10 @@ import os
 import sys
 
 COLUMNS = ["t_s", "applied_torque_N_m", "friction_force_N", "friction_torque_N_m", "mu",
-           "speed_m_s", "sliding_distance_m", "state_slip", "mu_law"]
+           "speed_m_s", "sliding_distance_m", "state_slip", "mu_law", "roughness", "wear_volume_m3",
+           "contact_radius_m", "peak_pressure_Pa", "mean_pressure_Pa"]
+SWEEP = ["mu0", "applied_torque_N_m", "breakaway_s", "peak_friction_force_N", "peak_time_s", "steady_time_s",
+         "steady_mu", "wear_volume_m3"]
 
 
 def close(a, b, rel):
@@ -26,6 +30,12 @@ def main():
     parser.add_argument("--final-speed", type=float, help="expected final speed (rel 1e-3)")
     parser.add_argument("--final-mu-law", type=float, help="expected final law mu (abs 0.01)")
     parser.add_argument("--png", action="store_true", help="require pin_on_disk.png")
+    parser.add_argument("--archard", type=float, nargs=2, metavar=("K_OVER_H", "W"),
+                        help="final wear volume = (k/H) W s (rel 1e-9); contact grows, pressure falls")
+    parser.add_argument("--sweep", type=int, help="mu0 sweep of N values: thesis claim 2 in its summary")
+    parser.add_argument("--vtk", type=int, help="expect N pin_face_*.vts frames and pin_face.pvd")
+    parser.add_argument("--run-in", action="store_true",
+                        help="thesis claim 3: law mu at the start of slip exceeds its final value by > 5 %%")
     args = parser.parse_args()
 
     problems = []
@@ -60,9 +70,53 @@ def main():
     if any(b < a - 1e-15 for a, b in zip(distance, distance[1:])):
         problems.append("sliding distance decreases")
     if args.png:
-        with open(os.path.join(args.dir, "pin_on_disk.png"), "rb") as f:
-            if f.read(8) != b"\x89PNG\r\n\x1a\n":
-                problems.append("pin_on_disk.png is not a PNG")
+        names = ["pin_on_disk.png"] + (["pin_on_disk_mu0.png"] if args.sweep else [])
+        for name in names:
+            with open(os.path.join(args.dir, name), "rb") as f:
+                if f.read(8) != b"\x89PNG\r\n\x1a\n":
+                    problems.append(f"{name} is not a PNG")
+    if args.archard:
+        k_over_h, load = args.archard
+        wear = [r[10] for r in rows]
+        expected = k_over_h * load * rows[-1][6]
+        if not close(wear[-1], expected, 1e-9):
+            problems.append(f"final wear volume {wear[-1]} != Archard (k/H) W s = {expected}")
+        if any(b < a for a, b in zip(wear, wear[1:])):
+            problems.append("wear volume decreases")
+        radius = [r[11] for r in rows]
+        if any(b < a for a, b in zip(radius, radius[1:])):
+            problems.append("contact radius decreases")
+        if not (rows[-1][12] < rows[0][12] and rows[-1][13] < rows[0][13]):
+            problems.append("peak/mean pressure did not fall as the pin wore")
+        if any(r[12] < r[13] * (1 - 1e-9) for r in rows):
+            problems.append("peak pressure below mean pressure")
+    if args.run_in:
+        first_slip = next(r for r in rows if r[7] == 1)
+        if not first_slip[8] > 1.05 * rows[-1][8]:
+            problems.append(f"law mu at start of slip {first_slip[8]} not > 1.05 x final {rows[-1][8]}")
+    if args.sweep:
+        with open(os.path.join(args.dir, "pin_on_disk_mu0_summary.csv"), newline="") as f:
+            reader = csv.reader(f)
+            if next(reader) != SWEEP:
+                problems.append("sweep summary header")
+            table = sorted([[float(x) for x in row] for row in reader])
+        if len(table) != args.sweep:
+            problems.append(f"{len(table)} sweep rows, expected {args.sweep}")
+        # Claim 2: higher mu0 -> higher peak friction force, later break-away, later steady state.
+        for lower, higher in zip(table, table[1:]):
+            for column, name in ((3, "peak friction force"), (2, "break-away"), (5, "steady time")):
+                if not higher[column] > lower[column]:
+                    problems.append(f"{name} not increasing with mu0: {lower[0]} -> {lower[column]}, "
+                                    f"{higher[0]} -> {higher[column]}")
+    if args.vtk is not None:
+        frames = [n for n in os.listdir(args.dir) if n.startswith("pin_face_") and n.endswith(".vts")]
+        if len(frames) != args.vtk or not os.path.exists(os.path.join(args.dir, "pin_face.pvd")):
+            problems.append(f"{len(frames)} VTK frames (+ pvd?), expected {args.vtk}")
+        for name in frames:
+            with open(os.path.join(args.dir, name), errors="replace") as f:
+                text = f.read()
+            if 'Name="pressure_Pa"' not in text or 'Name="wear_depth_m"' not in text:
+                problems.append(f"{name} lacks the pressure_Pa / wear_depth_m point fields")
     leftovers = [n for n in os.listdir(args.dir) if n.startswith(".")]
     if leftovers:
         problems.append(f"temporary files left: {leftovers}")

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "continuum/pin_on_disk.h"
+#include "tribo/feedback.h"
 
 using namespace runin::continuum;
 
@@ -191,4 +192,104 @@ TEST(PinOnDisk, SummaryFindsPeakBreakAwayAndSteadyState) {
   EXPECT_NEAR(summary.steady_mu, kMu0 + kAlpha * summary.final_speed, 1e-9);
   EXPECT_GT(summary.steady_time, 1.95);
   EXPECT_LT(summary.steady_time, 2.05);
+}
+
+TEST(PinOnDisk, ConstantTorqueDistanceMatchesIntegralOfEq410) {
+  // s(t) = V_ss t + (V0 - V_ss) tau (1 - exp(-t / tau)), tau = m / (alpha W): 1e-6 relative.
+  const double torque = kRadius * kLoad * (kMu0 + kAlpha * 0.1), v0 = 0.3;
+  const PinOnDiskSystem system(thesis_parameters(torque, 0.0), SlidingFriction::constant(kMu0, kAlpha));
+  SolveReport report;
+  const auto samples = run_all(system, tight_run(0.02, 1e-3, v0), &report);
+  ASSERT_TRUE(report.ok()) << report.message;
+  const double tau = kMass / (kAlpha * kLoad), v_ss = (torque / kRadius - kMu0 * kLoad) / (kAlpha * kLoad);
+  ASSERT_NEAR(v_ss, 0.1, 1e-12);
+  for (const auto &s : samples) {
+    if (s.t < 1e-3) continue;
+    const double exact = v_ss * s.t + (v0 - v_ss) * tau * (1.0 - std::exp(-s.t / tau));
+    EXPECT_NEAR(s.distance / exact, 1.0, 1e-6) << "t = " << s.t;
+  }
+}
+
+TEST(PinOnDisk, VelocityWeakeningFollowsEq410WithTheMinusSign) {
+  // mu = mu0 - alpha V: eq. 4.10 with alpha -> -alpha, exp(+alpha W t / m) growth away from V_ss.
+  const double torque = kRadius * kLoad * (kMu0 - kAlpha * 0.1), v0 = 0.12;  // V_ss = 0.1, unstable
+  const PinOnDiskSystem system(thesis_parameters(torque, 0.0), SlidingFriction::constant(kMu0, -kAlpha));
+  SolveReport report;
+  const auto samples = run_all(system, tight_run(5e-3, 1e-3, v0), &report);
+  ASSERT_TRUE(report.ok()) << report.message;
+  for (const auto &s : samples) {
+    const double exact = thesis_speed(system.parameters(), kMu0, -kAlpha, v0, s.t);
+    EXPECT_NEAR(s.speed / exact, 1.0, 1e-6) << "t = " << s.t;
+  }
+  EXPECT_GT(samples.back().speed, 5.0 * v0);  // V - V_ss grew by exp(3.3) = 27
+}
+
+TEST(PinOnDisk, FeedbackRoughnessFollowsItsClosedFormAlongTheSlidingDistance) {
+  // dR/ds = -A K1 R + B K2 / R  =>  R(s)^2 = R*^2 + (R0^2 - R*^2) exp(-2 A K1 s); mu = C1 R + C2 / R.
+  runin::tribo::FeedbackCoefficients k{0.2, 0.2, 1.0, 1.0, 50.0, 50.0};
+  const runin::tribo::FeedbackModel model(k, runin::tribo::FeedbackKind::dry);
+  const auto friction = SlidingFriction::feedback(model, 4.0, true, kAlpha);
+  EXPECT_DOUBLE_EQ(friction.static_coefficient(), 0.85);
+  const double torque = kRadius * kLoad * 0.9, ramp = 1.0;
+  const PinOnDiskSystem system(thesis_parameters(torque, ramp), friction);
+  SolveReport report;
+  const auto samples = run_all(system, tight_run(2.0, 1e-3), &report);
+  ASSERT_TRUE(report.ok()) << report.message;
+  ASSERT_EQ(report.breakaway_times.size(), 1u);
+  EXPECT_NEAR(report.breakaway_times[0] / (0.85 / 0.9 * ramp), 1.0, 1e-8);  // mu(R0) sets break-away
+  for (const auto &s : samples) {
+    const double exact = model.exact_roughness(4.0, s.distance);
+    EXPECT_NEAR(s.roughness / exact, 1.0, 1e-6) << "s = " << s.distance;
+    EXPECT_NEAR(s.mu_law, model.mu(s.roughness), 1e-12);
+  }
+  // Thesis claim 3 (in the coefficient): mu falls from mu(R0) = 0.85 towards mu(R*) = 0.4.
+  EXPECT_NEAR(samples.back().mu_law, 0.4, 1e-3);
+  EXPECT_GT(samples.front().mu_law, 2.0 * samples.back().mu_law);
+}
+
+TEST(PinOnDisk, FeedbackPerTimeEvolvesDuringStick) {
+  runin::tribo::FeedbackCoefficients k{0.2, 0.2, 1.0, 1.0, 1.0, 1.0};
+  const runin::tribo::FeedbackModel model(k, runin::tribo::FeedbackKind::dry);
+  const PinOnDiskSystem system(thesis_parameters(0.01 * kRadius * kLoad, 0.0),
+                               SlidingFriction::feedback(model, 4.0, false));
+  SolveReport report;
+  const auto samples = run_all(system, tight_run(1.0, 0.1), &report);
+  ASSERT_TRUE(report.ok());
+  EXPECT_TRUE(report.breakaway_times.empty());  // 0.01 < mu(R) throughout
+  for (const auto &s : samples) EXPECT_NEAR(s.roughness / model.exact_roughness(4.0, s.t), 1.0, 1e-6);
+}
+
+TEST(PinOnDisk, ThesisClaim2HigherMu0GivesHigherPeakForceAndLaterEquilibrium) {
+  // The thesis's three runs: mu0 = 0.15, 0.55, 0.95, everything else fixed; T_app from eq. 4.11
+  // for each (100 mm/s at 2 s), ramped over 2 s and held.
+  std::vector<PinOnDiskSummary> summaries;
+  for (const double mu0 : {0.15, 0.55, 0.95}) {
+    auto p = thesis_parameters(0.0, 2.0);
+    p.applied_torque = thesis_torque_for_speed(p, mu0, kAlpha, 0.0, 0.1, 2.0);
+    const PinOnDiskSystem system(p, SlidingFriction::constant(mu0, kAlpha));
+    SolveReport report;
+    const auto samples = run_all(system, tight_run(3.0, 1e-4), &report);
+    ASSERT_TRUE(report.ok());
+    summaries.push_back(summarise(samples));
+    EXPECT_NEAR(summaries.back().final_speed, 0.1, 1e-6);
+  }
+  for (std::size_t i = 1; i < summaries.size(); ++i) {
+    EXPECT_GT(summaries[i].peak_friction_force, summaries[i - 1].peak_friction_force);
+    EXPECT_GT(summaries[i].breakaway_time, summaries[i - 1].breakaway_time);
+    EXPECT_GT(summaries[i].steady_time, summaries[i - 1].steady_time);
+  }
+}
+
+TEST(PinOnDisk, FrictionlessPinSlidesFromTheStart) {
+  // mu0 = 0: no static limit, so the ramp moves the pin at once:
+  // m dV/dt = T_app t / (r t_ramp)  =>  V = T_app t^2 / (2 m r t_ramp).
+  const double torque = 1e-3, ramp = 2.0;
+  const PinOnDiskSystem system(thesis_parameters(torque, ramp), SlidingFriction::constant(0.0));
+  SolveReport report;
+  const auto samples = run_all(system, tight_run(1.0, 0.25), &report);
+  ASSERT_TRUE(report.ok()) << report.message;
+  ASSERT_EQ(report.breakaway_times.size(), 1u);
+  EXPECT_EQ(report.breakaway_times[0], 0.0);
+  const auto &last = samples.back();
+  EXPECT_NEAR(last.speed / (torque * 1.0 / (2.0 * kMass * kRadius * ramp)), 1.0, 1e-8);
 }

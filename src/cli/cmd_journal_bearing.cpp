@@ -1,0 +1,229 @@
+#include "cli/cmd_journal_bearing.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include "cli/case_file.h"
+#include "cli/journal_bearing_case.h"
+#include "cli/staged_file.h"
+#include "continuum/journal_bearing.h"
+#ifdef RUNIN_HAVE_VTK
+#include "coupling/vtk_export.h"
+#endif
+
+extern char **environ;
+
+namespace runin::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using continuum::JournalBearingFrame;
+using continuum::JournalBearingSample;
+
+struct Options {
+  std::string case_path, output_dir;
+  std::optional<std::string> law_path;
+  bool no_plot = false;
+};
+
+struct Curve {
+  std::vector<JournalBearingSample> samples;
+  std::vector<JournalBearingFrame> frames;
+  continuum::JournalBearingReport report;
+  continuum::JournalBearingSummary summary;
+};
+
+Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &friction, bool frames) {
+  const continuum::JournalBearingSystem system = [&] {
+    try {
+      return continuum::JournalBearingSystem(c.parameters, friction);
+    } catch (const std::invalid_argument &e) {  // e.g. the arc too long for a positive-definite compliance
+      throw InputError(c.path + ": key 'contact.arc_half_angle': " + e.what());
+    }
+  }();
+  Curve curve;
+  curve.report = continuum::simulate(
+      system, c.run, [&](const JournalBearingSample &s) { curve.samples.push_back(s); },
+      frames ? continuum::JournalBearingFrameObserver([&](const JournalBearingFrame &f) { curve.frames.push_back(f); })
+             : nullptr);
+  if (!curve.report.ok())
+    throw std::runtime_error(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
+  curve.summary = continuum::summarise(curve.samples);
+  return curve;
+}
+
+const char *kColumns =
+    "t_s,drive_angle_rad,drive_speed_rad_s,journal_speed_rad_s,coupling_torque_N_m,friction_torque_N_m,friction_force_N,normal_force_N,"
+    "mu,mu_law,sliding_speed_m_s,sliding_distance_m,wear_volume_m3,contact_half_angle_rad,peak_pressure_Pa,"
+    "mean_pressure_Pa,state_slip";
+
+std::string row(const JournalBearingSample &s) {
+  return fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},"
+                     "{:.12g},{:.12g},{:.12g},{}",
+                     s.t, s.drive_angle, s.drive_speed, s.journal_speed, s.coupling_torque, s.friction_torque, s.friction_force,
+                     s.normal_force, s.mu, s.mu_law, s.sliding_speed, s.distance, s.wear_volume, s.contact_half_angle,
+                     s.peak_pressure, s.mean_pressure, s.state == continuum::ContactState::Slip ? 1 : 0);
+}
+
+void run_plot(const std::vector<std::string> &script_args) {
+  const char *python_env = std::getenv("RUNIN_PYTHON");
+  const std::string python = python_env && *python_env ? python_env : RUNIN_DEFAULT_PYTHON;
+  const std::string script = std::string(RUNIN_SOURCE_DIR) + "/tools/plot_journal_bearing.py";
+  std::vector<std::string> args = {python, script};
+  args.insert(args.end(), script_args.begin(), script_args.end());
+  std::vector<char *> argv;
+  for (auto &a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
+    throw std::runtime_error("cannot start " + python + " for the plot (set RUNIN_PYTHON or use --no-plot)");
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("plotting failed: " + python + " " + script + " (use --no-plot to skip)");
+}
+
+std::string or_none(double t) { return t < 0.0 ? std::string("not reached") : fmt::format("{:.6g} s", t); }
+
+#ifdef RUNIN_HAVE_VTK
+// Bore surface (worn radius) over the arc x axial width, theta = 0 at the loaded bottom.
+std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, const continuum::ConformalContact &contact,
+                                                   const std::vector<JournalBearingFrame> &frames) {
+  const auto &b = c.parameters.bore;
+  const int nu = contact.nodes(), nv = c.axial_points;
+  std::vector<coupling::SurfaceFrame> out;
+  for (const auto &f : frames) {
+    coupling::SurfaceFrame s;
+    s.time = f.t;
+    s.nu = nu;
+    s.nv = nv;
+    std::vector<double> pressure(nu * nv), wear(nu * nv);
+    for (int j = 0; j < nv; ++j) {
+      const double z = b.axial_width * (j / double(nv - 1) - 0.5);
+      for (int i = 0; i < nu; ++i) {
+        const double theta = contact.node_angle(i), r = b.shaft_radius + b.clearance + f.wear_depth[i];
+        s.points.push_back({r * std::sin(theta), -r * std::cos(theta), z});
+        pressure[i + nu * j] = f.pressure[i];
+        wear[i + nu * j] = f.wear_depth[i];
+      }
+    }
+    s.fields = {{"pressure", pressure}, {"wear_depth", wear}};
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+#endif
+
+int run(const Options &o) {
+  const JournalBearingCase c = read_journal_bearing_case(o.case_path, o.law_path);
+  const Curve main_curve = run_case(c, *c.friction, true);
+  std::vector<Curve> sweep;
+  for (double mu0 : c.sweep_mu0) sweep.push_back(run_case(c, friction_with_mu0(c, mu0), false));
+
+  // Everything is computed; only now touch the output directory.
+  std::error_code error;
+  fs::create_directories(o.output_dir, error);
+  if (error) throw std::runtime_error("cannot create " + o.output_dir + ": " + error.message());
+  const fs::path dir(o.output_dir);
+  StagedFile csv(dir / "journal_bearing.csv");
+  std::string text = std::string(kColumns) + "\n";
+  for (const auto &s : main_curve.samples) text += row(s) + "\n";
+  csv.write(text);
+
+  std::optional<StagedFile> sweep_csv, sweep_summary, png, sweep_png;
+  if (!sweep.empty()) {
+    sweep_csv.emplace(dir / "journal_bearing_sweep.csv");
+    std::string t = std::string("mu0,") + kColumns + "\n";
+    sweep_summary.emplace(dir / "journal_bearing_sweep_summary.csv");
+    std::string summary = "mu0,peak_friction_force_N,peak_time_s,breakaway_time_s,steady_time_s,steady_mu,wear_volume_m3\n";
+    for (std::size_t k = 0; k < sweep.size(); ++k) {
+      for (const auto &s : sweep[k].samples) t += fmt::format("{:.12g},", c.sweep_mu0[k]) + row(s) + "\n";
+      const auto &m = sweep[k].summary;
+      summary += fmt::format("{:.12g},{:.12g},{:.12g},{},{},{:.12g},{:.12g}\n", c.sweep_mu0[k], m.peak_friction_force,
+                             m.peak_time, m.breakaway_time < 0 ? "nan" : fmt::format("{:.12g}", m.breakaway_time),
+                             m.steady_time < 0 ? "nan" : fmt::format("{:.12g}", m.steady_time), m.steady_mu,
+                             m.wear_volume);
+    }
+    sweep_csv->write(t);
+    sweep_summary->write(summary);
+  }
+  if (!o.no_plot) {
+    png.emplace(dir / "journal_bearing.png");
+    run_plot({"curve", csv.temp_path().string(), png->temp_path().string(), "--title", c.title});
+    if (sweep_csv) {
+      sweep_png.emplace(dir / "journal_bearing_mu0.png");
+      run_plot({"sweep", sweep_csv->temp_path().string(), sweep_png->temp_path().string(), "--title", c.title});
+    }
+  }
+  std::string vtk_note = "none (built without VTK)";
+#ifdef RUNIN_HAVE_VTK
+  const continuum::ConformalContact contact(c.parameters.bore);
+  const auto written = coupling::write_surface_series(surface_frames(c, contact, main_curve.frames),
+                                                      (dir / "vtk").string(), "bore");
+  vtk_note = fmt::format("{} ({} frame(s))", written.back(), main_curve.frames.size());
+#endif
+  csv.commit();
+  for (auto *f : {&sweep_csv, &sweep_summary, &png, &sweep_png})
+    if (*f) (*f)->commit();
+
+  const auto &s = main_curve.summary;
+  const auto &p = c.parameters;
+  const auto &r = main_curve.report;
+  const auto &last = main_curve.samples.back();
+  fmt::print("runin journal-bearing: {}\n  {}\n", c.path, c.title);
+  fmt::print("  friction          {}\n", c.friction->description());
+  fmt::print("  bearing           R = {:g} mm, c = {:g} um, L = {:g} mm, W = {:g} N; arc +-{:g} rad on {} nodes\n",
+             1e3 * p.bore.shaft_radius, 1e6 * p.bore.clearance, 1e3 * p.bore.axial_width, p.load,
+             p.bore.arc_half_angle, p.bore.nodes);
+  fmt::print("  drive             {:g} rad linear over {:g} s, then {:g} rad/s; coupling k = {:g} N m/rad, c = {:.3g} N m s/rad\n",
+             p.ramp_angle, p.ramp_time, p.run_speed, p.coupling_stiffness, p.coupling_damping);
+  fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
+  fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
+  fmt::print("  steady state      {} (friction force and journal speed within {:g} % of final values from then on)\n",
+             or_none(s.steady_time), 100 * continuum::JournalBearingSummary::steady_tolerance);
+  fmt::print("  steady mu         {:.6g} = F / N (N = {:.6g} N, pressure integral); F = {:.6g} N\n", s.steady_mu,
+             last.normal_force, s.steady_friction_force);
+  fmt::print("  contact           half-angle {:.4g} -> {:.4g} rad, peak pressure {:.4g} -> {:.4g} MPa\n",
+             s.initial_half_angle, s.final_half_angle, 1e-6 * s.initial_peak_pressure, 1e-6 * s.final_peak_pressure);
+  fmt::print("  wear              {:.6g} mm^3 over s = {:.6g} m; {} wear updates, stable step 2H/(k k_c) = {:.4g} m\n",
+             1e9 * s.wear_volume, last.distance, r.wear_updates, r.stable_wear_step);
+  fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", r.steps, r.breakaway_times.size(),
+             r.restick_times.size());
+  if (!sweep.empty()) {
+    fmt::print("  mu0 sweep         {:>6} {:>12} {:>12} {:>12} {:>10}\n", "mu0", "peak F (N)", "break-away", "steady",
+               "steady mu");
+    for (std::size_t k = 0; k < sweep.size(); ++k) {
+      const auto &m = sweep[k].summary;
+      fmt::print("                    {:>6.3g} {:>12.6g} {:>12} {:>12} {:>10.4g}\n", c.sweep_mu0[k],
+                 m.peak_friction_force, or_none(m.breakaway_time), or_none(m.steady_time), m.steady_mu);
+    }
+  }
+  fmt::print("  wrote             {}", csv.destination().string());
+  for (auto *f : {&sweep_csv, &sweep_summary, &png, &sweep_png})
+    if (*f) fmt::print(", {}", (*f)->destination().string());
+  fmt::print("\n  VTK               {}\n", vtk_note);
+  return 0;
+}
+
+}  // namespace
+
+Subcommand add_journal_bearing_command(CLI::App &app) {
+  auto options = std::make_shared<Options>();
+  auto *cmd = app.add_subcommand("journal-bearing", "Dry journal bearing run-in: contact, friction torque, wear (thesis ch. 5)");
+  cmd->add_option("case", options->case_path, "case file (TOML)")->required();
+  cmd->add_option("--law", options->law_path, "law file from fit-law, for friction.model = \"law_file\"");
+  cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required();
+  cmd->add_flag("--no-plot", options->no_plot, "write CSV and VTK only");
+  return {cmd, [options] { return run(*options); }};
+}
+
+}  // namespace runin::cli

@@ -1,0 +1,274 @@
+#include "cli/cmd_pin_on_disk.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include <fmt/core.h>
+
+#include "cli/case_file.h"
+#include "cli/staged_file.h"
+#include "continuum/axisymmetric_contact.h"
+#include "continuum/pin_on_disk.h"
+#ifdef RUNIN_HAVE_VTK
+#include "coupling/vtk_export.h"
+#endif
+
+namespace runin::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using continuum::PinOnDiskSample;
+
+struct Row {
+  PinOnDiskSample s;
+  double wear_volume = 0.0, contact_radius = 0.0, peak_pressure = 0.0, mean_pressure = 0.0;
+};
+
+struct Frame {  // pin face at one time, for VTK
+  double time;
+  std::vector<double> radius, height, pressure, depth;
+};
+
+struct Curve {
+  std::vector<Row> rows;
+  continuum::SolveReport report;
+  continuum::PinOnDiskSummary summary;
+  std::vector<Frame> frames;
+  long wear_steps = 0;
+  double grid_radius = 0.0;
+};
+
+// Dynamics first (CVODE), then the wear stepper driven by the sliding distance of each output
+// sample. The coupling is one-way: none of the friction laws depends on contact pressure.
+Curve run_case(const PinOnDiskCase &c, bool with_frames) {
+  Curve curve;
+  const continuum::PinOnDiskSystem system(c.parameters, *c.friction);
+  std::vector<PinOnDiskSample> samples;
+  curve.report = continuum::simulate(system, c.run, [&](const PinOnDiskSample &s) { samples.push_back(s); });
+  if (!curve.report.ok())
+    throw std::runtime_error(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
+  curve.summary = continuum::summarise(samples);
+  curve.rows.reserve(samples.size());
+  for (const auto &s : samples) curve.rows.push_back({s});
+  if (!c.contact) return curve;
+
+  const auto &k = *c.contact;
+  const double load = c.parameters.normal_load;
+  continuum::PinWearParameters wp;
+  wp.tip_radius = k.tip_radius;
+  wp.effective_modulus = k.effective_modulus();
+  wp.rings = k.rings;
+  wp.step_safety = k.step_safety;
+  wp.max_steps = k.max_wear_steps;
+  wp.grid_radius = k.grid_radius ? *k.grid_radius
+                                 : continuum::suggested_grid_radius(wp.tip_radius, wp.effective_modulus, load,
+                                                                    k.wear ? &*k.wear : nullptr,
+                                                                    samples.back().distance);
+  curve.grid_radius = wp.grid_radius;
+  // Without [wear] the pin is worn at k = 0: contact only.
+  const tribo::ArchardWear archard = k.wear ? *k.wear : tribo::ArchardWear(0.0, 1.0);
+  std::optional<continuum::PinWear> pin;
+  try {
+    pin.emplace(wp, archard, load);
+  } catch (const std::invalid_argument &e) {
+    throw std::runtime_error(std::string(e.what()) + " (raise contact.grid_radius)");
+  }
+  std::size_t next_frame = 0;
+  std::vector<double> frame_times = c.vtk_times;
+  std::sort(frame_times.begin(), frame_times.end());
+  for (auto &row : curve.rows) {
+    if (!pin->advance(std::max(row.s.distance - pin->slid(), 0.0)))
+      throw std::runtime_error(fmt::format("pin wear at t = {:g} s: {}{}", row.s.t, pin->message(),
+                                           pin->message().find("edge of the grid") != std::string::npos
+                                               ? " (raise contact.grid_radius)"
+                                               : ""));
+    const auto &contact = pin->contact();
+    row.wear_volume = pin->wear_volume();
+    row.contact_radius = contact.contact_radius;
+    row.peak_pressure = contact.peak_pressure;
+    row.mean_pressure = contact.mean_pressure;
+    while (with_frames && next_frame < frame_times.size() && row.s.t >= frame_times[next_frame] - 1e-12) {
+      Frame f{row.s.t, {}, {}, {}, {}};
+      for (int i = 0; i < pin->grid().rings(); ++i) {
+        f.radius.push_back(pin->grid().ring_radius(i));
+        f.height.push_back(pin->profile_height(i));
+        f.pressure.push_back(contact.pressure[i]);
+        f.depth.push_back(pin->wear_depth()[i]);
+      }
+      curve.frames.push_back(std::move(f));
+      ++next_frame;
+    }
+  }
+  curve.wear_steps = pin->steps();
+  return curve;
+}
+
+std::string csv_text(const std::vector<Row> &rows) {
+  std::string text =
+      "t_s,applied_torque_N_m,friction_force_N,friction_torque_N_m,mu,speed_m_s,sliding_distance_m,state_slip,"
+      "mu_law,roughness,wear_volume_m3,contact_radius_m,peak_pressure_Pa,mean_pressure_Pa\n";
+  for (const auto &r : rows) {
+    const auto &s = r.s;
+    text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g},{:.12g},{:.12g},{:.12g},"
+                        "{:.12g},{:.12g}\n",
+                        s.t, s.applied_torque, s.friction_force, s.friction_torque, s.mu, s.speed, s.distance,
+                        s.state == continuum::ContactState::Slip ? 1 : 0, s.mu_law, s.roughness, r.wear_volume,
+                        r.contact_radius, r.peak_pressure, r.mean_pressure);
+  }
+  return text;
+}
+
+#ifdef RUNIN_HAVE_VTK
+// Revolved pin face: radius x angle grid, z = height of the worn tip profile above its apex.
+std::vector<std::string> write_frames(const std::vector<Frame> &frames, const fs::path &dir) {
+  constexpr int angles = 49;  // 7.5 degree steps, closed
+  std::vector<coupling::SurfaceFrame> out;
+  for (const auto &f : frames) {
+    coupling::SurfaceFrame s;
+    s.time = f.time;
+    s.nu = static_cast<int>(f.radius.size());
+    s.nv = angles;
+    std::vector<double> pressure, depth;
+    for (int j = 0; j < angles; ++j) {
+      const double theta = 2.0 * M_PI * j / (angles - 1);
+      for (int i = 0; i < s.nu; ++i) {
+        s.points.push_back({f.radius[i] * std::cos(theta), f.radius[i] * std::sin(theta), f.height[i]});
+        pressure.push_back(f.pressure[i]);
+        depth.push_back(f.depth[i]);
+      }
+    }
+    s.fields = {{"pressure_Pa", pressure}, {"wear_depth_m", depth}};
+    out.push_back(std::move(s));
+  }
+  return coupling::write_surface_series(out, dir.string(), "pin_face");
+}
+#endif
+
+std::string or_none(double t) { return t < 0.0 ? std::string("none") : fmt::format("{:.6g} s", t); }
+
+}  // namespace
+
+CLI::App *add_pin_on_disk_command(CLI::App &app, PinOnDiskOptions &o) {
+  auto *cmd = app.add_subcommand("pin-on-disk", "Pin-on-disk run-in curve with contact and wear (thesis ch. 4)");
+  cmd->add_option("case", o.case_path, "case file (TOML)")->required();
+  cmd->add_option("--law", o.law_path, "law file from fit-law, for friction.model = \"law_file\"");
+  cmd->add_option("--output-dir", o.output_dir,
+                  "directory for pin_on_disk.csv/.png, pin_face_*.vts/.pvd and the mu0 sweep files")
+      ->required();
+  cmd->add_flag("--no-plot", o.no_plot, "write the CSV (and VTK) only");
+  return cmd;
+}
+
+int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
+  const PinOnDiskCase c = read_pin_on_disk_case(o.case_path, o.law_path);
+#ifndef RUNIN_HAVE_VTK
+  if (!c.vtk_times.empty())
+    throw std::runtime_error("output.vtk_times: this runin was built without VTK (configure with -DRUNIN_WITH_VTK=ON)");
+#endif
+  const Curve curve = run_case(c, true);
+  struct SweepRun {
+    double mu0, torque;
+    Curve curve;
+  };
+  std::vector<SweepRun> sweep;
+  for (double mu0 : c.sweep_mu0) {
+    const PinOnDiskCase variant = with_mu0(c, mu0);
+    sweep.push_back({mu0, variant.parameters.applied_torque, run_case(variant, false)});
+  }
+
+  // Everything is computed; only now touch the output directory.
+  std::error_code error;
+  fs::create_directories(o.output_dir, error);
+  if (error) throw std::runtime_error("cannot create " + o.output_dir + ": " + error.message());
+  const fs::path dir(o.output_dir);
+  StagedFile csv(dir / "pin_on_disk.csv");
+  csv.write(csv_text(curve.rows));
+  std::optional<StagedFile> png, sweep_csv, sweep_summary, sweep_png;
+  if (!sweep.empty()) {
+    sweep_csv.emplace(dir / "pin_on_disk_mu0.csv");
+    sweep_summary.emplace(dir / "pin_on_disk_mu0_summary.csv");
+    std::string curves = "mu0,t_s,friction_force_N,mu,speed_m_s,sliding_distance_m,wear_volume_m3\n";
+    std::string table =
+        "mu0,applied_torque_N_m,breakaway_s,peak_friction_force_N,peak_time_s,steady_time_s,steady_mu,"
+        "wear_volume_m3\n";
+    for (const auto &run : sweep) {
+      for (const auto &r : run.curve.rows)
+        curves += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", run.mu0, r.s.t,
+                              r.s.friction_force, r.s.mu, r.s.speed, r.s.distance, r.wear_volume);
+      const auto &s = run.curve.summary;
+      table += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", run.mu0, run.torque,
+                           s.breakaway_time, s.peak_friction_force, s.peak_time, s.steady_time, s.steady_mu,
+                           run.curve.rows.back().wear_volume);
+    }
+    sweep_csv->write(curves);
+    sweep_summary->write(table);
+  }
+  if (!o.no_plot) {
+    png.emplace(dir / "pin_on_disk.png");
+    plot("plot_curves.py", {csv.temp_path().string(), png->temp_path().string(), "--title", c.title});
+    if (!sweep.empty()) {
+      sweep_png.emplace(dir / "pin_on_disk_mu0.png");
+      plot("plot_curves.py", {"--overlay", sweep_csv->temp_path().string(), sweep_png->temp_path().string(),
+                              "--title", c.title + ": mu0 sweep"});
+    }
+  }
+  std::vector<std::string> vtk_files;
+#ifdef RUNIN_HAVE_VTK
+  if (!curve.frames.empty()) vtk_files = write_frames(curve.frames, dir);
+#endif
+  csv.commit();
+  for (auto *f : {&png, &sweep_csv, &sweep_summary, &sweep_png})
+    if (*f) (*f)->commit();
+
+  const auto &s = curve.summary;
+  const auto &p = c.parameters;
+  const auto &first = curve.rows.front(), &last = curve.rows.back();
+  fmt::print("runin pin-on-disk: {}\n  {}\n", o.case_path, c.title);
+  fmt::print("  friction          {}\n", c.friction->description());
+  fmt::print("  applied torque    {:.6g} N m ({}), ramp {:g} s\n", p.applied_torque, c.torque_origin, p.ramp_time);
+  fmt::print("  static limit      {:.6g} N m (mu_static = {:.6g})\n", c.friction->static_coefficient() *
+                                                                          p.normal_load * p.track_radius,
+             c.friction->static_coefficient());
+  fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
+  fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
+  fmt::print("  steady state      {} (friction force and speed within {:g} % of final values from then on)\n",
+             or_none(s.steady_time), 100 * continuum::PinOnDiskSummary::steady_tolerance);
+  fmt::print("  steady mu         {:.6g} = F / W; law part without the speed term {:.6g} (at s = 0: {:.6g})\n",
+             s.steady_mu, s.steady_mu_law, first.s.mu_law);
+  fmt::print("  final speed       {:.6g} m/s, sliding distance {:.6g} m at t = {:g} s\n", s.final_speed,
+             last.s.distance, last.s.t);
+  if (c.contact) {
+    fmt::print("  contact           tip R = {:g} m, E* = {:.4g} Pa, {} rings to {:.4g} m\n", c.contact->tip_radius,
+               c.contact->effective_modulus(), c.contact->rings, curve.grid_radius);
+    fmt::print("  contact radius    {:.4g} m -> {:.4g} m\n", first.contact_radius, last.contact_radius);
+    fmt::print("  pressure          peak {:.4g} -> {:.4g} Pa, mean {:.4g} -> {:.4g} Pa\n", first.peak_pressure,
+               last.peak_pressure, first.mean_pressure, last.mean_pressure);
+    if (c.contact->wear)
+      fmt::print("  wear volume       {:.6g} m^3 (Archard k W s / {}H = {:.6g}), {} adaptive wear steps\n",
+                 last.wear_volume, c.contact->wear->form() == tribo::ArchardForm::thesis ? "3" : "",
+                 c.contact->wear->volume(p.normal_load, last.s.distance), curve.wear_steps);
+  }
+  fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", curve.report.steps,
+             curve.report.breakaway_times.size(), curve.report.restick_times.size());
+  if (!sweep.empty()) {
+    fmt::print("  mu0 sweep         (torque from eq. 4.11 per mu0 when targeted)\n");
+    fmt::print("    {:>6} {:>11} {:>11} {:>11} {:>11} {:>11} {:>12}\n", "mu0", "T_app N m", "break-away", "peak F N",
+               "steady at", "steady mu", "wear m^3");
+    for (const auto &run : sweep) {
+      const auto &r = run.curve.summary;
+      fmt::print("    {:>6.3g} {:>11.5g} {:>11} {:>11.5g} {:>11} {:>11.5g} {:>12.4g}\n", run.mu0, run.torque,
+                 or_none(r.breakaway_time), r.peak_friction_force, or_none(r.steady_time), r.steady_mu,
+                 run.curve.rows.back().wear_volume);
+    }
+  }
+  fmt::print("  wrote             {}", csv.destination().string());
+  for (auto *f : {&png, &sweep_csv, &sweep_summary, &sweep_png})
+    if (*f) fmt::print(", {}", (*f)->destination().string());
+  if (!vtk_files.empty()) fmt::print(", {} ({} frames)", vtk_files.back(), curve.frames.size());
+  fmt::print("\n");
+  return 0;
+}
+
+}  // namespace runin::cli

@@ -1,0 +1,121 @@
+#include "cli/journal_bearing_case.h"
+
+#include <cmath>
+
+#include "cli/case_reader.h"
+
+namespace runin::cli {
+namespace {
+
+const Schema kSchema = {
+    {"", {"title", "bearing", "contact", "drive", "wear", "friction", "run", "solver", "sweep", "output"}},
+    {"bearing", {"shaft_radius", "clearance", "length", "youngs_modulus", "poisson_ratio", "load"}},
+    {"contact", {"arc_half_angle", "nodes"}},
+    {"drive", {"ramp_angle", "ramp_time", "run_speed", "inertia", "stiffness", "damping_ratio"}},
+    {"wear", {"coefficient", "hardness", "form", "step_fraction", "fixed_step"}},
+    {"friction", {"model", "mu0", "mu_static", "mu_kinetic", "alpha", "distance_scale", "branch"}},
+    {"run", {"t_end", "output_interval", "frame_times"}},
+    {"solver", {"method", "rtol", "atol", "max_steps"}},
+    {"sweep", {"mu0"}},
+    {"output", {"axial_points"}},
+};
+
+}  // namespace
+
+continuum::SlidingFriction friction_with_mu0(const JournalBearingCase &c, double mu0) {
+  if (c.friction_model == "static_kinetic")
+    return continuum::SlidingFriction::static_kinetic(mu0, mu0 * c.kinetic_to_static, c.alpha);
+  return continuum::SlidingFriction::constant(mu0, c.alpha);
+}
+
+JournalBearingCase read_journal_bearing_case(const std::string &path, const std::optional<std::string> &law_path) {
+  const CaseReader reader(path, parse_toml(path), kSchema);
+  reader.reject_unknown_keys();
+
+  JournalBearingCase c;
+  c.path = path;
+  c.title = reader.text("title", path);
+  auto &p = c.parameters;
+  auto &b = p.bore;
+  b.shaft_radius = reader.positive("bearing.shaft_radius");
+  b.clearance = reader.positive("bearing.clearance");
+  b.axial_width = reader.positive("bearing.length");
+  b.youngs_modulus = reader.positive("bearing.youngs_modulus");
+  b.poisson_ratio = reader.number("bearing.poisson_ratio");
+  if (!(b.poisson_ratio > -1.0 && b.poisson_ratio < 0.5))
+    reader.fail("bearing.poisson_ratio", "must be in (-1, 0.5), got " + CaseReader::format(b.poisson_ratio));
+  p.load = reader.positive("bearing.load");
+
+  b.arc_half_angle = reader.positive("contact.arc_half_angle", 0.5);
+  if (!(b.arc_half_angle < 0.5 * M_PI))
+    reader.fail("contact.arc_half_angle", "must be below pi/2 rad, got " + CaseReader::format(b.arc_half_angle));
+  const long nodes = reader.positive_integer("contact.nodes", 256);
+  if (nodes < 3 || nodes > 2048) reader.fail("contact.nodes", "must be in [3, 2048], got " + std::to_string(nodes));
+  b.nodes = static_cast<int>(nodes);
+
+  p.ramp_angle = reader.number("drive.ramp_angle", 1.0);
+  p.ramp_time = reader.positive("drive.ramp_time", 2.0);
+  p.run_speed = reader.number("drive.run_speed", 0.0);
+  p.inertia = reader.positive("drive.inertia");
+  p.coupling_stiffness = reader.positive("drive.stiffness");
+  const double damping_ratio = reader.non_negative("drive.damping_ratio", 0.0);
+  p.coupling_damping = 2.0 * damping_ratio * std::sqrt(p.coupling_stiffness * p.inertia);
+
+  p.wear_coefficient = reader.non_negative("wear.coefficient", 0.0);
+  p.hardness = reader.positive("wear.hardness");
+  p.archard_form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "plain"
+                       ? tribo::ArchardForm::plain
+                       : tribo::ArchardForm::thesis;
+  c.run.wear_step_fraction = reader.positive("wear.step_fraction", 0.5);
+  if (c.run.wear_step_fraction >= 1.0)
+    reader.fail("wear.step_fraction", "must be below 1 (the explicit wear step is unstable above it), got " +
+                                          CaseReader::format(c.run.wear_step_fraction));
+  c.run.fixed_wear_step = reader.has("wear.fixed_step") ? reader.positive("wear.fixed_step") : 0.0;
+
+  c.friction_model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file"});
+  c.friction = read_friction(reader, law_path);
+  c.alpha = reader.number("friction.alpha", 0.0);
+  if (c.friction_model == "static_kinetic") {
+    const double mu_static = reader.number("friction.mu_static");
+    c.kinetic_to_static = mu_static > 0.0 ? reader.number("friction.mu_kinetic") / mu_static : 1.0;
+  }
+
+  auto &run = c.run;
+  run.t_end = reader.positive("run.t_end");
+  run.output_interval = reader.positive("run.output_interval", 1e-3);
+  if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
+  if (reader.has("run.frame_times")) {
+    run.frame_times = reader.numbers("run.frame_times");
+    for (std::size_t i = 0; i < run.frame_times.size(); ++i)
+      if (run.frame_times[i] < 0.0 || run.frame_times[i] > run.t_end)
+        reader.fail("run.frame_times", "element " + std::to_string(i) + ": must be in [0, run.t_end], got " +
+                                           CaseReader::format(run.frame_times[i]));
+  } else {
+    run.frame_times = {0.0, run.t_end};
+  }
+  continuum::CvodeIntegrator::Settings defaults;
+  defaults.rtol = 1e-8;
+  defaults.atol = 1e-10;
+  defaults.max_steps = 100000;
+  run.integrator = read_solver(reader, defaults);
+
+  if (reader.has("sweep.mu0")) {
+    if (c.friction_model == "law_file") reader.fail("sweep.mu0", "needs friction.model 'constant' or 'static_kinetic'");
+    c.sweep_mu0 = reader.numbers("sweep.mu0");
+    for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i)
+      if (c.sweep_mu0[i] < 0.0)
+        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0, got " + CaseReader::format(c.sweep_mu0[i]));
+  }
+  c.axial_points = static_cast<int>(reader.positive_integer("output.axial_points", 11));
+  if (c.axial_points < 2 || c.axial_points > 1000) reader.fail("output.axial_points", "must be in [2, 1000]");
+
+  try {
+    p.validate();
+    run.validate();
+  } catch (const std::invalid_argument &e) {
+    reader.fail("bearing", e.what());  // every field is checked above; this is a safety net
+  }
+  return c;
+}
+
+}  // namespace runin::cli

@@ -1,0 +1,200 @@
+#include "cli/piston_ring_case.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "cli/case_file.h"
+#include "cli/case_reader.h"
+
+namespace runin::cli {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+const Schema &schema() {
+  static const Schema s = {
+      {"", {"title", "kinematics", "ring", "material", "gas", "friction", "wear", "run", "solver", "output", "sweep"}},
+      {"kinematics", {"motion", "crank_radius", "link_length", "start_angle_deg", "ramp_time", "crank_speed_rpm"}},
+      {"ring", {"bore", "width", "thickness", "density", "mass", "elastic_pressure", "land_stiffness",
+                "land_damping_ratio"}},
+      {"material", {"youngs_modulus", "poisson_ratio"}},
+      {"gas", {"crank_angle_deg", "pressure", "cycle_deg", "factor"}},
+      {"friction", friction_keys()},
+      {"wear", {"k", "hardness", "form", "hardness_ring", "hardness_liner", "crown_height", "ring_cells",
+                "liner_cells", "step_safety", "fixed_step", "foundation_modulus"}},
+      {"run", {"t_end", "output_interval", "max_events"}},
+      {"solver", {"method", "rtol", "atol", "max_steps"}},
+      {"output", {"vtk_times", "circumferential_points"}},
+      {"sweep", {"mu0"}},
+  };
+  return s;
+}
+
+}  // namespace
+
+continuum::SlidingFriction piston_ring_friction_with_mu0(const PistonRingCase &c, double mu0) {
+  const double alpha = c.friction->speed_coefficient();
+  if (c.friction_model == "constant") return continuum::SlidingFriction::constant(mu0, alpha);
+  if (c.friction_model == "static_kinetic") {
+    const double mu_s = c.friction->static_coefficient();
+    const double ratio = mu_s > 0.0 ? c.friction->kinetic(0.0, 0.0) / mu_s : 1.0;
+    return continuum::SlidingFriction::static_kinetic(mu0, ratio * mu0, alpha);
+  }
+  throw std::invalid_argument("a mu0 sweep needs friction model constant or static_kinetic");
+}
+
+PistonRingCase read_piston_ring_case(const std::string &path, const std::optional<std::string> &law_path) {
+  const CaseReader reader(path, parse_toml(path), schema());
+  reader.reject_unknown_keys();
+
+  PistonRingCase c;
+  c.path = path;
+  c.title = reader.text("title", path);
+  auto &p = c.parameters;
+
+  // Kinematics: eq. 6.1 with the crank angle measured from TDC; the start is start_angle before TDC.
+  const std::string motion = reader.choice("kinematics.motion", {"ramp", "crank"}, std::string("ramp"));
+  p.motion = motion == "ramp" ? continuum::PistonMotion::Ramp : continuum::PistonMotion::Crank;
+  p.crank.crank_radius = reader.positive("kinematics.crank_radius");
+  p.crank.link_length = reader.positive("kinematics.link_length");
+  if (p.crank.link_length <= p.crank.crank_radius)
+    reader.fail("kinematics.link_length", "must exceed kinematics.crank_radius (" +
+                                              CaseReader::format(p.crank.crank_radius) + ")");
+  const double start_deg = reader.number("kinematics.start_angle_deg", 75.0);
+  if (start_deg <= 0.0 || start_deg > 180.0)
+    reader.fail("kinematics.start_angle_deg", "must lie in (0, 180] (degrees before TDC), got " +
+                                                  CaseReader::format(start_deg));
+  p.start_angle = start_deg * kDeg;
+  if (p.motion == continuum::PistonMotion::Ramp) {
+    if (reader.has("kinematics.crank_speed_rpm")) reader.fail("kinematics.crank_speed_rpm", "not used by motion 'ramp'");
+    p.ramp_time = reader.positive("kinematics.ramp_time", 2.0);
+  } else {
+    if (reader.has("kinematics.ramp_time")) reader.fail("kinematics.ramp_time", "not used by motion 'crank'");
+    p.crank_speed = reader.positive("kinematics.crank_speed_rpm") * 2.0 * kPi / 60.0;
+  }
+
+  // Ring and land.
+  p.bore = reader.positive("ring.bore");
+  p.ring_width = reader.positive("ring.width");
+  const double thickness = reader.positive("ring.thickness");
+  if (2.0 * thickness >= p.bore) reader.fail("ring.thickness", "must be below half the bore");
+  if (reader.has("ring.mass") && reader.has("ring.density"))
+    reader.fail("ring.mass", "give either ring.mass or ring.density, not both");
+  p.ring_mass = reader.has("ring.mass")
+                    ? reader.positive("ring.mass")
+                    : reader.positive("ring.density", 7200.0) * kPi * (p.bore - thickness) * thickness * p.ring_width;
+  p.elastic_pressure = reader.positive("ring.elastic_pressure");
+  p.land_stiffness = reader.positive("ring.land_stiffness");
+  c.land_damping_ratio = reader.non_negative("ring.land_damping_ratio");
+  p.land_damping = 2.0 * c.land_damping_ratio * std::sqrt(p.land_stiffness * p.ring_mass);
+
+  // Gas pressure behind the ring (crank motion only).
+  if (reader.has("gas")) {
+    if (p.motion != continuum::PistonMotion::Crank) reader.fail("gas", "needs kinematics.motion = \"crank\"");
+    const auto angles = reader.numbers("gas.crank_angle_deg");
+    const auto pressures = reader.numbers("gas.pressure");
+    if (angles.size() != pressures.size())
+      reader.fail("gas.pressure", "has " + std::to_string(pressures.size()) + " values, gas.crank_angle_deg has " +
+                                      std::to_string(angles.size()));
+    const double cycle_deg = reader.positive("gas.cycle_deg", 720.0);
+    for (std::size_t i = 0; i < angles.size(); ++i) {
+      if (angles[i] < 0.0 || angles[i] >= cycle_deg)
+        reader.fail("gas.crank_angle_deg", "element " + std::to_string(i) + ": must lie in [0, gas.cycle_deg)");
+      if (i > 0 && angles[i] <= angles[i - 1])
+        reader.fail("gas.crank_angle_deg", "element " + std::to_string(i) + ": angles must increase");
+      if (pressures[i] < 0.0) reader.fail("gas.pressure", "element " + std::to_string(i) + ": must be >= 0");
+      p.gas.crank_angle.push_back(angles[i] * kDeg);
+      p.gas.pressure.push_back(pressures[i]);
+    }
+    p.gas.cycle = cycle_deg * kDeg;
+    p.gas.factor = reader.non_negative("gas.factor", 1.0);
+  }
+
+  c.friction = read_friction(reader, law_path);
+  c.friction_model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback"});
+
+  // Wear of ring face and liner.
+  const double youngs = reader.positive("material.youngs_modulus", 66e9);
+  const double poisson = reader.number("material.poisson_ratio", 0.27);
+  if (poisson <= -1.0 || poisson >= 0.5) reader.fail("material.poisson_ratio", "must lie in (-1, 0.5)");
+  auto &w = c.wear_settings;
+  w.bore = p.bore;
+  w.ring_width = p.ring_width;
+  // Winkler layer: plane-strain modulus over the ring's radial thickness.
+  w.foundation_modulus =
+      reader.positive("wear.foundation_modulus", youngs / (1.0 - poisson * poisson) / thickness);
+  w.crown_height = reader.non_negative("wear.crown_height", 0.0);
+  w.ring_cells = static_cast<int>(reader.positive_integer("wear.ring_cells", 64));
+  w.liner_cells = static_cast<int>(reader.positive_integer("wear.liner_cells", 512));
+  if (w.ring_cells < 2 || w.ring_cells > 100000) reader.fail("wear.ring_cells", "must lie in [2, 100000]");
+  if (w.liner_cells < 2 || w.liner_cells > 10000000) reader.fail("wear.liner_cells", "must lie in [2, 1e7]");
+  w.step_safety = reader.positive("wear.step_safety", 0.5);
+  if (w.step_safety >= 1.0) reader.fail("wear.step_safety", "must be below 1 (the stability bound)");
+  w.fixed_step = reader.non_negative("wear.fixed_step", 0.0);
+  const double hardness = reader.positive("wear.hardness");
+  const double hardness_ring = reader.positive("wear.hardness_ring", hardness);
+  const double hardness_liner = reader.positive("wear.hardness_liner", hardness);
+  w.ring_share = tribo::wear_share(hardness_ring, hardness_liner);
+  const auto form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "plain"
+                        ? tribo::ArchardForm::plain
+                        : tribo::ArchardForm::thesis;
+  c.archard.emplace(reader.non_negative("wear.k"), hardness, form);
+
+  // Run.
+  auto &run = c.run;
+  run.t_end = reader.positive("run.t_end");
+  run.output_interval = reader.positive("run.output_interval", 1e-3);
+  if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
+  run.max_events = static_cast<int>(std::min<long>(reader.positive_integer("run.max_events", 100000), 1L << 30));
+  continuum::CvodeIntegrator::Settings defaults;
+  defaults.rtol = 1e-8;
+  defaults.atol = 1e-12;
+  defaults.max_steps = 100000;
+  run.integrator = read_solver(reader, defaults);
+
+  // Output and sweep.
+  if (reader.has("output.vtk_times")) {
+    c.vtk_times = reader.numbers("output.vtk_times");
+    for (std::size_t i = 0; i < c.vtk_times.size(); ++i)
+      if (c.vtk_times[i] < 0.0 || c.vtk_times[i] > run.t_end)
+        reader.fail("output.vtk_times", "element " + std::to_string(i) + ": must lie in [0, run.t_end]");
+  } else {
+    for (int i = 0; i <= 4; ++i) c.vtk_times.push_back(run.t_end * i / 4.0);
+  }
+  c.circumferential_points = static_cast<int>(reader.positive_integer("output.circumferential_points", 48));
+  if (c.circumferential_points < 3 || c.circumferential_points > 4096)
+    reader.fail("output.circumferential_points", "must lie in [3, 4096]");
+  double mu_static_max = c.friction->static_coefficient();
+  if (reader.has("sweep.mu0")) {
+    c.sweep_mu0 = reader.numbers("sweep.mu0");
+    if (c.friction_model != "constant" && c.friction_model != "static_kinetic")
+      reader.fail("sweep.mu0", "needs friction.model constant or static_kinetic, not '" + c.friction_model + "'");
+    for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
+      if (c.sweep_mu0[i] < 0.0) reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0");
+      mu_static_max = std::max(mu_static_max, c.sweep_mu0[i]);
+    }
+  }
+
+  // Liner grid: the ring's travel plus its half width, the land deflection at the static limit and 1 mm.
+  const double x_low = p.motion == continuum::PistonMotion::Ramp ? p.crank.position(p.start_angle)
+                                                                  : p.crank.bottom_dead_centre();
+  const double x_high = p.crank.top_dead_centre();
+  double gas_max = 0.0;
+  for (double g : p.gas.pressure) gas_max = std::max(gas_max, p.gas.factor * g);
+  const double load_max = (p.elastic_pressure + gas_max) * p.contact_area();
+  const double margin = 0.5 * p.ring_width + 1e-3 + 4.0 * mu_static_max * load_max / p.land_stiffness;
+  w.liner_begin = x_low - margin;
+  w.liner_end = x_high + margin;
+
+  try {
+    p.validate();
+    w.validate();
+  } catch (const std::invalid_argument &e) {
+    reader.fail("ring", e.what());
+  }
+  return c;
+}
+
+}  // namespace runin::cli

@@ -1,0 +1,331 @@
+#include "continuum/journal_bearing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace runin::continuum {
+namespace {
+void require(bool ok, const std::string &what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+int sign_of(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
+bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
+}  // namespace
+
+void JournalBearingParameters::validate() const {
+  bore.validate();
+  require(std::isfinite(load) && load > 0.0, "load must be positive");
+  require(std::isfinite(ramp_angle), "ramp_angle must be finite");
+  require(std::isfinite(ramp_time) && ramp_time > 0.0, "ramp_time must be positive");
+  require(std::isfinite(run_speed), "run_speed must be finite");
+  require(std::isfinite(inertia) && inertia > 0.0, "inertia must be positive");
+  require(std::isfinite(coupling_stiffness) && coupling_stiffness > 0.0, "coupling_stiffness must be positive");
+  require(finite_non_negative(coupling_damping), "coupling_damping must be >= 0");
+  require(finite_non_negative(wear_coefficient), "wear_coefficient must be >= 0");
+  require(std::isfinite(hardness) && hardness > 0.0, "hardness must be positive");
+}
+
+double JournalBearingParameters::drive_speed(double t) const {
+  return t < ramp_time ? ramp_angle / ramp_time : run_speed;
+}
+
+double JournalBearingParameters::drive_angle(double t) const {
+  if (t <= ramp_time) return ramp_angle * std::max(t, 0.0) / ramp_time;
+  return ramp_angle + run_speed * (t - ramp_time);
+}
+
+void JournalBearingRun::validate() const {
+  require(std::isfinite(t_end) && t_end > 0.0, "t_end must be positive");
+  require(std::isfinite(output_interval) && output_interval > 0.0, "output_interval must be positive");
+  require(t_end / output_interval <= 1e7, "output_interval gives more than 1e7 samples");
+  require(std::isfinite(wear_step_fraction) && wear_step_fraction > 0.0, "wear_step_fraction must be positive");
+  require(finite_non_negative(fixed_wear_step), "fixed_wear_step must be >= 0");
+  for (double f : frame_times) require(finite_non_negative(f), "frame_times must be >= 0");
+  require(max_events > 0, "max_events must be positive");
+}
+
+JournalBearingSystem::JournalBearingSystem(JournalBearingParameters parameters, SlidingFriction friction)
+    : p_((parameters.validate(), parameters)),
+      friction_(std::move(friction)),
+      contact_(p_.bore),
+      wear_(p_.wear_coefficient, p_.hardness, p_.archard_form) {}
+
+namespace {
+
+// The wear and contact state between wear updates.
+struct Surface {
+  std::vector<double> wear;      // m per node
+  ConformalSolution contact;
+  double normal_force = 0.0;     // N
+  double distance_at_update = 0.0;
+  double committed_volume = 0.0;
+};
+
+bool solve_contact(const JournalBearingSystem &sys, Surface &surface, std::string &message) {
+  const std::vector<double> previous = surface.contact.pressure;
+  surface.contact = sys.contact().solve(sys.load_per_length(), surface.wear, previous.empty() ? nullptr : &previous);
+  if (!surface.contact.ok()) {
+    message = std::string("contact solver: ") + to_string(surface.contact.status) +
+              (surface.contact.status == ConformalStatus::ArcTooShort ? " (increase contact.arc_half_angle)" : "");
+    return false;
+  }
+  surface.normal_force = surface.contact.normal_force_per_length * sys.parameters().bore.axial_width;
+  return true;
+}
+
+void apply_wear(const JournalBearingSystem &sys, Surface &surface, double distance) {
+  const double ds = distance - surface.distance_at_update;
+  const double panel_area = sys.contact().panel_length() * sys.parameters().bore.axial_width;
+  for (std::size_t i = 0; i < surface.wear.size(); ++i) {
+    const double depth = sys.wear_law().depth_rate(surface.contact.pressure[i]) * ds;
+    surface.wear[i] += depth;
+    surface.committed_volume += depth * panel_area;
+  }
+  surface.distance_at_update = distance;
+}
+
+}  // namespace
+
+JournalBearingReport simulate(const JournalBearingSystem &system, const JournalBearingRun &run,
+                              const JournalBearingObserver &observer, const JournalBearingFrameObserver &frames) {
+  run.validate();
+  const auto &p = system.parameters();
+  const double radius = p.bore.shaft_radius;
+  const double round_off = 64.0 * std::numeric_limits<double>::epsilon() * run.t_end;
+  const auto &friction = system.friction();
+
+  JournalBearingReport report;
+  Surface surface;
+  surface.wear.assign(system.contact().nodes(), 0.0);
+  if (!solve_contact(system, surface, report.message)) {
+    report.status = SolveStatus::IntegratorFailure;
+    return report;
+  }
+  report.stable_wear_step = system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
+  const double wear_step = run.fixed_wear_step > 0.0 ? run.fixed_wear_step : run.wear_step_fraction * report.stable_wear_step;
+  const bool wearing = p.wear_coefficient > 0.0 && std::isfinite(wear_step);
+  double next_wear = wearing ? wear_step : HUGE_VAL;
+
+  auto coupling_torque = [&p](double t, const double *y) {
+    return p.coupling_stiffness * (p.drive_angle(t) - y[0]) + p.coupling_damping * (p.drive_speed(t) - y[1]);
+  };
+  auto static_limit = [&] { return friction.static_coefficient() * surface.normal_force * radius; };
+  auto slip_torque = [&](const double *y, int dir) {
+    return dir * friction.kinetic(y[2], radius * y[1]) * surface.normal_force * radius;
+  };
+
+  CvodeIntegrator integrator(3, run.integrator);
+  std::vector<double> y = {0.0, 0.0, 0.0};
+  ContactState state = ContactState::Stick;
+  int direction = 0;
+  double t = 0.0;
+  std::size_t next_frame = 0;
+  std::vector<double> frame_times = run.frame_times;
+  std::sort(frame_times.begin(), frame_times.end());
+
+  auto emit = [&] {
+    JournalBearingSample s;
+    s.t = t;
+    s.drive_angle = p.drive_angle(t);
+    s.drive_speed = p.drive_speed(t);
+    s.journal_speed = state == ContactState::Stick ? 0.0 : y[1];
+    s.coupling_torque = coupling_torque(t, y.data());
+    s.friction_torque = state == ContactState::Stick ? s.coupling_torque : slip_torque(y.data(), direction);
+    s.friction_force = s.friction_torque / radius;
+    s.normal_force = surface.normal_force;
+    s.mu = s.friction_force / surface.normal_force;
+    s.mu_law = friction.kinetic(y[2], 0.0);
+    s.sliding_speed = radius * s.journal_speed;
+    s.distance = y[2];
+    s.wear_volume = surface.committed_volume + system.wear_law().volume(surface.normal_force, y[2] - surface.distance_at_update);
+    s.contact_half_angle = surface.contact.contact_half_angle;
+    s.peak_pressure = surface.contact.peak_pressure;
+    s.mean_pressure = surface.contact.mean_pressure;
+    s.state = state;
+    observer(s);
+    while (frames && next_frame < frame_times.size() && t >= frame_times[next_frame] - round_off) {
+      JournalBearingFrame f;
+      f.t = t;
+      f.pressure = surface.contact.pressure;
+      f.wear_depth = surface.wear;
+      const double pending = y[2] - surface.distance_at_update;
+      for (std::size_t i = 0; i < f.wear_depth.size(); ++i)
+        f.wear_depth[i] += system.wear_law().depth_rate(f.pressure[i]) * pending;
+      frames(f);
+      ++next_frame;
+    }
+  };
+
+  // One CVODE problem per contact phase and wear interval.
+  auto start_phase = [&] {
+    if (state == ContactState::Stick) {
+      y[1] = 0.0;
+      integrator.restart(
+          t, y, [](double, const double *, double *dy) { dy[0] = dy[1] = dy[2] = 0.0; },
+          [&](double tt, const double *yy, double *g) {
+            g[0] = std::abs(coupling_torque(tt, yy)) - static_limit();
+            g[1] = -1.0;
+          },
+          {+1, 0});
+    } else {
+      const int dir = direction;
+      integrator.restart(
+          t, y,
+          [&, dir](double tt, const double *yy, double *dy) {
+            dy[0] = yy[1];
+            dy[1] = (coupling_torque(tt, yy) - slip_torque(yy, dir)) / p.inertia;
+            dy[2] = dir * radius * yy[1];  // = R|w| before the re-stick root, smooth through it
+          },
+          [&, dir](double, const double *yy, double *g) {
+            g[0] = dir * yy[1];
+            g[1] = yy[2] - next_wear;
+          },
+          {-1, +1});
+    }
+  };
+  auto break_away = [&] {
+    report.breakaway_times.push_back(t);
+    state = ContactState::Slip;
+    direction = sign_of(coupling_torque(t, y.data()));
+    y[1] = 0.0;
+  };
+
+  if (std::abs(coupling_torque(t, y.data())) > static_limit()) {
+    emit();
+    break_away();
+  }
+  emit();
+  start_phase();
+
+  long next_grid = 1;
+  int events = 0;
+  const double kink = p.ramp_time;
+  while (t < run.t_end - round_off) {
+    const double grid_time = std::min(static_cast<double>(next_grid) * run.output_interval, run.t_end);
+    const bool kink_first = t < kink - round_off && kink < grid_time - round_off;
+    const double target = kink_first ? kink : grid_time;
+
+    const auto step = integrator.advance(target);
+    y = integrator.state();
+    t = step.t;
+    if (step.outcome == CvodeIntegrator::Outcome::Failed) {
+      report.status = SolveStatus::IntegratorFailure;
+      report.message = "CVODE failed at t = " + std::to_string(t) + " s: " + step.message;
+      break;
+    }
+    if (step.outcome == CvodeIntegrator::Outcome::FoundRoot) {
+      const bool stop_event = step.roots_found[0] != 0;
+      if (state == ContactState::Slip && step.roots_found[1] != 0) {  // wear update
+        apply_wear(system, surface, y[2]);
+        ++report.wear_updates;
+        next_wear = y[2] + wear_step;
+        if (!solve_contact(system, surface, report.message)) {
+          report.status = SolveStatus::IntegratorFailure;
+          break;
+        }
+      }
+      if (stop_event) {
+        emit();
+        if (++events > run.max_events) {
+          report.status = SolveStatus::TooManyEvents;
+          report.message = "more than " + std::to_string(run.max_events) + " stick/slip events by t = " +
+                           std::to_string(t) + " s";
+          break;
+        }
+        if (state == ContactState::Stick) {
+          break_away();
+        } else if (std::abs(coupling_torque(t, y.data())) <= static_limit()) {
+          report.restick_times.push_back(t);
+          state = ContactState::Stick;
+          direction = 0;
+        } else {
+          report.breakaway_times.push_back(t);
+          direction = sign_of(coupling_torque(t, y.data()));
+          y[1] = 0.0;
+        }
+        emit();
+      }
+      start_phase();
+      continue;
+    }
+    emit();
+    if (kink_first) {
+      start_phase();  // restart at the kink of the drive speed instead of stepping across it
+    } else {
+      ++next_grid;
+    }
+  }
+  report.end_time = t;
+  report.steps = integrator.total_steps();
+  return report;
+}
+
+WearHistory wear_in(const JournalBearingSystem &system, double ds, int steps) {
+  require(std::isfinite(ds) && ds > 0.0, "ds must be positive");
+  require(steps >= 0, "steps must be >= 0");
+  WearHistory history;
+  Surface surface;
+  surface.wear.assign(system.contact().nodes(), 0.0);
+  std::string message;
+  double distance = 0.0;
+  if (!solve_contact(system, surface, message)) {
+    history.status = surface.contact.status;
+    return history;
+  }
+  for (int k = 0; k < steps; ++k) {
+    distance += ds;
+    apply_wear(system, surface, distance);
+    if (!solve_contact(system, surface, message)) {
+      history.status = surface.contact.status;
+      break;
+    }
+    history.pressure.push_back(surface.contact.pressure);
+    history.wear.push_back(surface.wear);
+  }
+  return history;
+}
+
+JournalBearingSummary summarise(const std::vector<JournalBearingSample> &samples) {
+  JournalBearingSummary summary;
+  if (samples.empty()) return summary;
+  for (const auto &s : samples)
+    if (std::abs(s.friction_force) > std::abs(summary.peak_friction_force)) summary.peak_friction_force = s.friction_force;
+  double peak_speed = 0.0;
+  for (const auto &s : samples) peak_speed = std::max(peak_speed, std::abs(s.journal_speed));
+  for (const auto &s : samples)
+    if (std::abs(s.friction_force) >= (1.0 - 1e-6) * std::abs(summary.peak_friction_force)) {
+      summary.peak_time = s.t;
+      break;
+    }
+  for (std::size_t i = 1; i < samples.size(); ++i)
+    if (samples[i - 1].state == ContactState::Stick && samples[i].state == ContactState::Slip) {
+      summary.breakaway_time = samples[i].t;
+      break;
+    }
+  const auto &first = samples.front(), &last = samples.back();
+  summary.steady_mu = last.mu;
+  summary.steady_friction_force = last.friction_force;
+  summary.wear_volume = last.wear_volume;
+  summary.initial_peak_pressure = first.peak_pressure;
+  summary.final_peak_pressure = last.peak_pressure;
+  summary.initial_half_angle = first.contact_half_angle;
+  summary.final_half_angle = last.contact_half_angle;
+  const double tol = JournalBearingSummary::steady_tolerance;
+  const double force_band = tol * std::abs(last.friction_force);
+  const double speed_band = std::max(tol * std::abs(last.journal_speed), 1e-3 * peak_speed);
+  double steady_from = first.t;
+  for (std::size_t i = samples.size(); i-- > 0;) {
+    const auto &s = samples[i];
+    if (std::abs(s.friction_force - last.friction_force) > force_band ||
+        std::abs(s.journal_speed - last.journal_speed) > speed_band) {
+      steady_from = i + 1 < samples.size() ? samples[i + 1].t : last.t;
+      break;
+    }
+  }
+  if (steady_from <= first.t + 0.9 * (last.t - first.t)) summary.steady_time = steady_from;
+  return summary;
+}
+
+}  // namespace runin::continuum

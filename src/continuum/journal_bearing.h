@@ -1,0 +1,137 @@
+// Dry journal bearing (thesis ch. 5): a shaft of radius R turns in a fixed bore under a radial
+// load W. The drive end follows a prescribed rotation (linear ramp to `ramp_angle` at
+// `ramp_time`, then an optional constant speed); it turns the journal through a torsional
+// coupling (stiffness k, damping c), so the resisting torque of the contact is finite:
+//   J dw/dt = T_c - T_f,   T_c = k (theta_drive - theta) + c (w_drive - w),   ds/dt = R |w|
+//   stick: w = 0, T_f = T_c        while |T_c| < mu_static N R
+//   slip:  T_f = sign(w) mu(s, R|w|) N R,   N = integral of the contact pressure (>= W)
+// CVODE integrates (theta, w, s) with break-away / re-stick events (root finding). Between wear
+// updates the pressure is frozen; a wear update (root s = s_next) applies Archard wear
+// dw_i = (k/H) p_i ds to the bore and re-solves the conformal contact (conformal_contact.h).
+// The wear step ds is a fraction of ArchardWear::stable_slip_step(k_c), or fixed if asked.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "continuum/conformal_contact.h"
+#include "continuum/cvode_integrator.h"
+#include "continuum/pin_on_disk.h"  // ContactState, SolveStatus
+#include "continuum/sliding_friction.h"
+#include "tribo/wear.h"
+
+namespace runin::continuum {
+
+struct JournalBearingParameters {
+  BoreGeometry bore;
+  double load = 0.0;                 // N, radial load W on the journal
+  double ramp_angle = 1.0;           // rad, drive rotation reached at ramp_time (linear from 0)
+  double ramp_time = 2.0;            // s
+  double run_speed = 0.0;            // rad/s of the drive after the ramp (0: drive stops)
+  double inertia = 0.0;              // kg m^2, journal
+  double coupling_stiffness = 0.0;   // N m/rad
+  double coupling_damping = 0.0;     // N m s/rad
+  double wear_coefficient = 0.0;     // Archard k (0: no wear)
+  double hardness = 0.0;             // Pa, bore
+  tribo::ArchardForm archard_form = tribo::ArchardForm::plain;
+
+  void validate() const;  // throws std::invalid_argument naming the field
+  double drive_speed(double t) const;
+  double drive_angle(double t) const;
+};
+
+struct JournalBearingSample {
+  double t = 0.0;
+  double drive_angle = 0.0, drive_speed = 0.0, journal_speed = 0.0;  // rad, rad/s, rad/s
+  double coupling_torque = 0.0;   // N m
+  double friction_torque = 0.0;   // N m, resisting torque of the contact
+  double friction_force = 0.0;    // N, friction_torque / R
+  double normal_force = 0.0;      // N, integral of the pressure over the contact
+  double mu = 0.0;                // mobilised F / N (stick: below mu_static)
+  double mu_law = 0.0;            // law value at s without the speed term
+  double sliding_speed = 0.0;     // m/s, R w
+  double distance = 0.0;          // m, sliding distance s
+  double wear_volume = 0.0;       // m^3, bore
+  double contact_half_angle = 0.0;  // rad
+  double peak_pressure = 0.0, mean_pressure = 0.0;  // Pa
+  ContactState state = ContactState::Stick;
+};
+
+struct JournalBearingFrame {
+  double t = 0.0;
+  std::vector<double> pressure, wear_depth;  // per arc node
+};
+
+struct JournalBearingRun {
+  double t_end = 2.0;                 // s
+  double output_interval = 1e-3;      // s
+  std::vector<double> frame_times;    // s; a frame is taken at the first output sample at or after each
+  double wear_step_fraction = 0.5;    // adaptive wear step = fraction * stable_slip_step(k_c)
+  double fixed_wear_step = 0.0;       // m; > 0 replaces the adaptive step (for stability studies)
+  CvodeIntegrator::Settings integrator;
+  int max_events = 10000;
+
+  void validate() const;
+};
+
+struct JournalBearingReport {
+  SolveStatus status = SolveStatus::Success;
+  std::string message;
+  double end_time = 0.0;
+  std::vector<double> breakaway_times, restick_times;
+  long steps = 0;                 // CVODE internal steps
+  long wear_updates = 0;
+  double stable_wear_step = 0.0;  // m, 2H/(k k_c)
+  bool ok() const { return status == SolveStatus::Success; }
+};
+
+class JournalBearingSystem {
+ public:
+  JournalBearingSystem(JournalBearingParameters parameters, SlidingFriction friction);
+
+  const JournalBearingParameters &parameters() const { return p_; }
+  const SlidingFriction &friction() const { return friction_; }
+  const ConformalContact &contact() const { return contact_; }
+  const tribo::ArchardWear &wear_law() const { return wear_; }
+  double load_per_length() const { return p_.load / p_.bore.axial_width; }
+
+ private:
+  JournalBearingParameters p_;
+  SlidingFriction friction_;
+  ConformalContact contact_;
+  tribo::ArchardWear wear_;
+};
+
+using JournalBearingObserver = std::function<void(const JournalBearingSample &)>;
+using JournalBearingFrameObserver = std::function<void(const JournalBearingFrame &)>;
+
+// Numerical failure (CVODE, contact solver) is reported in the status; bad settings throw.
+JournalBearingReport simulate(const JournalBearingSystem &system, const JournalBearingRun &run,
+                              const JournalBearingObserver &observer,
+                              const JournalBearingFrameObserver &frames = nullptr);
+
+// Explicit Archard wear of the bore under a fixed load, without dynamics: `steps` updates of
+// slip `ds` each (the pressure re-solved after every update). Returns the pressures after
+// each update. Used for the wear-step stability study and the wear benchmark.
+struct WearHistory {
+  std::vector<std::vector<double>> pressure, wear;  // per update
+  ConformalStatus status = ConformalStatus::Converged;
+};
+WearHistory wear_in(const JournalBearingSystem &system, double ds, int steps);
+
+struct JournalBearingSummary {
+  double peak_friction_force = 0.0, peak_time = 0.0;
+  double breakaway_time = -1.0;  // -1: never broke away
+  double steady_time = -1.0;     // -1: not steady
+  double steady_mu = 0.0, steady_friction_force = 0.0, wear_volume = 0.0;
+  double initial_peak_pressure = 0.0, final_peak_pressure = 0.0;
+  double initial_half_angle = 0.0, final_half_angle = 0.0;
+  static constexpr double steady_tolerance = 0.01;  // relative, on friction force and journal speed
+};
+// Steady from the first sample after which friction force and journal speed stay within
+// steady_tolerance of their final values (speed band at least 1e-3 of the peak speed);
+// "not steady" if that is in the last 10 % of the run.
+JournalBearingSummary summarise(const std::vector<JournalBearingSample> &samples);
+
+}  // namespace runin::continuum

@@ -1,0 +1,153 @@
+#include "continuum/ring_liner_wear.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace runin::continuum {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+void require(bool ok, const std::string &what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+bool finite_positive(double x) { return std::isfinite(x) && x > 0.0; }
+}  // namespace
+
+void RingLinerWearSettings::validate() const {
+  require(finite_positive(bore), "bore must be positive");
+  require(finite_positive(ring_width), "ring_width must be positive");
+  require(std::isfinite(crown_height) && crown_height >= 0.0, "crown_height must be >= 0");
+  require(ring_cells >= 2 && ring_cells <= 100000, "ring_cells must lie in [2, 100000]");
+  require(liner_cells >= 2 && liner_cells <= 10000000, "liner_cells must lie in [2, 1e7]");
+  require(std::isfinite(liner_begin) && std::isfinite(liner_end) && liner_end > liner_begin,
+          "liner_end must exceed liner_begin");
+  require(finite_positive(foundation_modulus), "foundation_modulus must be positive");
+  require(std::isfinite(ring_share) && ring_share >= 0.0 && ring_share <= 1.0, "ring_share must lie in [0, 1]");
+  require(std::isfinite(step_safety) && step_safety > 0.0 && step_safety < 1.0, "step_safety must lie in (0, 1)");
+  require(std::isfinite(fixed_step) && fixed_step >= 0.0, "fixed_step must be >= 0");
+}
+
+RingLinerWear::RingLinerWear(RingLinerWearSettings settings, tribo::ArchardWear wear)
+    : s_(settings), wear_(wear) {
+  s_.validate();
+  dz_ = s_.ring_width / s_.ring_cells;
+  dx_ = (s_.liner_end - s_.liner_begin) / s_.liner_cells;
+  ring_wear_.assign(s_.ring_cells, 0.0);
+  liner_wear_.assign(s_.liner_cells, 0.0);
+}
+
+double RingLinerWear::ring_cell_centre(int i) const { return -0.5 * s_.ring_width + (i + 0.5) * dz_; }
+double RingLinerWear::liner_cell_centre(int j) const { return s_.liner_begin + (j + 0.5) * dx_; }
+
+double RingLinerWear::step() const {
+  if (s_.fixed_step > 0.0) return s_.fixed_step;
+  return s_.step_safety * wear_.stable_slip_step(s_.foundation_modulus);
+}
+
+template <typename Visit>
+void RingLinerWear::for_each_overlap(double x_ring, Visit visit) const {
+  const double left = x_ring - 0.5 * s_.ring_width;
+  if (left < s_.liner_begin || left + s_.ring_width > s_.liner_end)
+    throw std::out_of_range("ring at x = " + std::to_string(x_ring) + " m leaves the liner grid [" +
+                            std::to_string(s_.liner_begin) + ", " + std::to_string(s_.liner_end) + "] m");
+  for (int i = 0; i < s_.ring_cells; ++i) {
+    const double a = left + i * dz_, b = a + dz_;
+    int j = std::clamp(static_cast<int>(std::floor((a - s_.liner_begin) / dx_)), 0, s_.liner_cells - 1);
+    for (; j < s_.liner_cells; ++j) {
+      const double c = s_.liner_begin + j * dx_, d = c + dx_;
+      if (c >= b) break;
+      const double overlap = std::min(b, d) - std::max(a, c);
+      if (overlap > 0.0) visit(i, j, overlap);
+    }
+  }
+}
+
+std::vector<double> RingLinerWear::gaps(double x_ring) const {
+  std::vector<double> g(s_.ring_cells, 0.0);
+  for_each_overlap(x_ring, [&](int i, int j, double overlap) { g[i] += liner_wear_[j] * overlap / dz_; });
+  for (int i = 0; i < s_.ring_cells; ++i) {
+    const double z = 2.0 * ring_cell_centre(i) / s_.ring_width;
+    g[i] += s_.crown_height * z * z + ring_wear_[i];
+  }
+  return g;
+}
+
+ContactPressure RingLinerWear::pressure(double x_ring, double load) const {
+  const std::vector<double> g = gaps(x_ring);
+  ContactPressure result;
+  result.pressure.assign(g.size(), 0.0);
+  const double line_load = std::abs(load) / (kPi * s_.bore);  // N/m of circumference
+  if (line_load == 0.0) return result;
+  // Water filling: with the m smallest gaps in contact, d = (q / (k_c dz) + sum g) / m.
+  std::vector<double> sorted = g;
+  std::sort(sorted.begin(), sorted.end());
+  const double fill = line_load / (s_.foundation_modulus * dz_);
+  double sum = 0.0, approach = 0.0;
+  for (std::size_t m = 1; m <= sorted.size(); ++m) {
+    sum += sorted[m - 1];
+    approach = (fill + sum) / static_cast<double>(m);
+    if (m == sorted.size() || approach <= sorted[m]) break;
+  }
+  double integral = 0.0;
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const double p = s_.foundation_modulus * std::max(0.0, approach - g[i]);
+    result.pressure[i] = p;
+    integral += p * dz_;
+    result.peak = std::max(result.peak, p);
+    if (p > 0.0) result.width += dz_;
+  }
+  // Remove the round-off of the fill so that pi D sum p dz = W holds to the last bit it can.
+  const double scale = line_load / integral;
+  for (auto &p : result.pressure) p *= scale;
+  result.peak *= scale;
+  result.mean = line_load / result.width;
+  return result;
+}
+
+std::vector<double> RingLinerWear::liner_pressure(double x_ring, double load) const {
+  const ContactPressure contact = pressure(x_ring, load);
+  std::vector<double> p(s_.liner_cells, 0.0);
+  for_each_overlap(x_ring, [&](int i, int j, double overlap) { p[j] += contact.pressure[i] * overlap / dx_; });
+  return p;
+}
+
+void RingLinerWear::update(double x_ring, double load, double ds) {
+  const ContactPressure contact = pressure(x_ring, load);
+  const double ring_share = s_.ring_share, liner_share = 1.0 - s_.ring_share;
+  std::vector<double> depth(contact.pressure.size());
+  for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = wear_.depth_rate(contact.pressure[i]) * ds;
+  for (std::size_t i = 0; i < depth.size(); ++i) ring_wear_[i] += ring_share * depth[i];
+  for_each_overlap(x_ring, [&](int i, int j, double overlap) {
+    liner_wear_[j] += liner_share * depth[i] * overlap / dx_;
+  });
+  archard_volume_ += wear_.volume(load, ds);
+  ++updates_;
+}
+
+void RingLinerWear::slide(double x_from, double x_to, double load_from, double load_to) {
+  const double distance = std::abs(x_to - x_from);
+  if (!(distance > 0.0)) return;
+  const double h = step();
+  const double steps = std::ceil(distance / h);
+  if (steps > 1e8)
+    throw std::runtime_error("wear: " + std::to_string(steps) + " updates for one slide of " +
+                             std::to_string(distance) + " m (stable wear step " + std::to_string(h) + " m)");
+  const long n = std::max(1L, static_cast<long>(steps));
+  const double ds = distance / static_cast<double>(n);
+  for (long k = 0; k < n; ++k) {
+    const double f = (k + 0.5) / static_cast<double>(n);  // midpoint of the sub-step
+    update(x_from + f * (x_to - x_from), load_from + f * (load_to - load_from), ds);
+  }
+}
+
+double RingLinerWear::ring_volume() const {
+  return kPi * s_.bore * dz_ * std::accumulate(ring_wear_.begin(), ring_wear_.end(), 0.0);
+}
+
+double RingLinerWear::liner_volume() const {
+  return kPi * s_.bore * dx_ * std::accumulate(liner_wear_.begin(), liner_wear_.end(), 0.0);
+}
+
+}  // namespace runin::continuum

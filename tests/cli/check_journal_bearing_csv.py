@@ -1,0 +1,137 @@
+#!/usr/bin/python3
+"""Checks of a `runin journal-bearing` output directory (stdlib only).
+
+usage: check_journal_bearing_csv.py DIR --t-end T [--mu-static MU] [--sweep N] [--claim3]
+                                    [--archard K_OVER_H] [--vtk N] [--png]
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+COLUMNS = ["t_s", "drive_angle_rad", "drive_speed_rad_s", "journal_speed_rad_s", "coupling_torque_N_m",
+           "friction_torque_N_m", "friction_force_N", "normal_force_N", "mu", "mu_law", "sliding_speed_m_s",
+           "sliding_distance_m", "wear_volume_m3", "contact_half_angle_rad", "peak_pressure_Pa",
+           "mean_pressure_Pa", "state_slip"]
+SWEEP = ["mu0", "peak_friction_force_N", "peak_time_s", "breakaway_time_s", "steady_time_s", "steady_mu",
+         "wear_volume_m3"]
+
+
+def close(a, b, rel):
+    return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)
+
+
+def read(path, header):
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        got = next(reader)
+        if got != header:
+            sys.exit(f"{path}: header {got} != {header}")
+        return [[float(x) for x in row] for row in reader]
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("dir")
+    parser.add_argument("--t-end", type=float, required=True)
+    parser.add_argument("--mu-static", type=float, help="friction force at break-away = mu_static N (rel 1e-6)")
+    parser.add_argument("--sweep", type=int, help="number of mu0 values; checks thesis claim 2")
+    parser.add_argument("--claim3", action="store_true", help="peak friction > 1.05 x final friction")
+    parser.add_argument("--archard", type=float, help="k/H: wear volume = (k/H) int N ds (rel 1e-4)")
+    parser.add_argument("--vtk", type=int, help="expected number of VTK frames")
+    parser.add_argument("--png", action="store_true")
+    args = parser.parse_args()
+    c = {name: i for i, name in enumerate(COLUMNS)}
+
+    problems = []
+    rows = read(os.path.join(args.dir, "journal_bearing.csv"), COLUMNS)
+    t = [r[0] for r in rows]
+    if len(rows) < 100:
+        problems.append(f"only {len(rows)} rows")
+    if t[0] != 0.0 or not close(t[-1], args.t_end, 1e-12):
+        problems.append(f"time runs {t[0]}..{t[-1]}, expected 0..{args.t_end}")
+    if any(b < a for a, b in zip(t, t[1:])):
+        problems.append("time decreases")
+    if not all(math.isfinite(x) for r in rows for x in r):
+        problems.append("non-finite values")
+    for r in rows:
+        if r[c["state_slip"]] == 0 and (r[c["journal_speed_rad_s"]] != 0 or
+                                         not close(r[c["friction_torque_N_m"]], r[c["coupling_torque_N_m"]], 1e-9)):
+            problems.append(f"stick row at t={r[0]}: speed != 0 or friction torque != coupling torque")
+            break
+    for name in ("sliding_distance_m", "wear_volume_m3"):
+        values = [r[c[name]] for r in rows]
+        if any(b < a - 1e-18 for a, b in zip(values, values[1:])):
+            problems.append(f"{name} decreases")
+    if any(r[c["peak_pressure_Pa"]] < r[c["mean_pressure_Pa"]] * (1 - 1e-9) for r in rows):
+        problems.append("peak pressure below mean pressure")
+    if any(r[c["normal_force_N"]] < 0 for r in rows):
+        problems.append("negative normal force")
+    breakaway = [i for i in range(1, len(rows)) if rows[i - 1][c["state_slip"]] == 0 and rows[i][c["state_slip"]] == 1]
+    if args.mu_static is not None:
+        if not breakaway:
+            problems.append("no break-away")
+        else:
+            before = rows[breakaway[0] - 1]
+            expected = args.mu_static * before[c["normal_force_N"]]
+            if not close(before[c["friction_force_N"]], expected, 1e-6):
+                problems.append(f"friction at break-away {before[c['friction_force_N']]} != mu_s N = {expected}")
+    if args.claim3:
+        peak = max(abs(r[c["friction_force_N"]]) for r in rows)
+        final = abs(rows[-1][c["friction_force_N"]])
+        if not peak > 1.05 * final:
+            problems.append(f"claim 3: peak friction {peak} not > 1.05 x final {final}")
+    if args.archard is not None:
+        integral = sum(0.5 * (a[c["normal_force_N"]] + b[c["normal_force_N"]]) *
+                       (b[c["sliding_distance_m"]] - a[c["sliding_distance_m"]]) for a, b in zip(rows, rows[1:]))
+        if not close(rows[-1][c["wear_volume_m3"]], args.archard * integral, 1e-4):
+            problems.append(f"wear volume {rows[-1][c['wear_volume_m3']]} != (k/H) int N ds = {args.archard * integral}")
+        half = [r[c["contact_half_angle_rad"]] for r in rows]
+        if not half[-1] > 1.5 * half[0]:
+            problems.append(f"contact arc did not widen: {half[0]} -> {half[-1]}")
+        if not rows[-1][c["peak_pressure_Pa"]] < 0.7 * rows[0][c["peak_pressure_Pa"]]:
+            problems.append("peak pressure did not fall with wear")
+    if args.sweep:
+        table = sorted(read(os.path.join(args.dir, "journal_bearing_sweep_summary.csv"), SWEEP))
+        if len(table) != args.sweep:
+            problems.append(f"{len(table)} sweep rows, expected {args.sweep}")
+        # Claim 2: higher mu0 -> higher peak friction, later break-away, later (or never) steady state.
+        for lower, higher in zip(table, table[1:]):
+            for column, name in ((1, "peak friction force"), (3, "break-away")):
+                if not higher[column] > lower[column]:
+                    problems.append(f"claim 2: {name} not increasing with mu0 ({lower[0]} -> {higher[0]})")
+            low_steady = lower[4] if math.isfinite(lower[4]) else math.inf
+            high_steady = higher[4] if math.isfinite(higher[4]) else math.inf
+            if not (high_steady > low_steady or (math.isinf(high_steady) and math.isinf(low_steady))):
+                problems.append(f"claim 2: steady time not increasing with mu0 ({lower[0]} -> {higher[0]})")
+        if not math.isfinite(table[0][4]):
+            problems.append("the lowest mu0 never reaches steady state")
+    if args.vtk is not None:
+        vtk = os.path.join(args.dir, "vtk")
+        frames = [n for n in os.listdir(vtk) if n.startswith("bore_") and n.endswith(".vts")]
+        if len(frames) != args.vtk or not os.path.exists(os.path.join(vtk, "bore.pvd")):
+            problems.append(f"{len(frames)} VTK frames (+ pvd?), expected {args.vtk}")
+        else:
+            with open(os.path.join(vtk, sorted(frames)[-1])) as f:
+                text = f.read()
+            for field in ("pressure", "wear_depth"):
+                if f'Name="{field}"' not in text:
+                    problems.append(f"VTK frame lacks field {field}")
+    if args.png:
+        names = ["journal_bearing.png"] + (["journal_bearing_mu0.png"] if args.sweep else [])
+        for name in names:
+            with open(os.path.join(args.dir, name), "rb") as f:
+                if f.read(8) != b"\x89PNG\r\n\x1a\n":
+                    problems.append(f"{name} is not a PNG")
+    leftovers = [n for n in os.listdir(args.dir) if n.startswith(".")]
+    if leftovers:
+        problems.append(f"temporary files left: {leftovers}")
+    for p in problems:
+        print("check_journal_bearing_csv:", p, file=sys.stderr)
+    print(f"checked {len(rows)} rows, {len(breakaway)} break-away(s), final friction {rows[-1][c['friction_force_N']]} N")
+    sys.exit(1 if problems else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,195 @@
+// Dry journal bearing (continuum/journal_bearing.h): closed forms, the thesis's claims 2 and 3,
+// Archard wear bookkeeping and the wear-step stability bound.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "continuum/journal_bearing.h"
+
+using namespace runin::continuum;
+
+namespace {
+
+JournalBearingParameters thesis_bearing(double coupling_stiffness = 0.5, double damping_ratio = 0.3) {
+  JournalBearingParameters p;
+  p.bore = BoreGeometry{12.5e-3, 25e-6, 25e-3, 200e9, 0.29, 0.3, 128};
+  p.load = 9.81;
+  p.inertia = 6e-5;
+  p.coupling_stiffness = coupling_stiffness;
+  p.coupling_damping = 2.0 * damping_ratio * std::sqrt(coupling_stiffness * p.inertia);
+  p.wear_coefficient = 1e-3;
+  p.hardness = 1.2e9;
+  return p;
+}
+
+struct Result {
+  std::vector<JournalBearingSample> samples;
+  JournalBearingReport report;
+  JournalBearingSummary summary;
+};
+
+Result run(const JournalBearingParameters &p, const SlidingFriction &f, double t_end = 2.0, double dt = 1e-3) {
+  JournalBearingSystem system(p, f);
+  JournalBearingRun r;
+  r.t_end = t_end;
+  r.output_interval = dt;
+  Result out;
+  out.report = simulate(system, r, [&](const JournalBearingSample &s) { out.samples.push_back(s); });
+  out.summary = summarise(out.samples);
+  return out;
+}
+
+// Local extrema of the pressure between the first and last loaded panel: 1 for Hertz, a few for
+// a worn (edge-loaded) profile, about one per panel for a panel-to-panel (checkerboard) oscillation.
+int extrema(const std::vector<double> &p) {
+  int first = -1, last = -1;
+  for (int i = 0; i < static_cast<int>(p.size()); ++i)
+    if (p[i] > 0.0) {
+      if (first < 0) first = i;
+      last = i;
+    }
+  int count = 0;
+  double previous = 0.0;
+  for (int i = first; i >= 0 && i < last; ++i) {
+    const double d = p[i + 1] - p[i];
+    if (d == 0.0) continue;
+    if (previous != 0.0 && (d > 0.0) != (previous > 0.0)) ++count;
+    previous = d;
+  }
+  return count;
+}
+
+}  // namespace
+
+TEST(JournalBearing, BreakAwayWhenTheCouplingTorqueReachesTheStaticLimit) {
+  // Stick: T_c = k w_d t + c w_d, so t_b = (mu_s N R - c w_d) / (k w_d), N the pressure integral.
+  const auto p = thesis_bearing();
+  const auto r = run(p, SlidingFriction::static_kinetic(0.95, 0.76), 1.0);
+  ASSERT_TRUE(r.report.ok()) << r.report.message;
+  const double n = r.samples.front().normal_force, wd = p.ramp_angle / p.ramp_time;
+  const double expected = (0.95 * n * p.bore.shaft_radius - p.coupling_damping * wd) / (p.coupling_stiffness * wd);
+  ASSERT_FALSE(r.report.breakaway_times.empty());
+  EXPECT_NEAR(r.report.breakaway_times.front(), expected, 1e-6 * expected);
+  const auto at_breakaway = std::find_if(r.samples.begin(), r.samples.end(), [](const auto &s) {
+    return s.state == ContactState::Slip;
+  });
+  ASSERT_NE(at_breakaway, r.samples.begin());
+  EXPECT_NEAR((at_breakaway - 1)->friction_force, 0.95 * n, 1e-6 * n);  // the stick sample at the event
+}
+
+TEST(JournalBearing, SteadySlidingBalancesTheCouplingAndFollowsTheLaw) {
+  // After the ramp the drive runs at 2 rad/s: in steady sliding T_c = T_f = (mu0 + alpha R w) N R.
+  auto p = thesis_bearing(0.5, 0.7);
+  p.run_speed = 2.0;
+  const double mu0 = 0.3, alpha = 2.0;
+  const auto r = run(p, SlidingFriction::constant(mu0, alpha), 6.0, 1e-2);
+  ASSERT_TRUE(r.report.ok()) << r.report.message;
+  const auto &last = r.samples.back();
+  EXPECT_NEAR(last.journal_speed, 2.0, 1e-4);
+  const double law = (mu0 + alpha * p.bore.shaft_radius * last.journal_speed) * last.normal_force;
+  EXPECT_NEAR(last.friction_force, law, 1e-12 * law);
+  EXPECT_NEAR(last.coupling_torque / p.bore.shaft_radius, last.friction_force, 1e-4 * law);
+  EXPECT_GT(r.report.wear_updates, 0);
+}
+
+TEST(JournalBearing, HigherStaticCoefficientGivesHigherPeakAndLongerTimeToEquilibrium) {
+  // Thesis claim 2, with mu_kinetic = 0.9 mu_static: every case settles within 2 s.
+  double previous_peak = HUGE_VAL, previous_steady = HUGE_VAL;
+  for (double mu0 : {0.95, 0.55, 0.15}) {
+    const auto r = run(thesis_bearing(), SlidingFriction::static_kinetic(mu0, 0.9 * mu0));
+    ASSERT_TRUE(r.report.ok()) << r.report.message;
+    ASSERT_GT(r.summary.steady_time, 0.0) << "mu0 = " << mu0;
+    EXPECT_LT(r.summary.peak_friction_force, previous_peak) << "mu0 = " << mu0;
+    EXPECT_LT(r.summary.steady_time, previous_steady) << "mu0 = " << mu0;
+    previous_peak = r.summary.peak_friction_force;
+    previous_steady = r.summary.steady_time;
+  }
+}
+
+TEST(JournalBearing, FrictionAtTheStartExceedsTheSteadyValue) {
+  // Thesis claim 3: the break-away peak (mu_static N) is above the steady sliding force.
+  for (double mu0 : {0.95, 0.55, 0.15}) {
+    const auto r = run(thesis_bearing(), SlidingFriction::static_kinetic(mu0, 0.9 * mu0));
+    ASSERT_TRUE(r.report.ok());
+    EXPECT_GT(r.summary.peak_friction_force, 1.05 * r.summary.steady_friction_force) << "mu0 = " << mu0;
+    EXPECT_LT(r.summary.peak_time, r.summary.steady_time);
+  }
+}
+
+TEST(JournalBearing, HighStaticCoefficientGivesStickSlipAction) {
+  // Thesis ch. 5: "large action" at mu0 = 0.95, steady at 0.15 (mu_kinetic = 0.8 mu_static).
+  const auto high = run(thesis_bearing(), SlidingFriction::static_kinetic(0.95, 0.76));
+  const auto low = run(thesis_bearing(), SlidingFriction::static_kinetic(0.15, 0.12));
+  EXPECT_GE(high.report.restick_times.size(), 3u);
+  EXPECT_EQ(low.report.restick_times.size(), 0u);
+}
+
+TEST(JournalBearing, WearWidensTheArcLowersThePressureAndFollowsArchard) {
+  auto p = thesis_bearing(0.5, 0.7);
+  p.run_speed = 2.0;
+  const auto r = run(p, SlidingFriction::constant(0.5), 10.0, 1e-2);
+  ASSERT_TRUE(r.report.ok()) << r.report.message;
+  const auto &first = r.samples.front(), &last = r.samples.back();
+  EXPECT_GT(last.contact_half_angle, 2.0 * first.contact_half_angle);
+  EXPECT_LT(last.peak_pressure, 0.5 * first.peak_pressure);
+  for (std::size_t i = 1; i < r.samples.size(); ++i) {
+    EXPECT_LE(r.samples[i].peak_pressure, r.samples[i - 1].peak_pressure * (1 + 1e-9));
+    EXPECT_GE(r.samples[i].wear_volume, r.samples[i - 1].wear_volume);
+  }
+  // V = (k/H) int N ds; N rises by < 0.2 % so the trapezoid rule on the samples is ample.
+  double integral = 0.0;
+  for (std::size_t i = 1; i < r.samples.size(); ++i)
+    integral += 0.5 * (r.samples[i].normal_force + r.samples[i - 1].normal_force) *
+                (r.samples[i].distance - r.samples[i - 1].distance);
+  EXPECT_NEAR(last.wear_volume, p.wear_coefficient / p.hardness * integral, 1e-5 * last.wear_volume);
+}
+
+TEST(JournalBearing, FixedWearStepAboveTheBoundOscillatesAdaptiveDoesNot) {
+  // Explicit Archard update w += (k/H) p(w) ds: stable for ds < 2H/(k k_c) (ArchardWear::stable_slip_step),
+  // k_c from the influence matrix. 256 panels on +-0.08 rad: about 45 loaded panels.
+  auto p = thesis_bearing();
+  p.bore.arc_half_angle = 0.08;
+  p.bore.nodes = 256;
+  const JournalBearingSystem system(p, SlidingFriction::constant(0.5));
+  const double stable = system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
+  const auto adaptive = wear_in(system, 0.5 * stable, 120);  // the default adaptive fraction
+  ASSERT_EQ(adaptive.pressure.size(), 120u);
+  for (const auto &pressure : adaptive.pressure) ASSERT_LE(extrema(pressure), 7);
+  for (double fraction : {1.1, 1.5, 3.0}) {
+    const auto history = wear_in(system, fraction * stable, 60);
+    ASSERT_FALSE(history.pressure.empty());
+    EXPECT_GT(extrema(history.pressure.back()), 20) << "fraction " << fraction;
+  }
+}
+
+TEST(JournalBearingStress, ExtremeInputsFinishWithoutNanOrStopWithAClearError) {
+  struct Case {
+    double mu0, load_factor, wear, clearance, arc;
+  };
+  const std::vector<Case> cases = {{0.0, 1, 1e-3, 25e-6, 0.3},   {2.0, 1, 1e-3, 25e-6, 0.3},
+                                   {0.95, 1000, 1e-3, 25e-6, 1.2}, {0.95, 1, 1e-8, 25e-6, 0.3},
+                                   {0.95, 1, 1e-1, 25e-6, 0.3},   {0.95, 1, 1e-3, 1e-9, 1.2},
+                                   {0.95, 1000, 1e-3, 25e-6, 0.3}};
+  for (const auto &c : cases) {
+    auto p = thesis_bearing();
+    p.load *= c.load_factor;
+    p.wear_coefficient = c.wear;
+    p.bore.clearance = c.clearance;
+    p.bore.arc_half_angle = c.arc;
+    const auto r = run(p, SlidingFriction::static_kinetic(c.mu0, 0.8 * c.mu0), 2.0, 1e-2);
+    const std::string label = "mu0 " + std::to_string(c.mu0) + " load x" + std::to_string(c.load_factor) + " k " +
+                              std::to_string(c.wear) + " c " + std::to_string(c.clearance);
+    if (!r.report.ok()) {
+      std::printf("stress: %s stopped: %s\n", label.c_str(), r.report.message.c_str());
+      EXPECT_FALSE(r.report.message.empty()) << label;
+      continue;
+    }
+    for (const auto &s : r.samples)
+      ASSERT_TRUE(std::isfinite(s.friction_force) && std::isfinite(s.wear_volume) && std::isfinite(s.journal_speed) &&
+                  std::isfinite(s.peak_pressure))
+          << label << " t = " << s.t;
+  }
+}

@@ -1,0 +1,268 @@
+// Piston ring in a cylinder (thesis ch. 6): slider-crank kinematics, stick/slip events at the
+// dead centres, Archard volume bookkeeping of ring face + liner, wear-step stability, claims 2 and 3.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "continuum/piston_ring.h"
+#include "continuum/ring_liner_wear.h"
+
+using namespace runin::continuum;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// inputs/piston_ring.toml values: r = 45 mm, l = 150 mm, bore 100 mm, ring 10 x 10 mm.
+PistonRingParameters thesis_parameters() {
+  PistonRingParameters p;
+  p.crank = {0.045, 0.150};
+  p.motion = PistonMotion::Ramp;
+  p.start_angle = 75.0 * kPi / 180.0;
+  p.ramp_time = 2.0;
+  p.bore = 0.1;
+  p.ring_width = 0.01;
+  p.ring_mass = 0.2036;
+  p.land_stiffness = 1e7;
+  p.land_damping = 2.0 * 0.5 * std::sqrt(1e7 * 0.2036);
+  p.elastic_pressure = 0.25e6;
+  return p;
+}
+
+std::vector<PistonRingSample> run(const PistonRingSystem &system, double t_end, double dt, SolveReport *report = nullptr,
+                                  double rtol = 1e-8) {
+  PistonRingRun r;
+  r.t_end = t_end;
+  r.output_interval = dt;
+  r.integrator.rtol = rtol;
+  r.integrator.atol = 1e-12;
+  std::vector<PistonRingSample> samples;
+  const SolveReport rep = simulate(system, r, [&](const PistonRingSample &s) { samples.push_back(s); });
+  EXPECT_TRUE(rep.ok()) << rep.message;
+  if (report) *report = rep;
+  return samples;
+}
+
+RingLinerWearSettings wear_settings(double crown) {
+  RingLinerWearSettings s;
+  s.bore = 0.1;
+  s.ring_width = 0.01;
+  s.crown_height = crown;
+  s.ring_cells = 64;
+  s.liner_begin = 0.0;
+  s.liner_end = 0.1;
+  s.liner_cells = 512;
+  s.foundation_modulus = 7.1e12;
+  return s;
+}
+}  // namespace
+
+TEST(PistonRingKinematics, PositionClosesTheLinkageToRoundOff) {
+  const SliderCrank crank{0.045, 0.150};
+  for (int k = -360; k <= 360; k += 5) {
+    const double theta = k * kPi / 180.0;
+    const double x = crank.position(theta);
+    // Crank pin at (r cos, r sin), piston pin at (x, 0): their distance is the link length.
+    const double dx = x - crank.crank_radius * std::cos(theta), dy = crank.crank_radius * std::sin(theta);
+    EXPECT_NEAR(std::hypot(dx, dy), crank.link_length, 8 * kEps * crank.link_length) << k;
+  }
+  EXPECT_NEAR(crank.position(0.0), crank.top_dead_centre(), 4 * kEps * 0.2);
+  EXPECT_NEAR(crank.position(kPi), crank.bottom_dead_centre(), 4 * kEps * 0.2);
+}
+
+TEST(PistonRingKinematics, VelocityIsTheDerivativeOfTheConstraintToRoundOff) {
+  const SliderCrank crank{0.045, 0.150};
+  const double omega = 2.0 * kPi * 10.0, r = crank.crank_radius;
+  for (int k = -360; k <= 360; k += 5) {
+    const double theta = k * kPi / 180.0;
+    const double x = crank.position(theta);
+    // d/dt [(x - r cos)^2 + (r sin)^2] = 0  =>  x' = -r w sin - r^2 w sin cos / (x - r cos).
+    const double expected = -r * omega * std::sin(theta) -
+                            r * r * omega * std::sin(theta) * std::cos(theta) / (x - r * std::cos(theta));
+    EXPECT_NEAR(crank.velocity(theta, omega), expected, 16 * kEps * r * omega) << k;
+  }
+  EXPECT_NEAR(crank.velocity(0.0, omega), 0.0, 4 * kEps * r * omega);
+  EXPECT_NEAR(crank.velocity(kPi, omega), 0.0, 4 * kEps * r * omega);
+  // Inverse on [0, pi].
+  for (int k = 1; k < 180; k += 7) {
+    const double theta = k * kPi / 180.0;
+    EXPECT_NEAR(crank.angle_at(crank.position(theta)), theta, 1e-9) << k;
+  }
+}
+
+TEST(PistonRingKinematics, SystemFollowsCrankAndRamp) {
+  auto p = thesis_parameters();
+  const PistonRingSystem ramp(p, SlidingFriction::constant(0.5));
+  const double x0 = p.crank.position(p.start_angle), x1 = p.crank.top_dead_centre();
+  EXPECT_DOUBLE_EQ(ramp.piston_position(0.0), x0);
+  EXPECT_DOUBLE_EQ(ramp.piston_position(2.0), x1);
+  EXPECT_DOUBLE_EQ(ramp.piston_velocity(1.0), (x1 - x0) / 2.0);
+  EXPECT_NEAR(ramp.crank_angle(0.0), -p.start_angle, 1e-9);
+  p.motion = PistonMotion::Crank;
+  p.crank_speed = 2.0 * kPi * 5.0;
+  const PistonRingSystem crank(p, SlidingFriction::constant(0.5));
+  const double t = 0.0123, theta = -p.start_angle + p.crank_speed * t;
+  EXPECT_DOUBLE_EQ(crank.piston_position(t), p.crank.position(theta));
+  EXPECT_DOUBLE_EQ(crank.piston_velocity(t), p.crank.velocity(theta, p.crank_speed));
+}
+
+TEST(PistonRingGas, TableInterpolatesPeriodically) {
+  GasPressureTable gas;
+  gas.crank_angle = {0.0, 1.0, 3.0};
+  gas.pressure = {10.0, 20.0, 0.0};
+  gas.cycle = 4.0;
+  gas.factor = 0.5;
+  EXPECT_DOUBLE_EQ(gas.at(0.5), 0.5 * 15.0);
+  EXPECT_DOUBLE_EQ(gas.at(3.5), 0.5 * 5.0);    // between the last point and the first one a cycle later
+  EXPECT_DOUBLE_EQ(gas.at(-0.5), 0.5 * 5.0);   // periodic
+  EXPECT_DOUBLE_EQ(gas.at(4.5), gas.at(0.5));
+}
+
+TEST(PistonRingDynamics, BreakawayTimeMatchesTheLandForceClosedForm) {
+  const auto p = thesis_parameters();
+  const PistonRingSystem system(p, SlidingFriction::static_kinetic(0.95, 0.665));
+  SolveReport report;
+  run(system, 0.05, 1e-3, &report);
+  ASSERT_FALSE(report.breakaway_times.empty());
+  // Stick: e = -v_p t, so F_s = k v_p t + c v_p reaches mu_s W at t_b.
+  const double vp = system.piston_velocity(0.0), w = system.normal_load(0.0);
+  const double t_b = (0.95 * w - p.land_damping * vp) / (p.land_stiffness * vp);
+  EXPECT_NEAR(report.breakaway_times.front(), t_b, 1e-6 * t_b);
+}
+
+TEST(PistonRingDynamics, SteadySlidingCarriesTheKineticFrictionAtPistonSpeed) {
+  const auto p = thesis_parameters();
+  const PistonRingSystem system(p, SlidingFriction::static_kinetic(0.95, 0.665, 0.5));
+  const auto samples = run(system, 1.0, 1e-3);
+  const auto &last = samples.back();
+  const double vp = system.piston_velocity(1.0);
+  EXPECT_EQ(last.state, ContactState::Slip);
+  EXPECT_NEAR(last.speed, vp, 1e-6 * vp);
+  EXPECT_NEAR(last.friction_force, (0.665 + 0.5 * vp) * system.normal_load(1.0), 1e-9 * last.friction_force);
+  EXPECT_NEAR(last.land_force, last.friction_force, 1e-5 * last.friction_force);
+}
+
+TEST(PistonRingDynamics, RingSticksAtEveryDeadCentreOfTheCrank) {
+  auto p = thesis_parameters();
+  p.motion = PistonMotion::Crank;
+  p.crank_speed = 2.0 * kPi * 5.0;  // 300 rpm
+  const PistonRingSystem system(p, SlidingFriction::static_kinetic(0.3, 0.2));
+  SolveReport report;
+  const double revolutions = 3.0, period = 0.2;
+  const auto samples = run(system, revolutions * period, 1e-4, &report);
+  // Start at 75 deg before TDC: dead centres at TDC + half periods; each one gives a re-stick.
+  const double t_tdc = p.start_angle / p.crank_speed;
+  std::vector<double> dead_centres;
+  for (double t = t_tdc; t < revolutions * period; t += 0.5 * period) dead_centres.push_back(t);
+  ASSERT_EQ(report.restick_times.size(), dead_centres.size());
+  for (std::size_t i = 0; i < dead_centres.size(); ++i) {
+    // The land is stiff (ring natural frequency 1.1 kHz vs 5 Hz crank): the ring follows the
+    // piston quasi-statically and stops with it.
+    EXPECT_NEAR(report.restick_times[i], dead_centres[i], 1e-4 * period);
+  }
+  for (std::size_t i = 1; i < samples.size(); ++i)
+    if (samples[i].state == ContactState::Slip && samples[i - 1].state == ContactState::Slip)
+      EXPECT_GE(samples[i].speed * samples[i - 1].speed, -1e-12) << "reversal inside a slip phase at t = " << samples[i].t;
+}
+
+TEST(RingLinerWear, VolumesEqualArchardIntegralPerSideToRoundOff) {
+  auto settings = wear_settings(2e-6);
+  settings.ring_share = runin::tribo::wear_share(2.0e9, 2.5e9);
+  const runin::tribo::ArchardWear archard(0.05, 2.0e9);  // stable step 11 mm: several updates per pass
+  RingLinerWear wear(settings, archard);
+  // Reciprocate over 30 mm with a load that varies along each pass.
+  double reference = 0.0, x = 0.03;
+  for (int pass = 0; pass < 40; ++pass) {
+    const double to = pass % 2 == 0 ? 0.06 : 0.03;
+    const double w0 = 800.0 + 10.0 * pass, w1 = 1500.0 - 5.0 * pass;
+    wear.slide(x, to, w0, w1);
+    reference += 0.05 / 2.0e9 * 0.5 * (w0 + w1) * std::abs(to - x);  // exact: load linear in x
+    x = to;
+  }
+  EXPECT_GE(wear.updates(), 3 * 40);
+  const double total = wear.archard_volume();
+  EXPECT_NEAR(total, reference, 1e-12 * reference);
+  EXPECT_NEAR(wear.ring_volume(), settings.ring_share * total, 1e-12 * total);
+  EXPECT_NEAR(wear.liner_volume(), (1.0 - settings.ring_share) * total, 1e-12 * total);
+  EXPECT_NEAR(wear.ring_volume() + wear.liner_volume(), total, 1e-12 * total);
+}
+
+TEST(RingLinerWear, PressureBalancesTheLoadAndMatchesTheFlatPunch) {
+  const RingLinerWear flat(wear_settings(0.0), runin::tribo::ArchardWear(1e-4, 2e9));
+  const double load = 785.0;
+  const auto c = flat.pressure(0.05, load);
+  const double uniform = load / (kPi * 0.1 * 0.01);
+  EXPECT_NEAR(c.peak, uniform, 1e-12 * uniform);
+  EXPECT_NEAR(c.mean, uniform, 1e-12 * uniform);
+  EXPECT_NEAR(c.width, 0.01, 1e-12);
+  // Crowned: parabolic gap on a Winkler layer gives p = k_c (d - crown (2z/w)^2) on |z| < a,
+  // with load balance 4/3 k_c d a = q and d = crown (2a/w)^2  =>  a^3 = 3 q w^2 / (16 k_c crown).
+  const double crown = 5e-6, kc = 7.1e12, q = load / (kPi * 0.1);
+  const RingLinerWear crowned(wear_settings(crown), runin::tribo::ArchardWear(1e-4, 2e9));
+  const auto cc = crowned.pressure(0.05, load);
+  const double a = std::cbrt(3.0 * q * 0.01 * 0.01 / (16.0 * kc * crown));
+  const double peak = kc * crown * std::pow(2.0 * a / 0.01, 2);
+  EXPECT_NEAR(cc.peak, peak, 0.02 * peak);  // 64 cells across the width
+  EXPECT_NEAR(cc.width, 2.0 * a, 2.0 * 0.01 / 64);
+}
+
+TEST(RingLinerWear, TooLargeFixedStepOscillatesAdaptiveStepDoesNot) {
+  // Severe wear (k = 0.1) keeps the stable step (5.6 mm) inside the liner grid.
+  const runin::tribo::ArchardWear archard(0.1, 2e9);
+  auto settings = wear_settings(2e-6);
+  settings.ring_share = 1.0;  // the ring face alone: the liner stays flat
+  const double bound = archard.stable_slip_step(settings.foundation_modulus);
+  const double load = 785.0, uniform = load / (kPi * 0.1 * 0.01);
+  auto peaks = [&](double fixed_step, int passes) {
+    auto s = settings;
+    s.fixed_step = fixed_step;
+    RingLinerWear wear(s, archard);
+    std::vector<double> peak;
+    double x = 0.03;
+    for (int pass = 0; pass < passes; ++pass) {
+      const double to = pass % 2 == 0 ? 0.03 + 3.0 * bound : 0.03;
+      wear.slide(x, to, load, load);
+      x = to;
+      peak.push_back(wear.pressure(x, load).peak);
+    }
+    return peak;
+  };
+  const auto adaptive = peaks(0.0, 40);
+  for (std::size_t i = 1; i < adaptive.size(); ++i) EXPECT_LE(adaptive[i], adaptive[i - 1] * (1 + 1e-12)) << i;
+  EXPECT_NEAR(adaptive.back(), uniform, 1e-3 * uniform);  // crown worn flat: uniform pressure
+
+  const auto fixed = peaks(3.0 * bound, 40);  // amplification 1 - 6 = -5 per step
+  int rises = 0;
+  for (std::size_t i = 1; i < fixed.size(); ++i) rises += fixed[i] > fixed[i - 1] * (1 + 1e-9);
+  EXPECT_GE(rises, 5);
+  EXPECT_GT(*std::max_element(fixed.end() - 10, fixed.end()), 1.5 * uniform);
+}
+
+namespace {
+struct ClaimRun {
+  double peak, steady_time, steady_force, start_force;
+};
+ClaimRun thesis_run(double mu0) {
+  const PistonRingSystem system(thesis_parameters(), SlidingFriction::static_kinetic(mu0, 0.7 * mu0));
+  const auto samples = run(system, 2.0, 1e-4);
+  const auto s = summarise(system, samples);
+  double start = 0.0;  // largest friction in the first 5 % of the run
+  for (const auto &x : samples)
+    if (x.t <= 0.1) start = std::max(start, std::abs(x.friction_force));
+  EXPECT_GT(s.steady_time, 0.0) << mu0;
+  return {s.peak_friction_force, s.steady_time, s.steady_friction_force, start};
+}
+}  // namespace
+
+TEST(PistonRingClaims, HigherStaticCoefficientGivesHigherPeakAndLaterEquilibrium) {
+  const auto high = thesis_run(0.95), mid = thesis_run(0.55), low = thesis_run(0.15);
+  EXPECT_GT(high.peak, mid.peak);
+  EXPECT_GT(mid.peak, low.peak);
+  EXPECT_GT(high.steady_time, mid.steady_time);
+  EXPECT_GT(mid.steady_time, low.steady_time);
+  // Claim 3: the start-up friction exceeds the steady value.
+  for (const auto &r : {high, mid, low}) EXPECT_GT(r.start_force, 1.2 * r.steady_force);
+}
