@@ -1,0 +1,187 @@
+// Work-precision of the journal-bearing run-in (thesis ch. 5, inputs/journal_bearing.toml physics):
+// CVODE BDF / Adams at several tolerances and a naive fixed-step explicit Euler stepper (stick/slip
+// switched at step ends, no event location) against a CVODE BDF rtol = 1e-12 reference.
+// Error: max over the 1 ms output grid of |s(t) - s_ref(t)| / s_ref(2 s), s the sliding distance.
+// Also times the long wear run-in: 1000 wear updates on a 512-node arc.
+//   build-journal/bench/wp_journal_bearing [OUT.csv]   (default wp_journal_bearing.csv; PNG beside it)
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "continuum/journal_bearing.h"
+
+using namespace runin::continuum;
+
+namespace {
+
+JournalBearingParameters thesis(int nodes = 256) {
+  JournalBearingParameters p;
+  p.bore = BoreGeometry{12.5e-3, 25e-6, 25e-3, 200e9, 0.29, 0.3, nodes};
+  p.load = 9.81;
+  p.inertia = 6e-5;
+  p.coupling_stiffness = 0.5;
+  p.coupling_damping = 2.0 * 0.3 * std::sqrt(0.5 * 6e-5);
+  p.wear_coefficient = 1e-3;
+  p.hardness = 1.2e9;
+  return p;
+}
+
+constexpr double kTEnd = 2.0, kDt = 1e-3;
+
+// Median over `repeats` of (wall, CPU) seconds; CPU time of this thread, which the other jobs on
+// a shared machine do not inflate.
+struct Timing {
+  double wall = 0.0, cpu = 0.0;
+};
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+Timing median_seconds(const std::function<void()> &work, int repeats) {
+  std::vector<double> wall, cpu;
+  for (int k = 0; k < repeats; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = thread_cpu_seconds();
+    work();
+    cpu.push_back(thread_cpu_seconds() - cpu_start);
+    wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(wall.begin(), wall.end());
+  std::sort(cpu.begin(), cpu.end());
+  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+}
+
+// Sliding distance on the output grid (the last sample at each grid time).
+std::vector<double> cvode_distance(const JournalBearingParameters &p, const SlidingFriction &f,
+                                   CvodeIntegrator::Method method, double rtol) {
+  JournalBearingSystem system(p, f);
+  JournalBearingRun run;
+  run.t_end = kTEnd;
+  run.output_interval = kDt;
+  run.integrator.method = method;
+  run.integrator.rtol = rtol;
+  run.integrator.atol = 1e-2 * rtol;  // s ~ 1e-2 m, w ~ 1 rad/s
+  run.integrator.max_steps = 1000000;
+  std::vector<double> grid(static_cast<std::size_t>(std::llround(kTEnd / kDt)) + 1, 0.0);
+  simulate(system, run, [&](const JournalBearingSample &s) {
+    const double k = s.t / kDt;
+    if (std::abs(k - std::round(k)) < 1e-9) grid[static_cast<std::size_t>(std::llround(k))] = s.distance;
+  });
+  return grid;
+}
+
+// Naive baseline: forward Euler on (theta, w, s); stick/slip decided at step ends; the same
+// frozen-pressure wear updates as the CVODE stepper (when s passes the next wear point).
+std::vector<double> euler_distance(const JournalBearingParameters &p, const SlidingFriction &f, double h) {
+  JournalBearingSystem system(p, f);
+  const auto &contact = system.contact();
+  std::vector<double> wear(contact.nodes(), 0.0);
+  ConformalSolution sol = contact.solve(system.load_per_length());
+  double normal = sol.normal_force_per_length * p.bore.axial_width;
+  const double wear_step = 0.5 * system.wear_law().stable_slip_step(contact.contact_stiffness_per_area());
+  double s_update = 0.0, next_wear = wear_step;
+  const double r = p.bore.shaft_radius;
+  double theta = 0.0, w = 0.0, s = 0.0, t = 0.0;
+  bool slip = false;
+  const long steps = std::lround(kTEnd / h), per_output = std::lround(kDt / h);
+  std::vector<double> grid;
+  grid.push_back(0.0);
+  for (long n = 1; n <= steps; ++n) {
+    const double tc = p.coupling_stiffness * (p.drive_angle(t) - theta) + p.coupling_damping * (p.drive_speed(t) - w);
+    if (!slip) {
+      if (std::abs(tc) > f.static_coefficient() * normal * r) slip = true;
+    }
+    if (slip) {
+      const int dir = w > 0.0 ? 1 : (w < 0.0 ? -1 : (tc > 0.0 ? 1 : -1));
+      const double tf = dir * f.kinetic(s, r * std::abs(w)) * normal * r;
+      const double w_new = w + h * (tc - tf) / p.inertia;
+      theta += h * w;
+      s += h * r * std::abs(w);
+      if (w != 0.0 && w_new * w <= 0.0 && std::abs(tc) <= f.static_coefficient() * normal * r) {
+        w = 0.0;  // crossed zero: re-stick
+        slip = false;
+      } else {
+        w = w_new;
+      }
+    }
+    t = n * h;
+    if (s >= next_wear) {
+      const double ds = s - s_update;
+      for (int i = 0; i < contact.nodes(); ++i) wear[i] += system.wear_law().depth_rate(sol.pressure[i]) * ds;
+      const auto previous = sol.pressure;
+      sol = contact.solve(system.load_per_length(), wear, &previous);
+      normal = sol.normal_force_per_length * p.bore.axial_width;
+      s_update = s;
+      next_wear = s + wear_step;
+    }
+    if (n % per_output == 0) grid.push_back(s);
+  }
+  return grid;
+}
+
+double error(const std::vector<double> &a, const std::vector<double> &ref) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < ref.size() && i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - ref[i]));
+  return worst / ref.back();
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  const std::string out_path = argc > 1 ? argv[1] : "wp_journal_bearing.csv";
+  std::ofstream out(out_path + ".tmp");
+  out << "case,mu0,method,tolerance_or_step,error,wall_seconds,cpu_seconds\n";
+  const auto p = thesis();
+  for (double mu0 : {0.95, 0.55, 0.15}) {
+    const auto f = SlidingFriction::static_kinetic(mu0, 0.8 * mu0);
+    const auto ref = cvode_distance(p, f, CvodeIntegrator::Method::Bdf, 1e-12);
+    for (auto [method, name] : {std::pair{CvodeIntegrator::Method::Bdf, "cvode_bdf"},
+                                std::pair{CvodeIntegrator::Method::Adams, "cvode_adams"}})
+      for (double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-10}) {
+        std::vector<double> d;
+        const Timing sec = median_seconds([&] { d = cvode_distance(p, f, method, rtol); }, 5);
+        const double e = error(d, ref);
+        out << "thesis_2s," << mu0 << "," << name << "," << rtol << "," << e << "," << sec.wall << "," << sec.cpu << "\n";
+        std::printf("mu0 %.2f %-11s rtol %-6g error %.3e  wall %6.2f ms  cpu %6.2f ms\n", mu0, name, rtol, e,
+                    1e3 * sec.wall, 1e3 * sec.cpu);
+      }
+    for (double h : {1e-4, 1e-5, 1e-6}) {
+      std::vector<double> d;
+      const Timing sec = median_seconds([&] { d = euler_distance(p, f, h); }, 3);
+      const double e = error(d, ref);
+      out << "thesis_2s," << mu0 << ",euler_fixed," << h << "," << e << "," << sec.wall << "," << sec.cpu << "\n";
+      std::printf("mu0 %.2f %-11s h    %-6g error %.3e  wall %6.2f ms  cpu %6.2f ms\n", mu0, "euler_fixed", h, e,
+                  1e3 * sec.wall, 1e3 * sec.cpu);
+    }
+  }
+  // Long wear run-in: 1000 wear updates (adaptive step 0.5 * 2H/(k k_c)) on 512 nodes.
+  auto wide = thesis(512);
+  wide.bore.arc_half_angle = 0.5;
+  const JournalBearingSystem system(wide, SlidingFriction::static_kinetic(0.95, 0.76));
+  const double step = 0.5 * system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
+  WearHistory history;
+  const Timing wear = median_seconds([&] { history = wear_in(system, step, 1000); }, 3);
+  const Timing setup = median_seconds([&] { ConformalContact c(wide.bore); (void)c; }, 3);
+  out << "wear_1000_updates_512_nodes,,wear_in," << step << ",," << wear.wall << "," << wear.cpu << "\n";
+  out << "contact_setup_512_nodes,,ConformalContact,,," << setup.wall << "," << setup.cpu << "\n";
+  std::printf("wear run-in: 1000 updates on 512 nodes (ds = %.3g m): wall %.3f s, cpu %.3f s (+ influence matrix "
+              "wall %.3f s, cpu %.3f s); status %s\n",
+              step, wear.wall, wear.cpu, setup.wall, setup.cpu, to_string(history.status));
+  out.close();
+  std::rename((out_path + ".tmp").c_str(), out_path.c_str());
+  // PNG beside the CSV with Debian's matplotlib (tools/plot_journal_bearing.py wp).
+  const std::string png = out_path.substr(0, out_path.rfind('.')) + ".png";
+  const std::string plot = "/usr/bin/python3 " RUNIN_SOURCE_DIR "/tools/plot_journal_bearing.py wp '" + out_path +
+                           "' '" + png + "' --title 'journal bearing, 2 s thesis case: work-precision'";
+  if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "plot failed: %s\n", plot.c_str());
+  std::printf("wrote %s and %s\n", out_path.c_str(), png.c_str());
+  return 0;
+}

@@ -1,0 +1,188 @@
+// Work-precision of the pin-on-disk thesis case (2 s: torque ramp to eq. 4.11's T_app,
+// break-away at 1.866 s, slip to 2 s) and timing of the long pin-wear run.
+//   build-pod/bench/wp_pin_on_disk [OUT_DIR]   -> OUT_DIR/wp_pin_on_disk.csv, .png, wear_timing.csv
+// Error: max relative error of speed and sliding distance over the 10 ms output grid after
+// break-away (1.87 s .. 2 s, the first point 3.6 ms = 2.4 inertial time constants into the
+// slip transient) against the closed form of the linear ODE m dV/dt = T(t)/r - mu0 W - alpha W V
+// (ramp T linear in t).
+// Wall time: median of repeated runs on one core (std::chrono::steady_clock).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "continuum/axisymmetric_contact.h"
+#include "continuum/pin_on_disk.h"
+
+using namespace runin::continuum;
+
+namespace {
+constexpr double kMass = 0.001, kRadius = 0.102, kLoad = 0.981, kMu0 = 0.95, kAlpha = 0.68, kRamp = 2.0;
+constexpr double kEnd = 2.0;
+
+PinOnDiskParameters thesis() {
+  PinOnDiskParameters p;
+  p.mass = kMass;
+  p.track_radius = kRadius;
+  p.normal_load = kLoad;
+  p.ramp_time = kRamp;
+  p.applied_torque = thesis_torque_for_speed(p, kMu0, kAlpha, 0.0, 0.1, 2.0);
+  return p;
+}
+
+struct Exact {
+  double speed, distance;
+};
+// m dV/dt = k t - mu0 W - c m V (c = alpha W / m, k = T_app / (r t_ramp)), V(t_b) = 0.
+Exact exact(const PinOnDiskParameters &p, double t) {
+  const double c = kAlpha * kLoad / kMass, k = p.applied_torque / (kRadius * kRamp * kMass);
+  const double tb = kMu0 * kLoad * kRadius * kRamp / p.applied_torque;
+  const double b = k / c, a = (-kMu0 * kLoad / kMass - b) / c;
+  const double cc = -(a + b * tb);  // V = a + b t + cc exp(-c (t - tb))
+  const double speed = a + b * t + cc * std::exp(-c * (t - tb));
+  const double distance = a * (t - tb) + 0.5 * b * (t * t - tb * tb) + cc * (1.0 - std::exp(-c * (t - tb))) / c;
+  return {speed, distance};
+}
+
+double median_seconds(const std::function<void()> &work, int repeats) {
+  std::vector<double> times;
+  for (int i = 0; i < repeats; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+constexpr double kGrid = 0.01;
+double breakaway(const PinOnDiskParameters &p) { return kMu0 * kLoad * kRadius * kRamp / p.applied_torque; }
+
+double error_of(const Exact &got, const Exact &ref) {
+  return std::max(std::abs(got.speed / ref.speed - 1.0), std::abs(got.distance / ref.distance - 1.0));
+}
+
+// Naive baseline: fixed-step explicit Euler, stick tested at the start of each step.
+double euler_error(const PinOnDiskParameters &p, double dt) {
+  const PinOnDiskSystem system(p, SlidingFriction::constant(kMu0, kAlpha));
+  const long steps = std::lround(kEnd / dt), every = std::lround(kGrid / dt);
+  const double tb = breakaway(p);
+  double y[3] = {0.0, 0.0, 0.0}, dy[3], worst = 0.0;
+  for (long n = 0; n < steps; ++n) {
+    const double t = n * dt;
+    const bool slip = y[0] > 0.0 || system.breakaway_function(t) > 0.0;
+    system.rhs(t, y, dy, slip ? ContactState::Slip : ContactState::Stick, 1);
+    for (int i = 0; i < 3; ++i) y[i] += dt * dy[i];
+    if (y[0] < 0.0) y[0] = 0.0;
+    const double t_next = (n + 1) * dt;
+    if ((n + 1) % every == 0 && t_next > tb) worst = std::max(worst, error_of({kRadius * y[0], y[1]}, exact(p, t_next)));
+  }
+  return worst;
+}
+}  // namespace
+
+int main(int argc, char **argv) {
+  const std::string out = argc > 1 ? argv[1] : ".";
+  const auto p = thesis();
+  const Exact ref = exact(p, kEnd);
+  std::printf("thesis case: T_app = %.6g N m, break-away %.8g s, exact V(2 s) = %.10g m/s, s(2 s) = %.10g m\n",
+              p.applied_torque, breakaway(p), ref.speed, ref.distance);
+
+  const std::string csv_path = out + "/wp_pin_on_disk.csv";
+  FILE *csv = std::fopen(csv_path.c_str(), "w");
+  if (!csv) {
+    std::perror(csv_path.c_str());
+    return 1;
+  }
+  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
+  std::printf("%-12s %10s %12s %12s %8s\n", "method", "setting", "rel. error", "wall time s", "steps");
+
+  for (const auto method : {CvodeIntegrator::Method::Bdf, CvodeIntegrator::Method::Adams}) {
+    const char *name = method == CvodeIntegrator::Method::Bdf ? "cvode_bdf" : "cvode_adams";
+    for (const double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
+      PinOnDiskRun run;
+      run.t_end = kEnd;
+      run.output_interval = kGrid;
+      run.integrator.method = method;
+      run.integrator.rtol = rtol;
+      run.integrator.atol = rtol * 1e-3;  // speed and distance are O(0.1) m/s, O(0.01) m
+      const PinOnDiskSystem system(p, SlidingFriction::constant(kMu0, kAlpha));
+      const double tb = breakaway(p);
+      double error = 0.0;
+      long steps = 0;
+      const double seconds = median_seconds(
+          [&] {
+            error = 0.0;
+            const auto report = simulate(system, run, [&](const PinOnDiskSample &s) {
+              const double on_grid = std::round(s.t / kGrid) * kGrid;
+              if (s.t > tb && std::abs(s.t - on_grid) < 1e-12)
+                error = std::max(error, error_of({s.speed, s.distance}, exact(p, s.t)));
+            });
+            steps = report.steps;
+          },
+          21);
+      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", name, rtol, error, seconds, steps);
+      std::printf("%-12s %10g %12.3e %12.3e %8ld\n", name, rtol, error, seconds, steps);
+    }
+  }
+  for (const double dt : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
+    double error = 0.0;
+    const double seconds = median_seconds([&] { error = euler_error(p, dt); }, dt < 1e-6 ? 3 : 7);
+    std::fprintf(csv, "euler_fixed,%g,%.6e,%.6e,%ld\n", dt, error, seconds, std::lround(kEnd / dt));
+    std::printf("%-12s %10g %12.3e %12.3e %8ld\n", "euler_fixed", dt, error, seconds, std::lround(kEnd / dt));
+  }
+  std::fclose(csv);
+
+  // Long wear run-in: 1000 wear updates on a 512-ring contact grid (thesis pin, k = 1e-4, H = 0.9 GPa).
+  {
+    const runin::tribo::ArchardWear archard(1e-4, 0.9e9);
+    PinWearParameters wp;
+    wp.tip_radius = 5e-3;
+    wp.effective_modulus = runin::tribo::effective_modulus({110e9, 0.37, 0.9e9}, {69e9, 0.33, 0.5e9});
+    wp.rings = 512;
+    const double distance = 0.1;  // the thesis case slides ~0.1 m by 3 s
+    wp.grid_radius = suggested_grid_radius(wp.tip_radius, wp.effective_modulus, kLoad, &archard, distance);
+    long steps = 0;
+    double volume = 0.0, step = 0.0;
+    {
+      PinWear pin(wp, archard, kLoad);
+      step = pin.stable_step();  // the adaptive bound at the start (it grows as the flat widens)
+    }
+    const double seconds = median_seconds(
+        [&] {
+          PinWear pin(wp, archard, kLoad);
+          for (int k = 0; k < 1000; ++k) pin.step(step);
+          steps = pin.steps();
+          volume = pin.wear_volume();
+        },
+        5);
+    double adaptive_seconds = 0.0;
+    long adaptive_steps = 0;
+    adaptive_seconds = median_seconds(
+        [&] {
+          PinWear pin(wp, archard, kLoad);
+          pin.advance(distance);
+          adaptive_steps = pin.steps();
+        },
+        3);
+    std::printf("wear: %ld updates of %.3g m on %d rings in %.3f s (median of 5), V = %.6e m^3 (Archard %.6e)\n",
+                steps, step, wp.rings, seconds, volume, archard.volume(kLoad, 1000 * step));
+    std::printf("wear: adaptive run over %.3g m: %ld updates in %.3f s (median of 3)\n", distance, adaptive_steps,
+                adaptive_seconds);
+    FILE *wear = std::fopen((out + "/wear_timing.csv").c_str(), "w");
+    if (wear) {
+      std::fprintf(wear, "run,rings,updates,wall_time_s\nfixed_1000,%d,%ld,%.6e\nadaptive,%d,%ld,%.6e\n", wp.rings,
+                   steps, seconds, wp.rings, adaptive_steps, adaptive_seconds);
+      std::fclose(wear);
+    }
+  }
+
+  const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_wp_pin_on_disk.py " + csv_path + " " +
+                           out + "/wp_pin_on_disk.png 'pin-on-disk thesis case (2 s)'";
+  if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "plot failed: %s\n", plot.c_str());
+  return 0;
+}
