@@ -1,7 +1,15 @@
 #include "tribo/contact.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+
+#include <boost/math/tools/toms748_solve.hpp>
+#include <boost/numeric/odeint.hpp>
 
 namespace runin::tribo {
 
@@ -10,7 +18,6 @@ void require(bool ok, const std::string &what)
 {
   if (!ok) throw InvalidCoefficient(what);
 }
-constexpr double kPi = 3.14159265358979323846;
 }    // namespace
 
 void Material::validate(const std::string &name) const
@@ -63,21 +70,81 @@ double HertzNormal::elastic_energy(double overlap) const
   return overlap > 0.0 ? 8.0 / 15.0 * e_eff_ * contact_radius(overlap) * overlap * overlap : 0.0;
 }
 
+namespace {
+
+// Nondimensional Hertz impact (see contact.h): delta = x (m* v0^2 / K)^(2/5), t = tau delta_scale / v0 with
+// F_Hertz = K delta^(3/2), k_n = 3/2 K delta^(1/2). Approach speed 1; gamma = c sqrt(3/2).
+using ImpactState = std::array<double, 2>;    // x, dx/dtau
+
+// Total normal force divided by x^(1/4): its sign is that of the (unclamped) contact force.
+double impact_force_sign(const ImpactState &s, double gamma)
+{
+  return std::pow(std::max(s[0], 0.0), 1.25) + gamma * s[1];
+}
+
+double separation_speed(double factor)
+{
+  namespace odeint = boost::numeric::odeint;
+  const double gamma = factor * std::sqrt(1.5);
+  const auto rhs = [gamma](const ImpactState &s, ImpactState &ds, double) {
+    const double x = std::max(s[0], 0.0);
+    ds[0] = s[1];
+    ds[1] = -std::max(0.0, x * std::sqrt(x) + gamma * std::sqrt(std::sqrt(x)) * s[1]);    // clamp fn >= 0
+  };
+  auto stepper = odeint::make_dense_output(1e-13, 1e-13, odeint::runge_kutta_dopri5<ImpactState>());
+  stepper.initialize(ImpactState{0.0, 1.0}, 0.0, 1e-3);
+  // the undamped contact lasts 3.2 time units; damping only shortens it
+  for (int step = 0; step < 1000000 && stepper.current_time() < 100.0; ++step) {
+    stepper.do_step(rhs);
+    const ImpactState &now = stepper.current_state();
+    if (now[1] >= 0.0 || impact_force_sign(now, gamma) > 0.0) continue;
+    // the force reached zero in the last step: locate it on the dense output
+    ImpactState at;
+    const auto force_at = [&](double t) {
+      stepper.calc_state(t, at);
+      return impact_force_sign(at, gamma);
+    };
+    std::uintmax_t iterations = 200;
+    const auto root = boost::math::tools::toms748_solve(force_at, stepper.previous_time(), stepper.current_time(),
+                                                        boost::math::tools::eps_tolerance<double>(52), iterations);
+    stepper.calc_state(0.5 * (root.first + root.second), at);
+    return -at[1];
+  }
+  throw std::runtime_error("RestitutionDamping: the calibration impact did not separate");
+}
+
+// c for a requested e (toms748 on the monotone e(c)); memoised, as fix runin/wall builds one per step.
+double calibrated_factor(double e)
+{
+  static std::mutex mutex;
+  static std::map<double, double> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const auto found = cache.find(e);
+  if (found != cache.end()) return found->second;
+  const auto miss = [e](double factor) { return separation_speed(factor) - e; };
+  double lo = 0.0, hi = 1.0;
+  while (miss(hi) > 0.0) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 1e12) throw std::runtime_error("RestitutionDamping: no damping factor found for e");
+  }
+  std::uintmax_t iterations = 200;
+  const auto root = boost::math::tools::toms748_solve(miss, lo, hi, boost::math::tools::eps_tolerance<double>(50),
+                                                      iterations);
+  return cache[e] = 0.5 * (root.first + root.second);
+}
+
+}    // namespace
+
+double RestitutionDamping::hertz_restitution(double damping_factor)
+{
+  return damping_factor > 0.0 ? separation_speed(damping_factor) : 1.0;
+}
+
 RestitutionDamping::RestitutionDamping(double e) : restitution_(e), factor_(0.0)
 {
   require(e > 0.0 && e <= 1.0, "e: coefficient of restitution must be in (0, 1]");
-  if (e < 1.0) {
-    const double log_e = std::log(e);
-    const double beta = log_e / std::sqrt(log_e * log_e + kPi * kPi);
-    factor_ = -2.0 * std::sqrt(5.0 / 6.0) * beta;    // > 0
-  }
-}
-
-double RestitutionDamping::force(double normal_stiffness, double effective_mass,
-                                 double normal_velocity) const
-{
-  if (factor_ == 0.0) return 0.0;
-  return -factor_ * std::sqrt(normal_stiffness * effective_mass) * normal_velocity;
+  if (e < 1.0) factor_ = calibrated_factor(e);
 }
 
 StaticKineticFriction::StaticKineticFriction(double mu_static, double mu_kinetic, double d_c)
@@ -87,51 +154,6 @@ StaticKineticFriction::StaticKineticFriction(double mu_static, double mu_kinetic
   require(mu_k_ >= 0.0, "mu_k: kinetic friction coefficient must be >= 0");
   require(mu_k_ <= mu_s_, "mu_k: kinetic friction coefficient must not exceed mu_s");
   require(d_c_ >= 0.0, "d_c: slip-weakening distance must be >= 0");
-}
-
-double StaticKineticFriction::coefficient(double slip) const
-{
-  if (slip <= 0.0) return mu_s_;
-  if (d_c_ == 0.0) return mu_k_;
-  return mu_k_ + (mu_s_ - mu_k_) * std::max(0.0, 1.0 - slip / d_c_);
-}
-
-TangentialUpdate mindlin_coulomb(double kt, double normal_force, const StaticKineticFriction &friction,
-                                 const double n[3], const double vt[3], double dt, double spring[3],
-                                 double &slip, bool advance)
-{
-  TangentialUpdate out;
-  double trial[3] = {spring[0], spring[1], spring[2]};
-  if (advance)
-    for (int k = 0; k < 3; ++k) trial[k] += vt[k] * dt;
-
-  // Keep the spring in the current tangent plane (the contact normal rotates as bodies move).
-  const double along_normal = trial[0] * n[0] + trial[1] * n[1] + trial[2] * n[2];
-  for (int k = 0; k < 3; ++k) trial[k] -= along_normal * n[k];
-
-  double ft[3];
-  for (int k = 0; k < 3; ++k) ft[k] = -kt * trial[k];
-  const double ft_mag = std::sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
-  const double limit = friction.coefficient(slip) * std::max(normal_force, 0.0);
-
-  if (ft_mag > limit) {
-    out.slipping = true;
-    const double scale = ft_mag > 0.0 ? limit / ft_mag : 0.0;
-    double slipped_sq = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      ft[k] *= scale;
-      const double relaxed = trial[k] * scale;
-      slipped_sq += (trial[k] - relaxed) * (trial[k] - relaxed);
-      trial[k] = relaxed;
-    }
-    out.slip_increment = std::sqrt(slipped_sq);
-  }
-  for (int k = 0; k < 3; ++k) out.force[k] = ft[k];
-  if (advance) {
-    for (int k = 0; k < 3; ++k) spring[k] = trial[k];
-    slip += out.slip_increment;
-  }
-  return out;
 }
 
 }    // namespace runin::tribo

@@ -2,6 +2,8 @@
 // Pure functions and small value classes: no LAMMPS, no I/O. SI units throughout.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -44,15 +46,25 @@ class HertzNormal {
   double e_eff_, r_eff_;
 };
 
-// Viscoelastic normal damping parametrised by a coefficient of restitution
-// (Tsuji et al. 1992): F_d = -2 sqrt(5/6) beta sqrt(k_n m*) v_n, beta = ln e / sqrt(ln^2 e + pi^2),
-// with k_n the current Hertz stiffness. e = 1 switches damping off exactly.
+// Viscoelastic normal damping parametrised by a coefficient of restitution, in the Tsuji et al. (1992)
+// form F_d = -c sqrt(k_n m*) v_n with k_n the current Hertz stiffness. With k_n ~ delta^(1/2) the impact
+// is self-similar, so e depends on c alone; c is calibrated once per e by integrating the nondimensional
+// Hertz impact x'' = -max(0, x^(3/2) + c sqrt(3/2) x^(1/4) x') (separation where the clamped total force
+// reaches zero, as the contact styles evaluate it), so a head-on Hertz impact rebounds with exactly e.
+// (The linear-spring mapping c = -2 sqrt(5/6) ln e / sqrt(ln^2 e + pi^2) misses e by up to 10 %.)
+// e = 1 switches damping off exactly.
 class RestitutionDamping {
  public:
   explicit RestitutionDamping(double coefficient_of_restitution);
+  // Restitution of a head-on Hertz impact with damping factor c (the ODE above; 1 for c = 0).
+  static double hertz_restitution(double damping_factor);
 
   // Damping force along the contact normal; normal_velocity < 0 means approach.
-  double force(double normal_stiffness, double effective_mass, double normal_velocity) const;
+  double force(double normal_stiffness, double effective_mass, double normal_velocity) const
+  {
+    if (factor_ == 0.0) return 0.0;
+    return -factor_ * std::sqrt(normal_stiffness * effective_mass) * normal_velocity;
+  }
   double restitution() const { return restitution_; }
   bool enabled() const { return factor_ != 0.0; }
 
@@ -66,9 +78,28 @@ class StaticKineticFriction {
  public:
   StaticKineticFriction(double mu_static, double mu_kinetic, double slip_weakening_distance);
 
-  double coefficient(double accumulated_slip) const;
+  double coefficient(double accumulated_slip) const
+  {
+    if (accumulated_slip <= 0.0) return mu_s_;
+    if (d_c_ == 0.0) return mu_k_;
+    return mu_k_ + (mu_s_ - mu_k_) * std::max(0.0, 1.0 - accumulated_slip / d_c_);
+  }
+  // The part of coefficient() above mu_k: (mu_s - mu_k) max(0, 1 - slip/d_c).
+  double static_excess(double accumulated_slip) const
+  {
+    if (accumulated_slip <= 0.0) return mu_s_ - mu_k_;
+    if (d_c_ == 0.0) return 0.0;
+    return (mu_s_ - mu_k_) * std::max(0.0, 1.0 - accumulated_slip / d_c_);
+  }
+  // Limit force when the kinetic level is given as a force (e.g. adhesion + ploughing, strength_friction.h):
+  // kinetic_force + static_excess(slip) F_n; with kinetic_force = mu_k F_n this is coefficient(slip) F_n.
+  double limit_force(double accumulated_slip, double normal_force, double kinetic_force) const
+  {
+    return kinetic_force + static_excess(accumulated_slip) * normal_force;
+  }
   double mu_static() const { return mu_s_; }
   double mu_kinetic() const { return mu_k_; }
+  double slip_weakening_distance() const { return d_c_; }
 
  private:
   double mu_s_, mu_k_, d_c_;
@@ -77,19 +108,63 @@ class StaticKineticFriction {
 // Outcome of one tangential update of a contact.
 struct TangentialUpdate {
   double force[3] = {0.0, 0.0, 0.0};  // on body i
+  double force_magnitude = 0.0;        // |force|
   double slip_increment = 0.0;         // sliding distance taken by the slider this step
   bool slipping = false;
 };
+
+// The Mindlin spring of mindlin_coulomb below with its Coulomb limit given as a force (>= 0), for force
+// loops that compute the limit themselves. Inline: it runs once per contact and step.
+inline TangentialUpdate mindlin_spring(double kt, double limit, const double n[3], const double vt[3], double dt,
+                                       double spring[3], double &slip, bool advance)
+{
+  TangentialUpdate out;
+  double trial[3] = {spring[0], spring[1], spring[2]};
+  if (advance)
+    for (int k = 0; k < 3; ++k) trial[k] += vt[k] * dt;
+
+  // Keep the spring in the current tangent plane (the contact normal rotates as bodies move).
+  const double along_normal = trial[0] * n[0] + trial[1] * n[1] + trial[2] * n[2];
+  for (int k = 0; k < 3; ++k) trial[k] -= along_normal * n[k];
+
+  double ft[3];
+  for (int k = 0; k < 3; ++k) ft[k] = -kt * trial[k];
+  double ft_mag = std::sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
+
+  if (ft_mag > limit) {
+    // the spring shrinks along itself to the limit: it slips by |trial| - limit / k_t = (|F_t| - limit) / k_t
+    // (ft_mag > limit >= 0 implies k_t > 0)
+    out.slipping = true;
+    const double scale = limit / ft_mag;
+    for (int k = 0; k < 3; ++k) {
+      ft[k] *= scale;
+      trial[k] *= scale;
+    }
+    out.slip_increment = (ft_mag - limit) / kt;
+    ft_mag = limit;
+  }
+  for (int k = 0; k < 3; ++k) out.force[k] = ft[k];
+  out.force_magnitude = ft_mag;
+  if (advance) {
+    for (int k = 0; k < 3; ++k) spring[k] = trial[k];
+    slip += out.slip_increment;
+  }
+  return out;
+}
 
 // Mindlin-type tangential spring (k_t = 8 G* a) with history and a Coulomb limit.
 // 'spring' is the stored tangential displacement (3 values) and 'slip' the accumulated
 // slip distance; both persist per contact. 'normal' is the unit normal (j -> i),
 // 'tangential_velocity' the relative tangential velocity of i w.r.t. j.
 // When 'advance' is false (LAMMPS setup) the history is read but not changed.
-TangentialUpdate mindlin_coulomb(double tangential_stiffness, double normal_force,
-                                 const StaticKineticFriction &friction, const double normal[3],
-                                 const double tangential_velocity[3], double dt, double spring[3],
-                                 double &slip, bool advance);
+inline TangentialUpdate mindlin_coulomb(double tangential_stiffness, double normal_force,
+                                        const StaticKineticFriction &friction, const double normal[3],
+                                        const double tangential_velocity[3], double dt, double spring[3],
+                                        double &slip, bool advance)
+{
+  const double limit = friction.coefficient(slip) * std::max(normal_force, 0.0);
+  return mindlin_spring(tangential_stiffness, limit, normal, tangential_velocity, dt, spring, slip, advance);
+}
 
 // Re-stick (healing): a contact that did not slip in this step while its tangential relative speed is
 // below 'restick_speed' sticks again, and its accumulated slip resets so the limit returns to mu_s.
@@ -97,6 +172,11 @@ TangentialUpdate mindlin_coulomb(double tangential_stiffness, double normal_forc
 inline bool resticks(const TangentialUpdate &update, double tangential_speed, double restick_speed)
 {
   return restick_speed > 0.0 && !update.slipping && tangential_speed < restick_speed;
+}
+// The same test from the squared speed (no square root in the force loop).
+inline bool resticks_squared(const TangentialUpdate &update, double tangential_speed_sq, double restick_speed)
+{
+  return restick_speed > 0.0 && !update.slipping && tangential_speed_sq < restick_speed * restick_speed;
 }
 
 inline double mindlin_stiffness(double effective_shear_modulus, double contact_radius)

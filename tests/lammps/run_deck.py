@@ -57,11 +57,69 @@ def fail(message):
     sys.exit(1)
 
 
+def subdomain_crossings(dump_text, log_text, skin):
+    """Atoms certain to have changed MPI rank during the slide of in.rough_slider.
+
+    A uniform P_x x P_y x P_z decomposition (the log's processor grid) owns an atom by its slab in each
+    dimension. With 'neigh_modify every 1 check yes' the last rebuild (where atoms migrate) happened less
+    than skin/2 before the final position, so an atom whose whole skin/2 neighbourhood of the final
+    position lies in another slab than its start (taken only if clear of slab faces) has migrated.
+    """
+    grid = re.search(r"(\d+) by (\d+) by (\d+) MPI processor grid", log_text)
+    procs = [int(g) for g in grid.groups()] if grid else [1, 1, 1]
+    snapshots = dump_snapshots(dump_text)
+    (lo, hi), first, last = snapshots[0][0], snapshots[0][1], snapshots[-1][1]
+    crossed = 0
+    for tag, start in first.items():
+        end = last[tag]
+        for dim in range(3):
+            if procs[dim] == 1:
+                continue
+            length = hi[dim] - lo[dim]
+            width = length / procs[dim]
+            moved = end[dim] - start[dim]
+            moved -= length * round(moved / length)    # periodic wrap (the slide is shorter than L/2)
+            offset = (start[dim] - lo[dim]) / width
+            if abs(offset - round(offset)) * width < 1e-3 * skin:
+                continue    # starts on a slab face: owner ambiguous
+            reached = [math.floor((start[dim] + moved + side - lo[dim]) / width) % procs[dim]
+                       for side in (-0.5 * skin, 0.5 * skin)]
+            if reached[0] == reached[1] != math.floor(offset) % procs[dim]:
+                crossed += 1
+                break
+    return crossed, procs
+
+
+def dump_snapshots(text):
+    """[((lo, hi), {id: (x, y, z)}), ...] of a LAMMPS custom dump with id and x y z columns."""
+    lines, snapshots, k = text.splitlines(), [], 0
+    while k < len(lines):
+        if not lines[k].startswith("ITEM: TIMESTEP"):
+            k += 1
+            continue
+        count = int(lines[k + 3])
+        bounds = [tuple(map(float, lines[k + 5 + d].split()[:2])) for d in range(3)]
+        columns = lines[k + 8].split()[2:]
+        ix = [columns.index(name) for name in ("id", "x", "y", "z")]
+        atoms = {}
+        for line in lines[k + 9:k + 9 + count]:
+            words = line.split()
+            atoms[int(words[ix[0]])] = tuple(float(words[i]) for i in ix[1:])
+        snapshots.append((([b[0] for b in bounds], [b[1] for b in bounds]), atoms))
+        k += 9 + count
+    return snapshots
+
+
 def run_slider(args):
+    """Short deterministic slide of the micro deck, long enough that atoms migrate between ranks.
+
+    6000 steps slide the counter-body 1.2 um: its column next to the periodic x face (0.5 a_top = 1.03 um
+    from it) crosses it by more than skin/2, so with 2 and 4 ranks atoms change rank (checked below).
+    """
     fresh_dir(args.workdir)
     command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck),
                "-var", "coeffs", os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"),
-               "-var", "nsettle", "200", "-var", "nslide", "100", "-var", "thermo_every", "10",
+               "-var", "nsettle", "200", "-var", "nslide", "6000", "-var", "thermo_every", "50",
                "-log", "log.lammps", "-screen", "none"]
     result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
     log = open(os.path.join(args.workdir, "log.lammps")).read() if os.path.exists(
@@ -87,11 +145,23 @@ def run_slider(args):
         fail(f"wear volume must grow while sliding: {wear}")
     if not 0.0 < max(mu) <= 0.95 + 1e-12:
         fail(f"mu_eff outside (0, mu_s]: {mu}")
+    builds = [int(n) for n in re.findall(r"Neighbor list builds = (\d+)", log)]
+    dangerous = [int(n) for n in re.findall(r"Dangerous builds = (\d+)", log)]
+    if len(builds) != 2 or builds[1] < 2 or any(dangerous):
+        fail(f"the slide must rebuild the neighbour lists (builds {builds}, dangerous {dangerous})")
+    skin = float(re.search(r"^neighbor\s+(\S+)\s+bin", open(os.path.join(SOURCE_DIR, args.deck)).read(),
+                           re.M).group(1))
+    crossed, procs = subdomain_crossings(open(os.path.join(args.workdir, "asperities.dump")).read(), log, skin)
+    if args.np > 1 and crossed == 0:
+        fail(f"no atom changed rank on the {procs} processor grid: lengthen the slide")
+    # every thermo column, so the rank comparison covers whatever the deck reports (Rq included)
     with open(os.path.join(args.workdir, "sliding.tsv"), "w") as out:
+        out.write("\t".join(sliding[0].keys()) + "\n")
         for row in sliding:
-            out.write(f"{int(row['Step'])}\t{row['c_fric[3]']!r}\t{row['c_fric[5]']!r}\t{row['c_rough[2]']!r}\n")
+            out.write("\t".join(repr(value) for value in row.values()) + "\n")
     print(f"ok: {len(sliding)} sliding rows, contacts {min(contacts):.0f}-{max(contacts):.0f}, "
-          f"mu_eff {mu[-1]:.6g}, wear {wear[-1]:.6g} m^3")
+          f"mu_eff {mu[-1]:.6g}, wear {wear[-1]:.6g} m^3, {builds[1]} neighbour builds, "
+          f"{crossed} atoms changed rank on the {'x'.join(map(str, procs))} grid")
 
 
 def archard_budget(args):
@@ -117,24 +187,32 @@ def archard_budget(args):
 
 
 def compare(args):
+    """Every thermo column of two slider runs (different rank counts) row by row, 1e-8 relative."""
     def load(directory):
         with open(os.path.join(directory, "sliding.tsv")) as f:
-            return [tuple(float(x) for x in line.split()) for line in f]
+            header = f.readline().split()
+            return header, [[float(x) for x in line.split()] for line in f]
 
-    a, b = load(args.dir_a), load(args.dir_b)
+    (names_a, a), (names_b, b) = load(args.dir_a), load(args.dir_b)
+    if names_a != names_b:
+        fail(f"thermo columns differ: {names_a} vs {names_b}")
     if len(a) != len(b) or len(a) < 10:
         fail(f"row counts differ or too few: {len(a)} vs {len(b)}")
-    worst = 0.0
-    for (step_a, *values_a), (step_b, *values_b) in zip(a, b):
-        if step_a != step_b:
-            fail(f"steps differ: {step_a} vs {step_b}")
-        for x, y in zip(values_a, values_b):
+    worst, where, varying = 0.0, "", set()
+    for row_a, row_b in zip(a, b):
+        if row_a[0] != row_b[0]:
+            fail(f"steps differ: {row_a[0]} vs {row_b[0]}")
+        for name, x, y, first in zip(names_a, row_a, row_b, a[0]):
+            if x != first:
+                varying.add(name)
             scale = max(abs(x), abs(y))
-            if scale > 0:
-                worst = max(worst, abs(x - y) / scale)
+            if scale > 0 and abs(x - y) / scale > worst:
+                worst, where = abs(x - y) / scale, f"{name} at step {row_a[0]:.0f}"
     if worst > 1e-8:
-        fail(f"mu_eff / wear / Rq differ between rank counts by {worst:.3e} relative (limit 1e-8)")
-    print(f"ok: {len(a)} rows agree, worst relative difference {worst:.3e}")
+        fail(f"thermo columns differ between rank counts by {worst:.3e} relative at {where} (limit 1e-8)")
+    constant = [name for name in names_a if name not in varying]
+    print(f"ok: {len(a)} rows x {len(names_a)} columns agree, worst relative difference {worst:.3e}"
+          + (f" ({where})" if where else "") + (f"; constant columns: {' '.join(constant)}" if constant else ""))
 
 
 def deck_roughness_closed_form(deck_text):
@@ -214,8 +292,10 @@ def roughness(args):
         scale = max(abs(v) for v in heights.values())
         for atom in body:
             want = heights.get(int(atom["id"]), 0.0)
-            if abs(atom[f"c_{name}"] - want) > 1e-10 * scale:
-                fail(f"atom {int(atom['id'])}: c_{name} = {atom[f'c_{name}']!r}, closed form {want!r}")
+            if abs(atom[f"c_{name}[1]"] - want) > 1e-10 * scale:
+                fail(f"atom {int(atom['id'])}: c_{name}[1] = {atom[f'c_{name}[1]']!r}, closed form {want!r}")
+            if atom[f"c_{name}[2]"] != 0.0:    # no wear state in the deck: wear depth exactly 0
+                fail(f"atom {int(atom['id'])}: c_{name}[2] (wear depth) = {atom[f'c_{name}[2]']!r}, want 0")
             checked += 1
     print(f"ok: {checked} values on {args.np} rank(s) match the closed form, worst global relative error {worst:.3e}")
 

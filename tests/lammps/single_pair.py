@@ -168,8 +168,8 @@ def slide(args):
         archard = m["k"] * load * slip / (form * h_soft)
         check("removed volume vs k W s / H", removed, archard, 1e-10)
         notes.append(f"removed {removed:.6e} m^3 = k W s / ({form:g} H) = {archard:.6e}")
-    # per-atom bookkeeping: the sum over atoms is compute runin/friction's entry 5; 1/H split; transfer
-    check("sum of per-atom volume lost vs c_fric[5]", sum(lost), removed, 1e-14)
+    # per-atom bookkeeping: 1/H split and transfer. (c_fric[5] IS the sum over atoms of the volume lost;
+    # verify_micro.py wear-budget checks it against the per-contact wear rate on a multi-contact slider.)
     share_al = m["h_cu"] / (m["h_al"] + m["h_cu"])
     check("Al share of the removed volume", lost[0], share_al * removed, 1e-13)
     f = args.transfer
