@@ -1,10 +1,12 @@
 #include "compute_runin_roughness.h"
 
+#include "fix_runin_wear_state.h"
 #include "tribo/surface_statistics.h"
 
 #include "atom.h"
 #include "error.h"
 #include "memory.h"
+#include "modify.h"
 #include "update.h"
 #include "utils.h"
 
@@ -15,7 +17,7 @@
 using namespace LAMMPS_NS;
 
 ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), sign(1.0), nmax(0), height(nullptr)
+    Compute(lmp, narg, arg), sign(1.0), nmax(0), peratom(nullptr), fix_wear(nullptr)
 {
   int iarg = 3;
   bool seen_bearing = false;
@@ -64,25 +66,34 @@ ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) 
   for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
 
   peratom_flag = 1;
-  size_peratom_cols = 0;
+  size_peratom_cols = NPERATOM;
 }
 
 ComputeRuninRoughness::~ComputeRuninRoughness()
 {
   delete[] vector;
-  memory->destroy(height);
+  memory->destroy(peratom);
 }
 
 void ComputeRuninRoughness::init()
 {
   if (!atom->radius_flag)
     error->all(FLERR, "compute runin/roughness: requires atom attribute radius (atom_style sphere)");
+  // the wear state is created by pair runin/asperity or fix runin/wall, possibly after this compute
+  const int ifix = modify->find_fix(FixRuninWearState::default_id);
+  fix_wear = ifix >= 0 ? dynamic_cast<FixRuninWearState *>(modify->fix[ifix]) : nullptr;
+}
+
+double ComputeRuninRoughness::wear_depth(int i) const
+{
+  return fix_wear ? fix_wear->state()[i][FixRuninWearState::WEAR_DEPTH] : 0.0;
 }
 
 double ComputeRuninRoughness::summit(int i) const
 {
-  // side up: top of the sphere; side down: bottom of the sphere, measured downward
-  return sign * atom->x[i][2] + atom->radius[i];
+  // side up: top of the sphere; side down: bottom of the sphere, measured downward. A worn summit is
+  // truncated by its wear depth h (negative where transfer deposited more than was lost).
+  return sign * atom->x[i][2] + atom->radius[i] - wear_depth(i);
 }
 
 double ComputeRuninRoughness::mean_height()
@@ -141,17 +152,21 @@ void ComputeRuninRoughness::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
   if (atom->nmax > nmax) {
-    memory->destroy(height);
+    memory->destroy(peratom);
     nmax = atom->nmax;
-    memory->create(height, nmax, "runin/roughness:height");
-    vector_atom = height;
+    memory->create(peratom, nmax, NPERATOM, "runin/roughness:peratom");
+    array_atom = peratom;
   }
   const double mean = mean_height();
   const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++) height[i] = (mask[i] & groupbit) ? summit(i) - mean : 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const bool member = mask[i] & groupbit;
+    peratom[i][HEIGHT] = member ? summit(i) - mean : 0.0;
+    peratom[i][WEAR_DEPTH] = member ? wear_depth(i) : 0.0;
+  }
 }
 
 double ComputeRuninRoughness::memory_usage()
 {
-  return static_cast<double>(nmax) * sizeof(double);
+  return static_cast<double>(nmax) * NPERATOM * sizeof(double);
 }

@@ -1,5 +1,6 @@
 // compute runin/roughness: surface statistics (Ra, Rq, Rsk, Rku, Rp, Rv, Rz, bearing ratios) of the
-// summit heights of a group of asperity particles; per-atom summit height above the mean plane.
+// summit heights of a group of asperity particles, lowered by their wear depth when a RunIn wear
+// state exists; per-atom summit height above the mean plane and wear depth.
 #ifdef COMPUTE_CLASS
 // clang-format off
 ComputeStyle(runin/roughness,ComputeRuninRoughness);
@@ -18,6 +19,7 @@ namespace LAMMPS_NS {
 class ComputeRuninRoughness : public Compute {
  public:
   enum Entry { RA = 0, RQ, RSK, RKU, RP, RV, RZ, NFIXED };
+  enum PerAtomColumn { HEIGHT = 0, WEAR_DEPTH, NPERATOM };
 
   ComputeRuninRoughness(class LAMMPS *, int, char **);
   ~ComputeRuninRoughness() override;
@@ -28,9 +30,12 @@ class ComputeRuninRoughness : public Compute {
 
  private:
   std::vector<double> depths;    // bearing depths below the highest summit
-  double sign;                    // +1: side up (z + r); -1: side down (-(z - r))
+  double sign;                    // +1: side up (z + r - h); -1: side down (-(z - r + h))
   int nmax;
-  double *height;                 // per-atom summit height above the mean plane
+  double **peratom;               // per-atom summit height above the mean plane, wear depth h
+  class FixRuninWearState *fix_wear;    // nullptr: no wear state, h = 0
+
+  double wear_depth(int i) const;
 
   double summit(int i) const;
   double mean_height();           // first reduction: count and sum of summit heights

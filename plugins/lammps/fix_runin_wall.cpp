@@ -1,9 +1,12 @@
 #include "fix_runin_wall.h"
 
 #include "fix_runin_wear_state.h"
+#include "runin_timestep_guard.h"
 #include "tribo/asperity_geometry.h"
 #include "tribo/contact.h"
+#include "tribo/friction_strength.h"
 #include "tribo/load_servo.h"
+#include "tribo/strength_friction.h"
 #include "tribo/wear.h"
 
 #include "atom.h"
@@ -20,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <optional>
 #include <vector>
@@ -41,15 +45,20 @@ inline void cross(const double *a, const double *b, double *out)
 // Values per keyword (after the keyword itself).
 const std::map<std::string, int> kKeywordValues = {
     {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
-    {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2}};
+    {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
+    {"strength", 2}, {"restick", 1}, {"transfer", 1}};
+
+// Leads the global restart record that carries the counterface gain (older records start with z_wall).
+const double kRestartFormatMark = std::numeric_limits<double>::quiet_NaN();
 
 }    // namespace
 
 FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), e_star(-1.0), g_star(-1.0), restitution(1.0), mu_s(-1.0), mu_k(-1.0),
     slip_weakening(0.0), wear_k(-1.0), hardness_asperity(-1.0), hardness_wall(-1.0), thesis_archard(false),
-    reshape(true),
-    side_sign(0.0), wall_z(0.0), wall_dx(0.0), wall_dy(0.0), wall_wear(0.0), control(Control::displacement),
+    reshape(true), strength_model(false), shear_strength(0.0), ploughing_factor(1.0), restick_speed(0.0),
+    transfer_fraction(0.0), side_sign(0.0), wall_z(0.0), wall_dx(0.0), wall_dy(0.0), wall_wear(0.0), wall_gain(0.0),
+    control(Control::displacement),
     load_target(0.0), servo_gain(-1.0), servo_vmax(-1.0), last_normal_force(0.0), last_stiffness(0.0),
     wall_velocity{0.0, 0.0, 0.0}, vz_given(false), dt(0.0), history(nullptr),
     fix_wear(nullptr)
@@ -64,7 +73,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     if (known == kKeywordValues.end())
       error->all(FLERR,
                  "fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, wear, "
-                 "archard, reshape, vel, vz, load, pressure or servo)",
+                 "archard, reshape, vel, vz, load, pressure, servo, strength, restick or transfer)",
                  keyword);
     const int nvalues = known->second;
     if (iarg + nvalues >= narg)
@@ -134,6 +143,18 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       if (!(servo_gain > 0.0 && servo_gain <= 1.0))
         error->all(FLERR, "fix runin/wall: servo gain must be in (0, 1], got {}", servo_gain);
       if (!(servo_vmax > 0.0)) error->all(FLERR, "fix runin/wall: servo vmax must be > 0, got {}", servo_vmax);
+    } else if (keyword == "strength") {
+      shear_strength = number(0, "tau_s");
+      ploughing_factor = number(1, "plough");
+      strength_model = true;
+    } else if (keyword == "restick") {
+      restick_speed = number(0, "v");
+      if (!(restick_speed >= 0.0))
+        error->all(FLERR, "fix runin/wall: restick speed must be >= 0 m/s, got {}", restick_speed);
+    } else if (keyword == "transfer") {
+      transfer_fraction = number(0, "f");
+      if (!(transfer_fraction >= 0.0 && transfer_fraction <= 1.0))
+        error->all(FLERR, "fix runin/wall: transfer fraction must be in [0, 1], got {}", transfer_fraction);
     }
     iarg += nvalues + 1;
   }
@@ -161,6 +182,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     if (!(hardness_wall > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", hardness_wall));
     tribo::ArchardWear(wear_k, std::min(hardness_asperity, hardness_wall));
+    tribo::AdhesionPloughing(shear_strength, ploughing_factor);
   } catch (const tribo::InvalidCoefficient &e) {
     error->all(FLERR, "fix runin/wall: {}", e.what());
   }
@@ -244,6 +266,22 @@ void FixRuninWall::init()
   const int ifix = modify->find_fix(FixRuninWearState::default_id);
   fix_wear = ifix >= 0 ? dynamic_cast<FixRuninWearState *>(modify->fix[ifix]) : nullptr;
   if (!fix_wear) error->all(FLERR, "fix runin/wall: the per-atom wear state fix is missing");
+  guard_timestep();
+}
+
+// The timestep guard of pair runin/asperity (runin_timestep_guard.h), applied to the atom types of this
+// fix's group against the wall's E* and G*. The wall's own non-finite check is in compute_contacts: the
+// guard's finite-force fix runs before post_force, so it never sees the wall force.
+void FixRuninWall::guard_timestep()
+{
+  const int ntypes = atom->ntypes;
+  std::vector<int> local(ntypes + 1, 0), in_group(ntypes + 1, 0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) local[atom->type[i]] = 1;
+  MPI_Allreduce(local.data(), in_group.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
+  runin_lammps::guard_timestep(lmp, "fix runin/wall", [&](int i, int j) {
+    return i == j && in_group[i] ? runin_lammps::PairModuli{e_star, g_star} : runin_lammps::PairModuli{};
+  });
 }
 
 void FixRuninWall::reset_dt()
@@ -296,6 +334,7 @@ void FixRuninWall::compute_contacts(bool advance)
   sums = RuninContactSums();
   const tribo::RestitutionDamping damping(restitution);
   const tribo::StaticKineticFriction friction(mu_s, mu_k, slip_weakening);
+  const tribo::AdhesionPloughing adhesion_ploughing(shear_strength, ploughing_factor);
   const tribo::ArchardWear wear(wear_k, std::min(hardness_asperity, hardness_wall),
                                 thesis_archard ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain);
   const double share_asperity = tribo::wear_share(hardness_asperity, hardness_wall);
@@ -305,14 +344,17 @@ void FixRuninWall::compute_contacts(bool advance)
   double **omega = atom->omega, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *mask = atom->mask;
+  const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
   double **wear_state = fix_wear ? fix_wear->state() : nullptr;
   const bool worn_geometry = reshape && wear_state;
   if (worn_geometry && !advance) fix_wear->refresh_geometry_all();    // volumes may have been set or restarted
   const double normal[3] = {0.0, 0.0, side_sign};    // from the wall to the asperity
 
-  // force on the wall xyz, contacts, normal force, stiffness, wall wear this step
-  double local[7] = {0, 0, 0, 0, 0, 0, 0};
+  // force on the wall xyz, contacts, elastic normal force and stiffness (servo), wall wear and gain this step
+  enum { LOCAL_FX = 0, LOCAL_FY, LOCAL_FZ, LOCAL_CONTACTS, LOCAL_FN, LOCAL_STIFFNESS, LOCAL_LOST, LOCAL_GAINED, NLOCAL };
+  double local[NLOCAL] = {0, 0, 0, 0, 0, 0, 0, 0};
+  tagint first_bad = std::numeric_limits<tagint>::max();    // lowest atom ID with a non-finite force
   const double pi = std::acos(-1.0);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -335,13 +377,27 @@ void FixRuninWall::compute_contacts(bool advance)
 
     const tribo::FlatHertzNormal contact(e_star, r, flat);
     const double stiffness = contact.stiffness(overlap);
-    double fn = contact.force(overlap) + damping.force(stiffness, rmass[i], vn);
+    const double elastic = contact.force(overlap);
+    double fn = elastic + damping.force(stiffness, rmass[i], vn);
     if (fn < 0.0) fn = 0.0;    // damping must not glue the asperity to the wall
     const double contact_radius = contact.contact_radius(overlap);
     const double kt = tribo::mindlin_stiffness(g_star, contact_radius);
-    const tribo::TangentialUpdate tangential = tribo::mindlin_coulomb(
-        kt, fn, friction, normal, vt, dt, &history[i][SPRING_X], history[i][SLIP], advance);
+    tribo::FrictionStrengthParts strength;
+    tribo::TangentialUpdate tangential;
+    if (strength_model && fn > 0.0) {
+      // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
+      strength = adhesion_ploughing.strength(fn, contact_radius, overlap);
+      const tribo::StaticKineticFriction limit = tribo::strength_friction(mu_s, mu_k, slip_weakening, strength, fn);
+      tangential =
+          tribo::mindlin_coulomb(kt, fn, limit, normal, vt, dt, &history[i][SPRING_X], history[i][SLIP], advance);
+    } else {
+      tangential = tribo::mindlin_coulomb(kt, fn, friction, normal, vt, dt, &history[i][SPRING_X],
+                                          history[i][SLIP], advance);
+    }
+    if (advance && tribo::resticks(tangential, std::sqrt(dot(vt, vt)), restick_speed))
+      history[i][SLIP] = 0.0;    // re-stuck: the contact heals to its static limit
     const double *ft = tangential.force;
+    if (!std::isfinite(fn + ft[0] + ft[1] + ft[2])) first_bad = std::min(first_bad, tag[i]);
 
     double tor[3];
     cross(normal, ft, tor);
@@ -349,38 +405,56 @@ void FixRuninWall::compute_contacts(bool advance)
       const double fk = fn * normal[k] + ft[k];
       f[i][k] += fk;
       torque[i][k] -= r * tor[k];
-      local[k] -= fk;
+      local[LOCAL_FX + k] -= fk;
     }
-    local[3] += 1.0;
-    local[4] += fn;
-    local[5] += stiffness;
+    local[LOCAL_CONTACTS] += 1.0;
+    // the servo regulates the elastic load: with the damping term its own wall speed would feed back
+    // into the force it measures and, for e < 1, make it ring with period 2 steps
+    local[LOCAL_FN] += elastic;
+    local[LOCAL_STIFFNESS] += stiffness;
 
     sums.normal_force += fn;
     for (int k = 0; k < 3; k++) sums.tangential_force[k] -= ft[k];
     sums.contacts += 1.0;
     if (!tangential.slipping) sums.sticking_contacts += 1.0;
     sums.contact_area += pi * contact_radius * contact_radius;
+    sums.adhesion_force += strength.adhesion;
+    sums.ploughing_force += strength.ploughing;
     if (advance && dt > 0.0) sums.frictional_power += std::sqrt(dot(ft, ft)) * tangential.slip_increment / dt;
     if (track_wear && tangential.slip_increment > 0.0) {
       const double worn = wear.volume(fn, tangential.slip_increment);
+      const tribo::WearExchange exchange = tribo::exchange_wear(worn, share_asperity, transfer_fraction);
       if (wear_state) {
-        wear_state[i][FixRuninWearState::VOLUME_LOST] += worn * share_asperity;
+        wear_state[i][FixRuninWearState::VOLUME_LOST] += exchange.lost_a;
+        wear_state[i][FixRuninWearState::VOLUME_GAINED] += exchange.gained_a;
         if (worn_geometry) fix_wear->refresh_geometry(i);
       }
-      local[6] += worn * (1.0 - share_asperity);
+      local[LOCAL_LOST] += exchange.lost_b;
+      local[LOCAL_GAINED] += exchange.gained_b;
       sums.wear_volume += worn;
     }
   }
 
-  double global[7];
-  MPI_Allreduce(local, global, 7, MPI_DOUBLE, MPI_SUM, world);
-  totals[FX] = global[0];
-  totals[FY] = global[1];
-  totals[FZ] = global[2];
-  totals[CONTACTS] = global[3];
-  last_normal_force = global[4];
-  last_stiffness = global[5];
-  wall_wear += global[6];
+  double global[NLOCAL];
+  MPI_Allreduce(local, global, NLOCAL, MPI_DOUBLE, MPI_SUM, world);
+  if (!std::isfinite(global[LOCAL_FX] + global[LOCAL_FY] + global[LOCAL_FZ] + wall_z)) {
+    tagint culprit = first_bad;
+    MPI_Allreduce(&first_bad, &culprit, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    const std::string atoms = culprit == std::numeric_limits<tagint>::max() ? std::string("no atom")
+                                                                            : fmt::format("atom {}", culprit);
+    error->all(FLERR, "fix runin/wall: non-finite wall force or position at step {} (first: {}, z_wall = {}, "
+               "wall velocity {} {} {}); the run is unstable (a timestep too large: dt = {} s, or a non-finite "
+               "wall velocity)", update->ntimestep, atoms, wall_z, wall_velocity[0], wall_velocity[1],
+               wall_velocity[2], update->dt);
+  }
+  totals[FX] = global[LOCAL_FX];
+  totals[FY] = global[LOCAL_FY];
+  totals[FZ] = global[LOCAL_FZ];
+  totals[CONTACTS] = global[LOCAL_CONTACTS];
+  last_normal_force = global[LOCAL_FN];
+  last_stiffness = global[LOCAL_STIFFNESS];
+  wall_wear += global[LOCAL_LOST];
+  wall_gain += global[LOCAL_GAINED];
 }
 
 double FixRuninWall::compute_vector(int n)
@@ -390,6 +464,7 @@ double FixRuninWall::compute_vector(int n)
     case WALL_DX: return wall_dx;
     case WALL_DY: return wall_dy;
     case WALL_WEAR: return wall_wear;
+    case WALL_GAIN: return wall_gain;
     default: return totals[n];
   }
 }
@@ -477,12 +552,13 @@ void FixRuninWall::read_coefficients_file(const std::string &file, const std::st
   hardness_wall = packed[8];
 }
 
-// Global restart state: the wall position, its in-plane travel, the counterface wear and the
+// Global restart state: the wall position, its in-plane travel, the counterface wear and gain and the
 // servo's last force and stiffness, so a restarted load-controlled run continues smoothly.
 void FixRuninWall::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double state[6] = {wall_z, wall_dx, wall_dy, wall_wear, last_normal_force, last_stiffness};
+  const double state[8] = {kRestartFormatMark, wall_z,    wall_dx,           wall_dy,
+                           wall_wear,          wall_gain, last_normal_force, last_stiffness};
   const int size = sizeof(state);
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(state, sizeof(state), 1, fp);
@@ -490,11 +566,15 @@ void FixRuninWall::write_restart(FILE *fp)
 
 void FixRuninWall::restart(char *buf)
 {
-  const auto *state = reinterpret_cast<const double *>(buf);
+  const auto *record = reinterpret_cast<const double *>(buf);
+  const bool with_gain = std::isnan(record[0]);    // else written before the counterface gain existed
+  const double *state = with_gain ? record + 1 : record;
   wall_z = state[0];
   wall_dx = state[1];
   wall_dy = state[2];
   wall_wear = state[3];
+  if (with_gain) ++state;
+  wall_gain = with_gain ? state[3] : 0.0;
   last_normal_force = state[4];
   last_stiffness = state[5];
 }

@@ -1,7 +1,8 @@
 // fix runin/wall: asperities (finite-size spheres) against a rigid flat counterface z = z_wall.
-// Same kernels as pair runin/asperity (Hertz + restitution damping, Mindlin spring with per-atom
-// history, static/kinetic Coulomb limit, Archard wear of both bodies). The plane slides in x-y and
-// is either displacement controlled (fixed or moving z) or load controlled by a servo.
+// Same kernels as pair runin/asperity (Hertz / worn flat + restitution damping, Mindlin spring with
+// per-atom history, static/kinetic Coulomb limit or adhesion + ploughing strength, re-stick, Archard
+// wear of both bodies with optional transfer). The plane slides in x-y and is either displacement
+// controlled (fixed or moving z) or load controlled by a servo.
 #ifdef FIX_CLASS
 // clang-format off
 FixStyle(runin/wall,FixRuninWall);
@@ -21,7 +22,7 @@ namespace LAMMPS_NS {
 class FixRuninWall : public Fix, public RuninContactSource {
  public:
   // Global vector entries (1-based in input decks).
-  enum Output { FX = 0, FY, FZ, WALL_Z, WALL_DX, WALL_DY, WALL_WEAR, CONTACTS, NOUTPUT };
+  enum Output { FX = 0, FY, FZ, WALL_Z, WALL_DX, WALL_DY, WALL_WEAR, CONTACTS, WALL_GAIN, NOUTPUT };
 
   FixRuninWall(class LAMMPS *, int, char **);
   ~FixRuninWall() override;
@@ -63,13 +64,18 @@ class FixRuninWall : public Fix, public RuninContactSource {
   double e_star, g_star, restitution, mu_s, mu_k, slip_weakening, wear_k, hardness_asperity, hardness_wall;
   bool thesis_archard;
   bool reshape;    // worn geometry (summit drop, flat) of the wear state enters the normal force
+  bool strength_model;        // kinetic limit from adhesion + ploughing (pair: friction strength)
+  double shear_strength;      // tau_s [Pa]
+  double ploughing_factor;    // scales Rabinowicz's mu_p [-]
+  double restick_speed;       // below this tangential speed a non-slipping contact heals to mu_s (0: never)
+  double transfer_fraction;   // part of the removed volume deposited on the other body
 
   double side_sign;    // +1 side lo (wall below the atoms), -1 side hi (wall above)
-  double wall_z, wall_dx, wall_dy, wall_wear;
+  double wall_z, wall_dx, wall_dy, wall_wear, wall_gain;
   Setting vel[2], vz;
   Control control;
   double load_target, servo_gain, servo_vmax;
-  double last_normal_force;    // sum F_n of the last evaluation (servo)
+  double last_normal_force;    // elastic sum F_n (no damping) of the last evaluation (servo)
   double last_stiffness;       // sum dF_n/d(overlap) of the last evaluation (servo)
   double wall_velocity[3];
   bool vz_given;
@@ -88,6 +94,7 @@ class FixRuninWall : public Fix, public RuninContactSource {
   void update_wall_velocity();
   void move_wall();
   void compute_contacts(bool advance);
+  void guard_timestep();
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,241 @@
+#!/usr/bin/env python3
+"""Run-in signature of a rough-on-flat contact and wear-aware roughness (run by ctest; stdlib only).
+
+  runin_signature.py signature --lmp LMP --workdir DIR [--nslide N] [--deck inputs/in.runin_wall]
+  runin_signature.py worn-heights --lmp LMP --workdir DIR [--mpiexec MPIEXEC --np N]
+
+signature: inputs/in.runin_wall, a flat counterface (fix runin/wall, load control) sliding over a
+Gaussian summit layer with Archard wear and the adhesion + ploughing friction strength, then a dwell
+and a restart. Asserted, with the margins below:
+  - the servo holds the normal load (end of loading and all of sliding);
+  - mu_eff falls from its break-away peak to a plateau, and the ploughing part, the one that falls as
+    the summits flatten, falls with it;
+  - Rq falls and Rsk goes from ~0 (Gaussian) to clearly negative (plateau honing);
+  - the worn volume is Archard's k F s / H_soft and splits between asperities and wall as 1/H;
+  - after a dwell the contacts have re-stuck: the break-away peak (static excess mu_s - mu_k) returns.
+worn-heights: compute runin/roughness on preset worn asperities (tests/lammps/decks/in.roughness_worn),
+every statistic and both per-atom columns against the closed form of the truncated sphere.
+"""
+import argparse
+import math
+import os
+import re
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_deck import SOURCE_DIR, fail, fresh_dir, mpi_env, thermo_blocks  # noqa: E402
+
+# Values of inputs/in.runin_wall (its defaults and its fix runin/wall line).
+LOAD = 1.0                              # N
+WEAR_K, H_ASPERITY, H_WALL = 7.0e-3, 1.19e9, 6.0e9
+STATIC_EXCESS = 0.74 - 0.57             # mu_s - mu_k
+
+# Margins of the run-in signature.
+PEAK_OVER_PLATEAU = 2.0      # break-away peak >= 2 x the plateau
+PLOUGHING_FALL = 0.5         # ploughing part at the end <= 0.5 x at the start of sliding
+RQ_FALL = 0.10               # Rq_end <= (1 - 0.10) Rq_0
+RSK_START = 0.3              # |Rsk_0| <= 0.3 (the sample is Gaussian)
+RSK_END = -0.3               # Rsk_end <= -0.3 (plateau honed)
+LOAD_AT_REST = 1e-6          # |F - F_t| / F_t at the end of loading
+LOAD_SLIDING = 1e-3          # |F - F_t| / F_t while sliding (wear lowers F by ~1e-4 between servo steps)
+ARCHARD_RANGE = (0.95, 1.001)  # worn / (k F s / H_soft): below 1 by the sliding lost to stick
+SPLIT_TOLERANCE = 1e-9       # asperity share of the worn volume vs H_wall / (H_asperity + H_wall)
+RESTICK_PEAK = 0.5           # peak after the dwell >= mu before it + 0.5 (mu_s - mu_k)
+
+
+def run_lmp(args, deck, variables, np=1):
+    command = [args.lmp, "-in", deck, "-log", "log.lammps", "-screen", "none"]
+    if np > 1:
+        command = [args.mpiexec, "-np", str(np)] + command
+    for name, value in variables.items():
+        command += ["-var", name, str(value)]
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+    log_path = os.path.join(args.workdir, "log.lammps")
+    log = open(log_path).read() if os.path.exists(log_path) else ""
+    if result.returncode != 0:
+        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout[-2000:]}\n{result.stderr[-2000:]}\n"
+             f"{log[-2000:]}")
+    return log
+
+
+def signature(args):
+    fresh_dir(args.workdir)
+    nhold, nresume = 200, 800
+    log = run_lmp(args, os.path.join(SOURCE_DIR, args.deck),
+                  {"nslide": args.nslide, "nhold": nhold, "nresume": nresume, "thermo_every": 10,
+                   "load": LOAD, "k": WEAR_K})
+    blocks = thermo_blocks(log)
+    if len(blocks) != 4:
+        fail(f"expected the load, slide, dwell and resume thermo tables, found {len(blocks)}")
+    loading, sliding, dwell, resume = blocks
+    for row in loading + sliding + dwell + resume:
+        for name, value in row.items():
+            if not math.isfinite(value):
+                fail(f"non-finite {name} at step {row['Step']:.0f}")
+
+    def col(rows, name):
+        return [row[name] for row in rows]
+
+    # 1. load control by force: the servo reaches and holds the target
+    rest_error = abs(loading[-1]["f_wall[3]"] - LOAD) / LOAD
+    sliding_error = max(abs(f - LOAD) / LOAD for f in col(sliding[1:], "f_wall[3]"))
+    print(f"servo: |F - F_t| / F_t = {rest_error:.2e} at the end of loading, <= {sliding_error:.2e} while sliding")
+    if rest_error > LOAD_AT_REST:
+        fail(f"load servo: F = {loading[-1]['f_wall[3]']!r} N at the end of loading, target {LOAD} N "
+             f"(relative error {rest_error:.2e} > {LOAD_AT_REST})")
+    if sliding_error > LOAD_SLIDING:
+        fail(f"load servo: relative error {sliding_error:.2e} > {LOAD_SLIDING} while sliding")
+
+    # 2. mu_eff: break-away peak, then a plateau; the ploughing part falls as the summits flatten
+    slide = col(sliding, "v_slide")
+    mu = col(sliding, "c_fric[3]")
+    n = len(sliding)
+    first, last = sliding[1:max(2, n // 10)], sliding[3 * n // 4:]
+    peak_row = max(first, key=lambda row: row["c_fric[3]"])
+    peak = peak_row["c_fric[3]"]
+    plateau = sum(col(last, "c_fric[3]")) / len(last)
+    plough_start, plough_end = sliding[1]["c_fric[7]"], sum(col(last, "c_fric[7]")) / len(last)
+    adhesion_start, adhesion_end = sliding[1]["c_fric[6]"], sum(col(last, "c_fric[6]")) / len(last)
+    print(f"mu_eff: peak {peak:.4f} at s = {peak_row['v_slide'] * 1e9:.0f} nm, plateau {plateau:.4f} "
+          f"(mean over s = {last[0]['v_slide'] * 1e6:.2f}-{slide[-1] * 1e6:.2f} um), ratio {peak / plateau:.2f}")
+    print(f"  ploughing part {plough_start:.4f} -> {plough_end:.4f}, adhesion part {adhesion_start:.4f} -> "
+          f"{adhesion_end:.4f}")
+    if not peak >= PEAK_OVER_PLATEAU * plateau:
+        fail(f"mu_eff peak {peak:.4f} is not >= {PEAK_OVER_PLATEAU} x the plateau {plateau:.4f}")
+    if not plough_end <= PLOUGHING_FALL * plough_start:
+        fail(f"ploughing part {plough_start:.4f} -> {plough_end:.4f}: did not fall below {PLOUGHING_FALL} x")
+    if max(mu) > max(mu[:n // 10]) + 1e-12:
+        fail(f"mu_eff exceeds its break-away peak later in the run: {max(mu):.4f} > {peak:.4f}")
+
+    # 3. roughness: Rq falls, Rsk from ~0 to negative (the highest summits are truncated)
+    rq0, rsk0, rku0 = sliding[0]["c_rough[2]"], sliding[0]["c_rough[3]"], sliding[0]["c_rough[4]"]
+    rq1, rsk1, rku1 = sliding[-1]["c_rough[2]"], sliding[-1]["c_rough[3]"], sliding[-1]["c_rough[4]"]
+    print(f"roughness: Rq {rq0 * 1e9:.2f} -> {rq1 * 1e9:.2f} nm ({(rq1 / rq0 - 1) * 100:+.1f} %), "
+          f"Rsk {rsk0:+.3f} -> {rsk1:+.3f}, Rku {rku0:.3f} -> {rku1:.3f}")
+    if not rq1 <= (1.0 - RQ_FALL) * rq0:
+        fail(f"Rq {rq0:.4e} -> {rq1:.4e}: did not fall by {RQ_FALL * 100:.0f} %")
+    if not abs(rsk0) <= RSK_START:
+        fail(f"initial Rsk {rsk0:.3f} is not within +-{RSK_START} of 0 (Gaussian sample)")
+    if not rsk1 <= RSK_END:
+        fail(f"final Rsk {rsk1:.3f} is not <= {RSK_END} (plateau-honed surface)")
+
+    # 4. wear: Archard budget of the whole slide and its 1/H split between asperities and wall
+    asperity, wall = sliding[-1]["c_fric[5]"], sliding[-1]["f_wall[7]"]
+    budget = WEAR_K * LOAD * slide[-1] / min(H_ASPERITY, H_WALL)
+    ratio = (asperity + wall) / budget
+    share = asperity / (asperity + wall)
+    share_expected = H_WALL / (H_ASPERITY + H_WALL)
+    print(f"wear: {asperity + wall:.4e} m^3 = {ratio:.4f} x k F s / H_soft; asperity share {share:.12f} "
+          f"(1/H: {share_expected:.12f})")
+    if not ARCHARD_RANGE[0] <= ratio <= ARCHARD_RANGE[1]:
+        fail(f"worn volume / Archard budget = {ratio:.4f}, outside {ARCHARD_RANGE}")
+    if abs(share - share_expected) > SPLIT_TOLERANCE:
+        fail(f"asperity share of the wear {share!r} vs H_wall / (H_asperity + H_wall) = {share_expected!r}")
+
+    # 5. dwell: no sliding, no wear; then re-stuck contacts break away at the static level again
+    if any(abs(row["c_fric[5]"] - asperity) > 1e-12 * asperity for row in dwell):
+        fail("asperity wear changed during the dwell")
+    before = dwell[-1]["c_fric[3]"]
+    again = max(col(resume, "c_fric[3]"))
+    after = resume[-1]["c_fric[3]"]
+    print(f"dwell {nhold} steps: mu_eff {before:.4f} -> break-away peak {again:.4f} -> {after:.4f}")
+    if not again >= before + RESTICK_PEAK * STATIC_EXCESS:
+        fail(f"no break-away after the dwell: peak {again:.4f} < {before:.4f} + {RESTICK_PEAK} x {STATIC_EXCESS:.2f} "
+             "(contacts did not re-stick)")
+    print("ok: run-in signature")
+
+
+def cap_height(radius, volume):
+    """Root of pi h^2 (3R - h) / 3 = V in [0, 2R] (bisection to round-off)."""
+    lo, hi = 0.0, 2.0 * radius
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        (lo, hi) = (mid, hi) if math.pi * mid * mid * (3.0 * radius - mid) / 3.0 < volume else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def worn_heights(args):
+    fresh_dir(args.workdir)
+    deck = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.roughness_worn")
+    log = run_lmp(args, deck, {}, args.np)
+    if args.np > 1 and f"with {args.np} MPI tasks" not in log:
+        fail(f"the run did not use {args.np} MPI ranks")
+
+    atoms, volumes, computes, groups = {}, {"lost": {}, "gained": {}}, [], {}
+    for line in open(deck):
+        words = line.split("#")[0].split()
+        if len(words) >= 6 and words[0] == "create_atoms" and words[2] == "single":
+            atoms[len(atoms) + 1] = {"type": int(words[1]), "z": float(words[5])}
+        elif len(words) == 5 and words[:2] == ["set", "atom"] and words[3] == "diameter":
+            atoms[int(words[2])]["radius"] = 0.5 * float(words[4])
+        elif len(words) >= 4 and words[0] == "variable" and words[1] in volumes and words[2] == "atom":
+            for atom_id, value in re.findall(r"\(id==(\d+)\)\*([0-9.]+(?:[eE][-+]?[0-9]+)?)", "".join(words[3:])):
+                volumes[words[1]][int(atom_id)] = float(value)
+        elif len(words) == 4 and words[0] == "group" and words[2] == "type":
+            groups[words[1]] = int(words[3])
+        elif len(words) >= 4 and words[0] == "compute" and words[3] == "runin/roughness":
+            rest = words[4:]
+            sign = -1.0 if "side" in rest and rest[rest.index("side") + 1] == "down" else 1.0
+            depths = [float(w) for w in rest[rest.index("bearing") + 1:] if re.fullmatch(r"[-+0-9.eE]+", w)]
+            computes.append((words[1], groups[words[2]], sign, depths))
+
+    def wear_depth(atom_id):
+        radius = atoms[atom_id]["radius"]
+        net = volumes["lost"].get(atom_id, 0.0) - volumes["gained"].get(atom_id, 0.0)
+        return cap_height(radius, net) if net >= 0.0 else net / (math.pi * radius * radius)
+
+    row = thermo_blocks(log)[-1][-1]
+    lines = open(os.path.join(args.workdir, "heights.dump")).read().splitlines()
+    start = next(k for k, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
+    columns = lines[start].split()[2:]
+    dumped = {int(float(line.split()[0])): dict(zip(columns, map(float, line.split()))) for line in lines[start + 1:]}
+    checked, worst = 0, 0.0
+    for name, atom_type, sign, depths in computes:
+        members = {k: a for k, a in atoms.items() if a["type"] == atom_type}
+        h = {k: sign * a["z"] + a["radius"] - wear_depth(k) for k, a in members.items()}
+        values = list(h.values())
+        mean = sum(values) / len(values)
+        d = [v - mean for v in values]
+        m2, m3, m4 = (sum(x ** p for x in d) / len(d) for p in (2, 3, 4))
+        rp, rv = max(values) - mean, mean - min(values)
+        stats = [sum(abs(x) for x in d) / len(d), math.sqrt(m2), m3 / m2 ** 1.5, m4 / m2 ** 2, rp, rv, rp + rv]
+        stats += [sum(1 for v in values if v >= max(values) - depth) / len(values) for depth in depths]
+        for k, value in enumerate(stats, start=1):
+            got = row[f"c_{name}[{k}]"]
+            error = abs(got - value) / abs(value)
+            if error > 1e-10:
+                fail(f"c_{name}[{k}] = {got!r}, closed form {value!r} (relative error {error:.3e} > 1e-10)")
+            worst, checked = max(worst, error), checked + 1
+        scale = max(abs(x) for x in d)
+        for atom_id, atom in dumped.items():
+            want_height = h[atom_id] - mean if atom_id in h else 0.0
+            want_depth = wear_depth(atom_id) if atom_id in h else 0.0
+            if abs(atom[f"c_{name}[1]"] - want_height) > 1e-10 * scale:
+                fail(f"atom {atom_id}: c_{name}[1] = {atom[f'c_{name}[1]']!r}, closed form {want_height!r}")
+            if abs(atom[f"c_{name}[2]"] - want_depth) > 1e-10 * max(abs(want_depth), 1e-9):
+                fail(f"atom {atom_id}: c_{name}[2] (wear depth) = {atom[f'c_{name}[2]']!r}, closed form {want_depth!r}")
+            checked += 2
+    print(f"ok: {checked} values of worn summits on {args.np} rank(s) match the closed form, worst global relative "
+          f"error {worst:.3e}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("signature")
+    p.add_argument("--lmp", required=True)
+    p.add_argument("--workdir", required=True)
+    p.add_argument("--deck", default=os.path.join("inputs", "in.runin_wall"))
+    p.add_argument("--nslide", type=int, default=16000)
+    p = sub.add_parser("worn-heights")
+    p.add_argument("--lmp", required=True)
+    p.add_argument("--workdir", required=True)
+    p.add_argument("--mpiexec", default="mpiexec")
+    p.add_argument("--np", type=int, default=1)
+    args = parser.parse_args()
+    {"signature": signature, "worn-heights": worn_heights}[args.command](args)
+
+
+if __name__ == "__main__":
+    main()
