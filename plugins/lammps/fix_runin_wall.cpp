@@ -1,6 +1,7 @@
 #include "fix_runin_wall.h"
 
 #include "fix_runin_wear_state.h"
+#include "runin_material_file.h"
 #include "runin_timestep_guard.h"
 #include "tribo/asperity_geometry.h"
 #include "tribo/contact.h"
@@ -16,7 +17,6 @@
 #include "input.h"
 #include "memory.h"
 #include "modify.h"
-#include "tokenizer.h"
 #include "update.h"
 #include "variable.h"
 
@@ -175,14 +175,16 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
   try {
     tribo::HertzNormal(e_star, 1.0);
     if (!(g_star > 0.0)) throw tribo::InvalidCoefficient("G*: effective shear modulus must be > 0");
-    tribo::RestitutionDamping{restitution};
-    tribo::StaticKineticFriction(mu_s, mu_k, slip_weakening);
     if (!(hardness_asperity > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", hardness_asperity));
     if (!(hardness_wall > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", hardness_wall));
-    tribo::ArchardWear(wear_k, std::min(hardness_asperity, hardness_wall));
-    tribo::AdhesionPloughing(shear_strength, ploughing_factor);
+    model.emplace(ContactModel{
+        tribo::RestitutionDamping(restitution), tribo::StaticKineticFriction(mu_s, mu_k, slip_weakening),
+        tribo::AdhesionPloughing(shear_strength, ploughing_factor),
+        tribo::ArchardWear(wear_k, std::min(hardness_asperity, hardness_wall),
+                           thesis_archard ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain),
+        tribo::wear_share(hardness_asperity, hardness_wall)});
   } catch (const tribo::InvalidCoefficient &e) {
     error->all(FLERR, "fix runin/wall: {}", e.what());
   }
@@ -332,12 +334,11 @@ void FixRuninWall::move_wall()
 void FixRuninWall::compute_contacts(bool advance)
 {
   sums = RuninContactSums();
-  const tribo::RestitutionDamping damping(restitution);
-  const tribo::StaticKineticFriction friction(mu_s, mu_k, slip_weakening);
-  const tribo::AdhesionPloughing adhesion_ploughing(shear_strength, ploughing_factor);
-  const tribo::ArchardWear wear(wear_k, std::min(hardness_asperity, hardness_wall),
-                                thesis_archard ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain);
-  const double share_asperity = tribo::wear_share(hardness_asperity, hardness_wall);
+  const tribo::RestitutionDamping &damping = model->damping;
+  const tribo::StaticKineticFriction &friction = model->friction;
+  const tribo::AdhesionPloughing &adhesion_ploughing = model->adhesion_ploughing;
+  const tribo::ArchardWear &wear = model->wear;
+  const double share_asperity = model->share_asperity;
   const bool track_wear = advance && wear_k > 0.0;
 
   double **x = atom->x, **v = atom->v, **f = atom->f;
@@ -469,87 +470,20 @@ double FixRuninWall::compute_vector(int n)
   }
 }
 
-// Coefficient file (potentials/*.runin, the pair_coeff file form), SI units, '#' comments:
-//   material NAME  E[Pa]  nu[-]  rho[kg/m^3]  H[Pa]
-//   pair NAME_A NAME_B  e[-]  mu_s[-]  mu_k[-]  d_c[m]  k[-]
+// Coefficient file (potentials/*.runin, the pair_coeff file form); see runin_material_file.h.
 void FixRuninWall::read_coefficients_file(const std::string &file, const std::string &asperity,
                                           const std::string &wall)
 {
-  std::string problem;
-  double packed[9] = {0};
-  if (comm->me == 0) {
-    FILE *fp = utils::open_potential(file, lmp, nullptr);
-    if (!fp) {
-      problem = fmt::format("cannot open coefficient file '{}'", file);
-    } else {
-      std::map<std::string, tribo::Material> materials;
-      std::optional<std::vector<double>> pair_values;
-      char line[1024];
-      int lineno = 0;
-      try {
-        while (fgets(line, sizeof(line), fp)) {
-          lineno++;
-          ValueTokenizer words(utils::trim_comment(line));
-          if (!words.has_next()) continue;
-          const std::string kind = words.next_string();
-          if (kind == "material") {
-            if (words.count() != 6) throw TokenizerException("material needs NAME E nu rho H", "");
-            const std::string name = words.next_string();
-            tribo::Material m;
-            m.youngs_modulus = words.next_double();
-            m.poisson_ratio = words.next_double();
-            words.next_double();    // density is not used by the contact force
-            m.hardness = words.next_double();
-            m.validate(fmt::format("{} line {}: material {}", file, lineno, name));
-            materials[name] = m;
-          } else if (kind == "pair") {
-            if (words.count() != 8) throw TokenizerException("pair needs A B e mu_s mu_k d_c k", "");
-            const std::string a = words.next_string(), b = words.next_string();
-            if ((a == asperity && b == wall) || (a == wall && b == asperity)) {
-              std::vector<double> values;
-              for (int k = 0; k < 5; k++) values.push_back(words.next_double());
-              pair_values = values;
-            }
-          } else {
-            throw TokenizerException(fmt::format("unknown entry '{}'", kind), "");
-          }
-        }
-        if (!materials.count(asperity))
-          problem = fmt::format("material '{}' not found in '{}'", asperity, file);
-        else if (!materials.count(wall))
-          problem = fmt::format("material '{}' not found in '{}'", wall, file);
-        else if (!pair_values)
-          problem = fmt::format("no 'pair {} {}' entry in '{}'", asperity, wall, file);
-        else {
-          const auto &ma = materials[asperity], &mw = materials[wall];
-          const auto &pv = *pair_values;
-          const double values[9] = {tribo::effective_modulus(ma, mw), tribo::effective_shear_modulus(ma, mw),
-                                    pv[0], pv[1], pv[2], pv[3], pv[4], ma.hardness, mw.hardness};
-          std::copy(values, values + 9, packed);
-        }
-      } catch (const TokenizerException &e) {
-        problem = fmt::format("{} line {}: {}", file, lineno, e.what());
-      } catch (const tribo::InvalidCoefficient &e) {
-        problem = e.what();
-      }
-      fclose(fp);
-    }
-  }
-  int length = problem.size();
-  MPI_Bcast(&length, 1, MPI_INT, 0, world);
-  problem.resize(length);
-  MPI_Bcast(&problem[0], length, MPI_CHAR, 0, world);
-  if (length) error->all(FLERR, "fix runin/wall: file: {}", problem);
-  MPI_Bcast(packed, 9, MPI_DOUBLE, 0, world);
-  e_star = packed[0];
-  g_star = packed[1];
-  restitution = packed[2];
-  mu_s = packed[3];
-  mu_k = packed[4];
-  slip_weakening = packed[5];
-  wear_k = packed[6];
-  hardness_asperity = packed[7];
-  hardness_wall = packed[8];
+  const RuninMaterialPair entry = read_runin_material_pair(lmp, file, asperity, wall, "fix runin/wall: file");
+  e_star = tribo::effective_modulus(entry.a, entry.b);
+  g_star = tribo::effective_shear_modulus(entry.a, entry.b);
+  restitution = entry.restitution;
+  mu_s = entry.mu_static;
+  mu_k = entry.mu_kinetic;
+  slip_weakening = entry.slip_weakening_distance;
+  wear_k = entry.wear_coefficient;
+  hardness_asperity = entry.a.hardness;
+  hardness_wall = entry.b.hardness;
 }
 
 // Global restart state: the wall position, its in-plane travel, the counterface wear and gain and the

@@ -14,7 +14,11 @@ FixStyle(runin/wall,FixRuninWall);
 
 #include "fix.h"
 #include "runin_contact_sums.h"
+#include "tribo/contact.h"
+#include "tribo/friction_strength.h"
+#include "tribo/wear.h"
 
+#include <optional>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -69,6 +73,16 @@ class FixRuninWall : public Fix, public RuninContactSource {
   double ploughing_factor;    // scales Rabinowicz's mu_p [-]
   double restick_speed;       // below this tangential speed a non-slipping contact heals to mu_s (0: never)
   double transfer_fraction;   // part of the removed volume deposited on the other body
+
+  // Kernel objects built once from the coefficients; their constructors validate them.
+  struct ContactModel {
+    runin::tribo::RestitutionDamping damping;
+    runin::tribo::StaticKineticFriction friction;
+    runin::tribo::AdhesionPloughing adhesion_ploughing;
+    runin::tribo::ArchardWear wear;
+    double share_asperity;    // part of a contact's wear volume taken by the asperity
+  };
+  std::optional<ContactModel> model;
 
   double side_sign;    // +1 side lo (wall below the atoms), -1 side hi (wall above)
   double wall_z, wall_dx, wall_dy, wall_wear, wall_gain;

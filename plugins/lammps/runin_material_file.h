@@ -1,0 +1,26 @@
+// Reader of RunIn coefficient files (potentials/*.runin), shared by pair runin/asperity and
+// fix runin/wall. SI units, '#' comments:
+//   material NAME  E[Pa]  nu[-]  rho[kg/m^3]  H[Pa]
+//   pair NAME_A NAME_B  e[-]  mu_s[-]  mu_k[-]  d_c[m]  k[-]
+#pragma once
+
+#include "tribo/contact.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+
+// One material pair as a contact sees it: body a's and body b's materials and the pair entry.
+struct RuninMaterialPair {
+  runin::tribo::Material a, b;
+  double restitution = 1.0, mu_static = 0.0, mu_kinetic = 0.0, slip_weakening_distance = 0.0,
+         wear_coefficient = 0.0;
+};
+
+// Reads the pair (material_a, material_b) on rank 0 and broadcasts it. Any problem (missing file,
+// unknown material or pair, malformed line, impossible value) is one ERROR prefixed by 'style'.
+RuninMaterialPair read_runin_material_pair(LAMMPS *lmp, const std::string &file, const std::string &material_a,
+                                           const std::string &material_b, const std::string &style);
+
+}    // namespace LAMMPS_NS
