@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -35,28 +34,16 @@ JournalBearingParameters thesis(int nodes = 256) {
 
 constexpr double kTEnd = 2.0, kDt = 1e-3;
 
-// Median over `repeats` of (wall, CPU) seconds; CPU time of this thread, which the other jobs on
-// a shared machine do not inflate.
-struct Timing {
-  double wall = 0.0, cpu = 0.0;
-};
-double thread_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-Timing median_seconds(const std::function<void()> &work, int repeats) {
-  std::vector<double> wall, cpu;
+// Median over `repeats` of the wall time (std::chrono::steady_clock), as in the other wp_* benchmarks.
+double median_seconds(const std::function<void()> &work, int repeats) {
+  std::vector<double> wall;
   for (int k = 0; k < repeats; ++k) {
     const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = thread_cpu_seconds();
     work();
-    cpu.push_back(thread_cpu_seconds() - cpu_start);
     wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   std::sort(wall.begin(), wall.end());
-  std::sort(cpu.begin(), cpu.end());
-  return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+  return wall[wall.size() / 2];
 }
 
 // Sliding distance on the output grid (the last sample at each grid time).
@@ -138,7 +125,7 @@ double error(const std::vector<double> &a, const std::vector<double> &ref) {
 int main(int argc, char **argv) {
   const std::string out_path = argc > 1 ? argv[1] : "wp_journal_bearing.csv";
   std::ofstream out(out_path + ".tmp");
-  out << "case,mu0,method,tolerance_or_step,error,wall_seconds,cpu_seconds\n";
+  out << "case,mu0,method,tolerance_or_step,error,wall_seconds\n";
   const auto p = thesis();
   for (double mu0 : {0.95, 0.55, 0.15}) {
     const auto f = SlidingFriction::static_kinetic(mu0, 0.8 * mu0);
@@ -147,19 +134,17 @@ int main(int argc, char **argv) {
                                 std::pair{CvodeIntegrator::Method::Adams, "cvode_adams"}})
       for (double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-10}) {
         std::vector<double> d;
-        const Timing sec = median_seconds([&] { d = cvode_distance(p, f, method, rtol); }, 5);
+        const double wall = median_seconds([&] { d = cvode_distance(p, f, method, rtol); }, 5);
         const double e = error(d, ref);
-        out << "thesis_2s," << mu0 << "," << name << "," << rtol << "," << e << "," << sec.wall << "," << sec.cpu << "\n";
-        std::printf("mu0 %.2f %-11s rtol %-6g error %.3e  wall %6.2f ms  cpu %6.2f ms\n", mu0, name, rtol, e,
-                    1e3 * sec.wall, 1e3 * sec.cpu);
+        out << "thesis_2s," << mu0 << "," << name << "," << rtol << "," << e << "," << wall << "\n";
+        std::printf("mu0 %.2f %-11s rtol %-6g error %.3e  wall %6.2f ms\n", mu0, name, rtol, e, 1e3 * wall);
       }
     for (double h : {1e-4, 1e-5, 1e-6}) {
       std::vector<double> d;
-      const Timing sec = median_seconds([&] { d = euler_distance(p, f, h); }, 3);
+      const double wall = median_seconds([&] { d = euler_distance(p, f, h); }, 3);
       const double e = error(d, ref);
-      out << "thesis_2s," << mu0 << ",euler_fixed," << h << "," << e << "," << sec.wall << "," << sec.cpu << "\n";
-      std::printf("mu0 %.2f %-11s h    %-6g error %.3e  wall %6.2f ms  cpu %6.2f ms\n", mu0, "euler_fixed", h, e,
-                  1e3 * sec.wall, 1e3 * sec.cpu);
+      out << "thesis_2s," << mu0 << ",euler_fixed," << h << "," << e << "," << wall << "\n";
+      std::printf("mu0 %.2f %-11s h    %-6g error %.3e  wall %6.2f ms\n", mu0, "euler_fixed", h, e, 1e3 * wall);
     }
   }
   // Long wear run-in: 1000 wear updates (adaptive step 0.5 * 2H/(k k_c)) on 512 nodes.
@@ -168,19 +153,19 @@ int main(int argc, char **argv) {
   const JournalBearingSystem system(wide, SlidingFriction::static_kinetic(0.95, 0.76));
   const double step = 0.5 * system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
   WearHistory history;
-  const Timing wear = median_seconds([&] { history = wear_in(system, step, 1000); }, 3);
-  const Timing setup = median_seconds([&] { ConformalContact c(wide.bore); (void)c; }, 3);
-  out << "wear_1000_updates_512_nodes,,wear_in," << step << ",," << wear.wall << "," << wear.cpu << "\n";
-  out << "contact_setup_512_nodes,,ConformalContact,,," << setup.wall << "," << setup.cpu << "\n";
-  std::printf("wear run-in: 1000 updates on 512 nodes (ds = %.3g m): wall %.3f s, cpu %.3f s (+ influence matrix "
-              "wall %.3f s, cpu %.3f s); status %s\n",
-              step, wear.wall, wear.cpu, setup.wall, setup.cpu, to_string(history.status));
+  const double wear = median_seconds([&] { history = wear_in(system, step, 1000); }, 3);
+  const double setup = median_seconds([&] { ConformalContact c(wide.bore); (void)c; }, 3);
+  out << "wear_1000_updates_512_nodes,,wear_in," << step << ",," << wear << "\n";
+  out << "contact_setup_512_nodes,,ConformalContact,,," << setup << "\n";
+  std::printf("wear run-in: 1000 updates on 512 nodes (ds = %.3g m): wall %.3f s (+ influence matrix wall %.3f s); "
+              "status %s\n",
+              step, wear, setup, to_string(history.status));
   out.close();
   std::rename((out_path + ".tmp").c_str(), out_path.c_str());
-  // PNG beside the CSV with Debian's matplotlib (tools/plot_journal_bearing.py wp).
+  // PNG beside the CSV with Debian's matplotlib.
   const std::string png = out_path.substr(0, out_path.rfind('.')) + ".png";
-  const std::string plot = "/usr/bin/python3 " RUNIN_SOURCE_DIR "/tools/plot_journal_bearing.py wp '" + out_path +
-                           "' '" + png + "' --title 'journal bearing, 2 s thesis case: work-precision'";
+  const std::string plot = "/usr/bin/python3 " RUNIN_SOURCE_DIR "/tools/plot_wp_journal_bearing.py '" + out_path +
+                           "' '" + png + "' 'journal bearing, 2 s thesis case: work-precision (wall time)'";
   if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "plot failed: %s\n", plot.c_str());
   std::printf("wrote %s and %s\n", out_path.c_str(), png.c_str());
   return 0;

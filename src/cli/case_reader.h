@@ -1,4 +1,4 @@
-// Typed, checked access to a TOML case file; every error names the file and the key.
+// Typed, checked access to a TOML or JSON case file; every error names the file and the key.
 #pragma once
 
 #include <map>
@@ -20,8 +20,12 @@ using Schema = std::map<std::string, std::set<std::string>>;
 
 std::string type_name(const toml::node &node);
 
-// Parses `path`; a syntax error becomes InputError "<file>:<line>:<col>: invalid TOML: ...".
+// Parses a case file into a TOML table: `*.json` as JSON (objects become tables, so every case
+// reader and its key errors work unchanged), anything else as TOML. A syntax error becomes
+// InputError "<file>:<line>:<col>: invalid TOML: ..." (or "invalid JSON: ...").
 toml::table parse_toml(const std::string &path);
+// JSON text -> TOML table; `path` only names the file in errors. Throws InputError.
+toml::table parse_json_case(const std::string &text, const std::string &path);
 
 // Reads keys by dotted path ("pin.mass"); `fallback` makes a key optional.
 class CaseReader {

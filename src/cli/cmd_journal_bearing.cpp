@@ -34,6 +34,12 @@ struct Options {
   std::string case_path, output_dir;
   std::optional<std::string> law_path;
   bool no_plot = false;
+  long max_wear_updates = 20000;  // each re-solves the contact: ~1 ms on 512 nodes, so ~20 s
+};
+
+// Thrown from the sample observer to stop a run that would exceed the wear-update cap.
+struct WearCapReached {
+  double t, distance;
 };
 
 struct Curve {
@@ -43,7 +49,17 @@ struct Curve {
   continuum::JournalBearingSummary summary;
 };
 
-Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &friction, bool frames) {
+double wear_step(const JournalBearingCase &c, const continuum::JournalBearingSystem &system) {
+  if (c.run.fixed_wear_step > 0.0) return c.run.fixed_wear_step;
+  return c.run.wear_step_fraction *
+         system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
+}
+
+// Each wear update re-solves the conformal contact, so the number of updates sets the run time.
+// The journal follows the drive (lagging by the bounded coupling wind-up), so R theta_drive(t_end)
+// estimates the sliding distance before the run; the observer enforces the cap during it.
+Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &friction, bool frames,
+               long max_wear_updates) {
   const continuum::JournalBearingSystem system = [&] {
     try {
       return continuum::JournalBearingSystem(c.parameters, friction);
@@ -51,11 +67,43 @@ Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &fr
       throw InputError(c.path + ": key 'contact.arc_half_angle': " + e.what());
     }
   }();
+  const auto &p = c.parameters;
+  const double step = wear_step(c, system);
+  const bool wearing = p.wear_coefficient > 0.0 && std::isfinite(step) && step > 0.0;
+  const auto cap_message = [&](const std::string &how_many) {
+    return fmt::format("journal bearing: {} wear updates (wear step {:.4g} m{}) exceed the cap of {} "
+                       "(--max-wear-updates): lower wear.coefficient or raise the cap",
+                       how_many, step, c.run.fixed_wear_step > 0.0 ? ", fixed" : " = step_fraction x 2H/(k k_c)",
+                       max_wear_updates);
+  };
+  const double drive_distance = p.bore.shaft_radius * std::abs(p.drive_angle(c.run.t_end));
+  // The journal cannot break away while the coupling torque k theta_d + c w_d stays below
+  // mu_static W R (N >= W): then there is no wear to count.
+  const double max_coupling_torque =
+      p.coupling_stiffness * std::abs(p.drive_angle(c.run.t_end)) +
+      p.coupling_damping * std::max(std::abs(p.ramp_angle / p.ramp_time), std::abs(p.run_speed));
+  const bool fixed_static_limit = c.friction_model == "constant" || c.friction_model == "static_kinetic";
+  const bool may_slip =
+      !fixed_static_limit || max_coupling_torque >= friction.static_coefficient() * p.load * p.bore.shaft_radius;
+  if (wearing && may_slip && drive_distance / step > static_cast<double>(max_wear_updates))
+    throw std::runtime_error(cap_message(fmt::format("about {:.3g}", drive_distance / step)) +
+                             fmt::format(" (sliding distance ~ R theta_drive = {:.4g} m)", drive_distance));
+  const double distance_cap = wearing ? step * static_cast<double>(max_wear_updates) : HUGE_VAL;
+
   Curve curve;
-  curve.report = continuum::simulate(
-      system, c.run, [&](const JournalBearingSample &s) { curve.samples.push_back(s); },
-      frames ? continuum::JournalBearingFrameObserver([&](const JournalBearingFrame &f) { curve.frames.push_back(f); })
-             : nullptr);
+  try {
+    curve.report = continuum::simulate(
+        system, c.run,
+        [&](const JournalBearingSample &s) {
+          if (s.distance > distance_cap) throw WearCapReached{s.t, s.distance};
+          curve.samples.push_back(s);
+        },
+        frames ? continuum::JournalBearingFrameObserver([&](const JournalBearingFrame &f) { curve.frames.push_back(f); })
+               : nullptr);
+  } catch (const WearCapReached &stop) {
+    throw std::runtime_error(cap_message(fmt::format("more than {}", max_wear_updates)) +
+                             fmt::format(" (stopped at t = {:.6g} s, s = {:.4g} m)", stop.t, stop.distance));
+  }
   if (!curve.report.ok())
     throw std::runtime_error(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
   curve.summary = continuum::summarise(curve.samples);
@@ -125,25 +173,21 @@ std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, 
 
 int run(const Options &o) {
   const JournalBearingCase c = read_journal_bearing_case(o.case_path, o.law_path);
-  const Curve main_curve = run_case(c, *c.friction, true);
+  const Curve main_curve = run_case(c, *c.friction, true, o.max_wear_updates);
   std::vector<Curve> sweep;
-  for (double mu0 : c.sweep_mu0) sweep.push_back(run_case(c, friction_with_mu0(c, mu0), false));
+  for (double mu0 : c.sweep_mu0) sweep.push_back(run_case(c, friction_with_mu0(c, mu0), false, o.max_wear_updates));
 
-  // Everything is computed; only now touch the output directory.
-  std::error_code error;
-  fs::create_directories(o.output_dir, error);
-  if (error) throw std::runtime_error("cannot create " + o.output_dir + ": " + error.message());
-  const fs::path dir(o.output_dir);
-  StagedFile csv(dir / "journal_bearing.csv");
+  // Everything is computed; the output set is staged and moved in only when complete.
+  StagedOutput out(o.output_dir, {"journal_bearing.csv", "journal_bearing.png", "journal_bearing_sweep.csv",
+                                  "journal_bearing_sweep_summary.csv", "journal_bearing_mu0.png", "vtk/bore.pvd",
+                                  "vtk/bore_*.vts"});
   std::string text = std::string(kColumns) + "\n";
   for (const auto &s : main_curve.samples) text += row(s) + "\n";
-  csv.write(text);
+  out.write("journal_bearing.csv", text);
+  std::vector<std::string> written = {"journal_bearing.csv"};
 
-  std::optional<StagedFile> sweep_csv, sweep_summary, png, sweep_png;
   if (!sweep.empty()) {
-    sweep_csv.emplace(dir / "journal_bearing_sweep.csv");
     std::string t = std::string("mu0,") + kColumns + "\n";
-    sweep_summary.emplace(dir / "journal_bearing_sweep_summary.csv");
     std::string summary = "mu0,peak_friction_force_N,peak_time_s,breakaway_time_s,steady_time_s,steady_mu,wear_volume_m3\n";
     for (std::size_t k = 0; k < sweep.size(); ++k) {
       for (const auto &s : sweep[k].samples) t += fmt::format("{:.12g},", c.sweep_mu0[k]) + row(s) + "\n";
@@ -153,27 +197,28 @@ int run(const Options &o) {
                              m.steady_time < 0 ? "nan" : fmt::format("{:.12g}", m.steady_time), m.steady_mu,
                              m.wear_volume);
     }
-    sweep_csv->write(t);
-    sweep_summary->write(summary);
+    out.write("journal_bearing_sweep.csv", t);
+    out.write("journal_bearing_sweep_summary.csv", summary);
+    written.insert(written.end(), {"journal_bearing_sweep.csv", "journal_bearing_sweep_summary.csv"});
   }
   if (!o.no_plot) {
-    png.emplace(dir / "journal_bearing.png");
-    run_plot({"curve", csv.temp_path().string(), png->temp_path().string(), "--title", c.title});
-    if (sweep_csv) {
-      sweep_png.emplace(dir / "journal_bearing_mu0.png");
-      run_plot({"sweep", sweep_csv->temp_path().string(), sweep_png->temp_path().string(), "--title", c.title});
+    run_plot({"curve", out.file("journal_bearing.csv").string(), out.file("journal_bearing.png").string(), "--title",
+              c.title});
+    written.push_back("journal_bearing.png");
+    if (!sweep.empty()) {
+      run_plot({"sweep", out.file("journal_bearing_sweep.csv").string(), out.file("journal_bearing_mu0.png").string(),
+                "--title", c.title});
+      written.push_back("journal_bearing_mu0.png");
     }
   }
   std::string vtk_note = "none (built without VTK)";
 #ifdef RUNIN_HAVE_VTK
   const continuum::ConformalContact contact(c.parameters.bore);
-  const auto written = coupling::write_surface_series(surface_frames(c, contact, main_curve.frames),
-                                                      (dir / "vtk").string(), "bore");
-  vtk_note = fmt::format("{} ({} frame(s))", written.back(), main_curve.frames.size());
+  const auto vtk_written = coupling::write_surface_series(surface_frames(c, contact, main_curve.frames),
+                                                          (out.staging() / "vtk").string(), "bore");
+  vtk_note = fmt::format("{} ({} frame(s))", out.destination_of(vtk_written.back()).string(), main_curve.frames.size());
 #endif
-  csv.commit();
-  for (auto *f : {&sweep_csv, &sweep_summary, &png, &sweep_png})
-    if (*f) (*f)->commit();
+  out.commit();
 
   const auto &s = main_curve.summary;
   const auto &p = c.parameters;
@@ -207,9 +252,9 @@ int run(const Options &o) {
                  m.peak_friction_force, or_none(m.breakaway_time), or_none(m.steady_time), m.steady_mu);
     }
   }
-  fmt::print("  wrote             {}", csv.destination().string());
-  for (auto *f : {&sweep_csv, &sweep_summary, &png, &sweep_png})
-    if (*f) fmt::print(", {}", (*f)->destination().string());
+  fmt::print("  wrote            ");
+  for (std::size_t i = 0; i < written.size(); ++i)
+    fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
   fmt::print("\n  VTK               {}\n", vtk_note);
   return 0;
 }
@@ -219,10 +264,14 @@ int run(const Options &o) {
 Subcommand add_journal_bearing_command(CLI::App &app) {
   auto options = std::make_shared<Options>();
   auto *cmd = app.add_subcommand("journal-bearing", "Dry journal bearing run-in: contact, friction torque, wear (thesis ch. 5)");
-  cmd->add_option("case", options->case_path, "case file (TOML)")->required();
+  cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
   cmd->add_option("--law", options->law_path, "law file from fit-law, for friction.model = \"law_file\"");
   cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required();
   cmd->add_flag("--no-plot", options->no_plot, "write CSV and VTK only");
+  cmd->add_option("--max-wear-updates", options->max_wear_updates,
+                  "stop with an error instead of running more wear updates (contact re-solves) than this")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   return {cmd, [options] { return run(*options); }};
 }
 

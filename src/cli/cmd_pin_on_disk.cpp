@@ -47,8 +47,18 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
   const continuum::PinOnDiskSystem system(c.parameters, *c.friction);
   std::vector<PinOnDiskSample> samples;
   curve.report = continuum::simulate(system, c.run, [&](const PinOnDiskSample &s) { samples.push_back(s); });
-  if (!curve.report.ok())
-    throw std::runtime_error(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
+  if (!curve.report.ok()) {
+    std::string message = std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message;
+    // Friction falling with speed under a held torque: V grows without bound (thesis eq. 4.5, minus sign).
+    const std::size_t n = samples.size();
+    if (message.find("[CV_TOO_MUCH_WORK]") != std::string::npos && c.friction->speed_coefficient() < 0.0 && n >= 2 &&
+        samples[n - 1].speed > samples[n - 2].speed && samples[n - 1].speed > 0.0)
+      message = fmt::format(
+          "CVODE could not advance past t = {:.6g} s (too much work): the sliding speed runs away under "
+          "velocity-weakening friction (alpha < 0; V = {:.4g} m/s at t = {:.6g} s and rising)",
+          curve.report.end_time, samples[n - 1].speed, samples[n - 1].t);
+    throw std::runtime_error(message);
+  }
   curve.summary = continuum::summarise(samples);
   curve.rows.reserve(samples.size());
   for (const auto &s : samples) curve.rows.push_back({s});
@@ -152,7 +162,7 @@ std::string or_none(double t) { return t < 0.0 ? std::string("none") : fmt::form
 
 CLI::App *add_pin_on_disk_command(CLI::App &app, PinOnDiskOptions &o) {
   auto *cmd = app.add_subcommand("pin-on-disk", "Pin-on-disk run-in curve with contact and wear (thesis ch. 4)");
-  cmd->add_option("case", o.case_path, "case file (TOML)")->required();
+  cmd->add_option("case", o.case_path, "case file (TOML, or JSON if it ends in .json)")->required();
   cmd->add_option("--law", o.law_path, "law file from fit-law, for friction.model = \"law_file\"");
   cmd->add_option("--output-dir", o.output_dir,
                   "directory for pin_on_disk.csv/.png, pin_face_*.vts/.pvd and the mu0 sweep files")
@@ -178,17 +188,12 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
     sweep.push_back({mu0, variant.parameters.applied_torque, run_case(variant, false)});
   }
 
-  // Everything is computed; only now touch the output directory.
-  std::error_code error;
-  fs::create_directories(o.output_dir, error);
-  if (error) throw std::runtime_error("cannot create " + o.output_dir + ": " + error.message());
-  const fs::path dir(o.output_dir);
-  StagedFile csv(dir / "pin_on_disk.csv");
-  csv.write(csv_text(curve.rows));
-  std::optional<StagedFile> png, sweep_csv, sweep_summary, sweep_png;
+  // Everything is computed; the output set is staged and moved in only when complete.
+  StagedOutput out(o.output_dir, {"pin_on_disk.csv", "pin_on_disk.png", "pin_on_disk_mu0.csv", "pin_on_disk_mu0.png",
+                                  "pin_on_disk_mu0_summary.csv", "pin_face.pvd", "pin_face_*.vts"});
+  out.write("pin_on_disk.csv", csv_text(curve.rows));
+  std::vector<std::string> written = {"pin_on_disk.csv"};
   if (!sweep.empty()) {
-    sweep_csv.emplace(dir / "pin_on_disk_mu0.csv");
-    sweep_summary.emplace(dir / "pin_on_disk_mu0_summary.csv");
     std::string curves = "mu0,t_s,friction_force_N,mu,speed_m_s,sliding_distance_m,wear_volume_m3\n";
     std::string table =
         "mu0,applied_torque_N_m,breakaway_s,peak_friction_force_N,peak_time_s,steady_time_s,steady_mu,"
@@ -202,25 +207,25 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
                            s.breakaway_time, s.peak_friction_force, s.peak_time, s.steady_time, s.steady_mu,
                            run.curve.rows.back().wear_volume);
     }
-    sweep_csv->write(curves);
-    sweep_summary->write(table);
+    out.write("pin_on_disk_mu0.csv", curves);
+    out.write("pin_on_disk_mu0_summary.csv", table);
+    written.insert(written.end(), {"pin_on_disk_mu0.csv", "pin_on_disk_mu0_summary.csv"});
   }
   if (!o.no_plot) {
-    png.emplace(dir / "pin_on_disk.png");
-    plot("plot_curves.py", {csv.temp_path().string(), png->temp_path().string(), "--title", c.title});
+    plot("plot_curves.py",
+         {out.file("pin_on_disk.csv").string(), out.file("pin_on_disk.png").string(), "--title", c.title});
+    written.push_back("pin_on_disk.png");
     if (!sweep.empty()) {
-      sweep_png.emplace(dir / "pin_on_disk_mu0.png");
-      plot("plot_curves.py", {"--overlay", sweep_csv->temp_path().string(), sweep_png->temp_path().string(),
-                              "--title", c.title + ": mu0 sweep"});
+      plot("plot_curves.py", {"--overlay", out.file("pin_on_disk_mu0.csv").string(),
+                              out.file("pin_on_disk_mu0.png").string(), "--title", c.title + ": mu0 sweep"});
+      written.push_back("pin_on_disk_mu0.png");
     }
   }
-  std::vector<std::string> vtk_files;
+  std::string vtk_index;
 #ifdef RUNIN_HAVE_VTK
-  if (!curve.frames.empty()) vtk_files = write_frames(curve.frames, dir);
+  if (!curve.frames.empty()) vtk_index = out.destination_of(write_frames(curve.frames, out.staging()).back()).string();
 #endif
-  csv.commit();
-  for (auto *f : {&png, &sweep_csv, &sweep_summary, &sweep_png})
-    if (*f) (*f)->commit();
+  out.commit();
 
   const auto &s = curve.summary;
   const auto &p = c.parameters;
@@ -263,10 +268,10 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
                  run.curve.rows.back().wear_volume);
     }
   }
-  fmt::print("  wrote             {}", csv.destination().string());
-  for (auto *f : {&png, &sweep_csv, &sweep_summary, &sweep_png})
-    if (*f) fmt::print(", {}", (*f)->destination().string());
-  if (!vtk_files.empty()) fmt::print(", {} ({} frames)", vtk_files.back(), curve.frames.size());
+  fmt::print("  wrote            ");
+  for (std::size_t i = 0; i < written.size(); ++i)
+    fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
+  if (!vtk_index.empty()) fmt::print(", {} ({} frames)", vtk_index, curve.frames.size());
   fmt::print("\n");
   return 0;
 }

@@ -94,11 +94,16 @@ WearPass run_wear(continuum::RingLinerWear &wear, const std::vector<PistonRingSa
     const auto &s = samples[i];
     if (i > 0) {
       const auto &prev = samples[i - 1];
+      bool ok = true;
       try {
-        wear.slide(prev.ring_position, s.ring_position, prev.normal_load, s.normal_load);
+        ok = wear.slide(prev.ring_position, s.ring_position, prev.normal_load, s.normal_load);
       } catch (const std::out_of_range &e) {
         throw std::runtime_error(fmt::format("wear at t = {:.6g} s: {}", s.t, e.what()));
       }
+      if (!ok)
+        throw std::runtime_error(fmt::format("{} at t = {:.6g} s: {} (wear.k = {:g}; not a run-in any more)",
+                                             continuum::to_string(wear.status()), s.t, wear.message(),
+                                             wear.archard().coefficient()));
     }
     const auto contact = wear.pressure(s.ring_position, s.normal_load);
     if (i == 0) pass.initial_peak = contact.peak;
@@ -204,14 +209,11 @@ int run(const Options &o, const PistonRingPlotter &plot) {
   std::vector<SweepRow> sweep;
   for (double mu0 : c.sweep_mu0) sweep.push_back({mu0, run_dynamics(c, piston_ring_friction_with_mu0(c, mu0))});
 
-  // Everything is computed; only now touch the output directory.
-  std::error_code error;
-  fs::create_directories(o.output_dir, error);
-  if (error) throw std::runtime_error("cannot create " + o.output_dir + ": " + error.message());
-  const fs::path dir(o.output_dir);
-  StagedFile csv(dir / "piston_ring.csv");
-  csv.write(csv_text(curve.samples, wear_pass.rows));
-  StagedFile liner_csv(dir / "piston_ring_liner.csv");
+  // Everything is computed; the output set is staged and moved in only when complete.
+  StagedOutput out(o.output_dir, {"piston_ring.csv", "piston_ring_liner.csv", "piston_ring_face.csv",
+                                  "piston_ring_mu0.csv", "piston_ring.png", "piston_ring_mu0.png", "vtk/liner.pvd",
+                                  "vtk/liner_*.vts", "vtk/ring_face.pvd", "vtk/ring_face_*.vts"});
+  out.write("piston_ring.csv", csv_text(curve.samples, wear_pass.rows));
   {
     const double tdc = p.crank.top_dead_centre();
     std::string text = "x_m,distance_from_tdc_m,wear_depth_m\n";
@@ -219,9 +221,8 @@ int run(const Options &o, const PistonRingPlotter &plot) {
       const double x = wear.liner_cell_centre(j);
       text += fmt::format("{:.12g},{:.12g},{:.12g}\n", x, tdc - x, wear.liner_wear()[j]);
     }
-    liner_csv.write(text);
+    out.write("piston_ring_liner.csv", text);
   }
-  StagedFile ring_csv(dir / "piston_ring_face.csv");
   {
     const auto &last = curve.samples.back();
     const auto contact = wear.pressure(last.ring_position, last.normal_load);
@@ -231,38 +232,34 @@ int run(const Options &o, const PistonRingPlotter &plot) {
       text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g}\n", z, c.wear_settings.crown_height * u * u,
                           wear.ring_wear()[i], contact.pressure[i]);
     }
-    ring_csv.write(text);
+    out.write("piston_ring_face.csv", text);
   }
-  std::optional<StagedFile> sweep_csv, png, sweep_png;
+  std::vector<std::string> written = {"piston_ring.csv", "piston_ring_liner.csv", "piston_ring_face.csv"};
   if (!sweep.empty()) {
-    sweep_csv.emplace(dir / "piston_ring_mu0.csv");
     std::string text = "mu0,t_s,friction_force_N,land_force_N,speed_m_s,state_slip\n";
     for (const auto &row : sweep)
       for (const auto &s : row.curve.samples)
         text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{}\n", row.mu0, s.t, s.friction_force,
                             s.land_force, s.speed, s.state == continuum::ContactState::Slip ? 1 : 0);
-    sweep_csv->write(text);
+    out.write("piston_ring_mu0.csv", text);
+    written.push_back("piston_ring_mu0.csv");
   }
   if (!o.no_plot) {
-    png.emplace(dir / "piston_ring.png");
-    plot("plot_piston_ring.py", {"curve", csv.temp_path().string(), liner_csv.temp_path().string(),
-                                 ring_csv.temp_path().string(), png->temp_path().string(), "--title", c.title});
-    if (sweep_csv) {
-      sweep_png.emplace(dir / "piston_ring_mu0.png");
-      plot("plot_piston_ring.py",
-           {"sweep", sweep_csv->temp_path().string(), sweep_png->temp_path().string(), "--title", c.title});
+    plot("plot_piston_ring.py", {"curve", out.file("piston_ring.csv").string(), out.file("piston_ring_liner.csv").string(),
+                                 out.file("piston_ring_face.csv").string(), out.file("piston_ring.png").string(),
+                                 "--title", c.title});
+    written.push_back("piston_ring.png");
+    if (!sweep.empty()) {
+      plot("plot_piston_ring.py", {"sweep", out.file("piston_ring_mu0.csv").string(),
+                                   out.file("piston_ring_mu0.png").string(), "--title", c.title});
+      written.push_back("piston_ring_mu0.png");
     }
   }
-  csv.commit();
-  liner_csv.commit();
-  ring_csv.commit();
-  if (sweep_csv) sweep_csv->commit();
-  if (png) png->commit();
-  if (sweep_png) sweep_png->commit();
   std::vector<std::string> vtk_files;
 #ifdef RUNIN_HAVE_VTK
-  vtk_files = write_frames(wear, wear_pass.snapshots, c.circumferential_points, dir);
+  vtk_files = write_frames(wear, wear_pass.snapshots, c.circumferential_points, out.staging());
 #endif
+  out.commit();
 
   // One-screen summary.
   const auto &s = curve.summary;
@@ -316,12 +313,11 @@ int run(const Options &o, const PistonRingPlotter &plot) {
                  row.curve.summary.peak_friction_force, or_none(row.curve.summary.breakaway_time),
                  or_none(row.curve.summary.steady_time), row.curve.summary.steady_mu);
   }
-  fmt::print("  wrote             {}, {}, {}", csv.destination().string(), liner_csv.destination().string(),
-             ring_csv.destination().string());
-  if (sweep_csv) fmt::print(", {}", sweep_csv->destination().string());
-  if (png) fmt::print(", {}", png->destination().string());
-  if (sweep_png) fmt::print(", {}", sweep_png->destination().string());
-  if (!vtk_files.empty()) fmt::print(", {} VTK files ({})", vtk_files.size(), vtk_files.back());
+  fmt::print("  wrote            ");
+  for (std::size_t i = 0; i < written.size(); ++i)
+    fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
+  if (!vtk_files.empty())
+    fmt::print(", {} VTK files ({})", vtk_files.size(), out.destination_of(vtk_files.back()).string());
   fmt::print("\n");
   return 0;
 }
@@ -331,7 +327,7 @@ int run(const Options &o, const PistonRingPlotter &plot) {
 PistonRingCommand add_piston_ring_command(CLI::App &app, PistonRingPlotter plot) {
   auto options = std::make_shared<Options>();
   auto *cmd = app.add_subcommand("piston-ring", "Piston ring in a cylinder: run-in friction and wear (thesis ch. 6)");
-  cmd->add_option("case", options->case_path, "case file (TOML)")->required();
+  cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
   cmd->add_option("--law", options->law_path, "law file from fit-law, for friction.model = \"law_file\"");
   cmd->add_option("--output-dir", options->output_dir,
                   "directory for piston_ring*.csv, piston_ring*.png and vtk/ (liner and ring-face frames)")

@@ -1,5 +1,6 @@
 // runin: command-line driver of the continuum side.
 //   runin fit-law --input FILE --distance-column NAME --mu-column NAME --output law.json
+// A case file is TOML, or JSON when its name ends in .json (same keys).
 //   runin pin-on-disk CASE.toml [--law law.json] --output-dir DIR [--no-plot]
 //   runin feedback CASE.toml --output-dir DIR [--no-plot]
 //   runin journal-bearing CASE.toml [--law law.json] --output-dir DIR [--no-plot]
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -156,45 +158,42 @@ int feedback(const std::string &case_path, const std::string &output_dir, bool p
     }
   }
 
-  // Everything is computed; only now touch the output directory.
-  std::error_code error;
-  fs::create_directories(output_dir, error);
-  if (error) throw RunError("cannot create " + output_dir + ": " + error.message());
-  const fs::path dir(output_dir);
-  StagedFile csv(dir / "feedback.csv");
+  // Everything is computed; the output set is staged and moved in only when complete.
+  StagedOutput out(output_dir, {"feedback.csv", "feedback.png", "feedback_sweep.csv", "feedback_sweep.png"});
   std::string text = "t,R,mu,k,wear\n";
   for (const auto &s : samples)
     text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", s.t, s.roughness, s.mu, s.wear_rate, s.wear);
-  csv.write(text);
-  std::optional<StagedFile> sweep_csv, curves_csv, png, sweep_png;
+  out.write("feedback.csv", text);
+  std::vector<std::string> written = {"feedback.csv"};
   if (c.sweep) {
-    sweep_csv.emplace(dir / "feedback_sweep.csv");
     std::string sweep_text = c.sweep->parameter + ",R_star,mu_R_star,k_R_star,time_to_1pct,time_to_1pct_exact\n";
     for (const auto &r : rows)
       sweep_text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g}\n", r.value, r.r_star, r.mu_star, r.k_star,
                                 r.settle < 0.0 ? std::string("nan") : fmt::format("{:.12g}", r.settle),
                                 r.settle_exact);
-    sweep_csv->write(sweep_text);
+    out.write("feedback_sweep.csv", sweep_text);
+    written.push_back("feedback_sweep.csv");
   }
   if (plot) {
-    png.emplace(dir / "feedback.png");
     run_python_plot("plot_feedback.py",
-                    {"curve", csv.temp_path().string(), png->temp_path().string(), "--title", c.title, "--r-star",
-                     g17(rs), "--r-min-wear", g17(m.min_wear_roughness()), "--r-min-friction",
+                    {"curve", out.file("feedback.csv").string(), out.file("feedback.png").string(), "--title",
+                     c.title, "--r-star", g17(rs), "--r-min-wear", g17(m.min_wear_roughness()), "--r-min-friction",
                      g17(m.min_friction_roughness()), "--mu-min", g17(m.min_mu())});
+    written.push_back("feedback.png");
     if (c.sweep) {
-      curves_csv.emplace(dir / "feedback_sweep_curves.csv");  // plot input only, never committed
-      curves_csv->write(sweep_curves);
-      sweep_png.emplace(dir / "feedback_sweep.png");
-      run_python_plot("plot_feedback.py", {"sweep", curves_csv->temp_path().string(),
-                                           sweep_csv->temp_path().string(), sweep_png->temp_path().string(),
-                                           "--title", c.title, "--parameter", c.sweep->parameter});
+      const fs::path curves_csv = out.scratch("feedback_sweep_curves.csv");  // plot input only
+      {
+        std::ofstream curves(curves_csv, std::ios::binary);
+        curves << sweep_curves;
+        if (!curves) throw RunError("cannot write " + curves_csv.string());
+      }
+      run_python_plot("plot_feedback.py", {"sweep", curves_csv.string(), out.file("feedback_sweep.csv").string(),
+                                           out.file("feedback_sweep.png").string(), "--title", c.title,
+                                           "--parameter", c.sweep->parameter});
+      written.push_back("feedback_sweep.png");
     }
   }
-  csv.commit();
-  if (sweep_csv) sweep_csv->commit();
-  if (png) png->commit();
-  if (sweep_png) sweep_png->commit();
+  out.commit();
 
   const auto &k = m.coefficients();
   const bool dry = m.kind() == tribo::FeedbackKind::dry;
@@ -228,10 +227,9 @@ int feedback(const std::string &case_path, const std::string &output_dir, bool p
       fmt::print("    {:>12.6g} {:>12.6g} {:>12.6g} {:>12.6g} {:>12}\n", r.value, r.r_star, r.mu_star, r.k_star,
                  or_none(r.settle));
   }
-  fmt::print("  wrote             {}", csv.destination().string());
-  if (sweep_csv) fmt::print(", {}", sweep_csv->destination().string());
-  if (png) fmt::print(", {}", png->destination().string());
-  if (sweep_png) fmt::print(", {}", sweep_png->destination().string());
+  fmt::print("  wrote            ");
+  for (std::size_t i = 0; i < written.size(); ++i)
+    fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
   fmt::print("\n");
   return 0;
 }
@@ -244,8 +242,11 @@ int dump_to_vtk(const std::string &dump_path, const std::string &output_dir, con
   } catch (const coupling::InputFormatError &e) {
     throw InputError(e.what());
   }
-  const auto written = coupling::write_vtk_series(snapshots, dump_path, output_dir, stem);
-  fmt::print("runin dump-to-vtk: {} snapshot(s) of {} -> {}\n", snapshots.size(), dump_path, written.back());
+  StagedOutput out(output_dir, {stem + ".pvd", stem + "_*.vtp"});
+  const auto written = coupling::write_vtk_series(snapshots, dump_path, out.staging().string(), stem);
+  out.commit();
+  fmt::print("runin dump-to-vtk: {} snapshot(s) of {} -> {}\n", snapshots.size(), dump_path,
+             out.destination_of(written.back()).string());
   return 0;
 #else
   (void)dump_path, (void)output_dir, (void)stem;
@@ -278,7 +279,7 @@ int main(int argc, char **argv) {
   std::string fb_case, fb_dir;
   bool fb_no_plot = false;
   auto *fb_cmd = app.add_subcommand("feedback", "Two-mechanism roughness-feedback model R(t), mu(t) (thesis ch. 3)");
-  fb_cmd->add_option("case", fb_case, "case file (TOML)")->required();
+  fb_cmd->add_option("case", fb_case, "case file (TOML, or JSON if it ends in .json)")->required();
   fb_cmd->add_option("--output-dir", fb_dir, "directory for feedback.csv and feedback.png (+ sweep files)")->required();
   fb_cmd->add_flag("--no-plot", fb_no_plot, "write the CSV(s) only");
 

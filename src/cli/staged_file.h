@@ -1,8 +1,15 @@
-// Atomic output: write to a temporary file in the destination's directory, then rename.
+// Atomic output.
+//   StagedFile: one file, written to a temporary name in the destination's directory, then renamed.
+//   StagedOutput: a run's whole output set (CSV, PNG, VTK series), written into a temporary sibling
+//   of the output directory and moved in only by commit(), after everything succeeded. commit()
+//   also removes the files an earlier run of the same subcommand left (its `owned` patterns), so
+//   the directory never mixes runs. Without commit() the staging directory is removed and the
+//   output directory keeps its previous complete contents (or does not exist).
 #pragma once
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace runin::cli {
 
@@ -21,6 +28,35 @@ class StagedFile {
  private:
   std::filesystem::path destination_;
   std::filesystem::path temp_;
+  bool committed_ = false;
+};
+
+class StagedOutput {
+ public:
+  // `owned`: glob patterns (fnmatch, relative to `directory`, e.g. "pin_face_*.vts") matching every
+  // file this subcommand may write. Creates the staging directory (and the parent of `directory`).
+  StagedOutput(std::filesystem::path directory, std::vector<std::string> owned);
+  ~StagedOutput();  // removes the staging directory unless committed
+  StagedOutput(const StagedOutput &) = delete;
+  StagedOutput &operator=(const StagedOutput &) = delete;
+
+  // Staged path of directory/name (subdirectories created); committed with the rest.
+  std::filesystem::path file(const std::string &name) const;
+  // Staged path of a helper file (e.g. a plot input) that is never committed.
+  std::filesystem::path scratch(const std::string &name) const;
+  void write(const std::string &name, const std::string &content) const;  // throws std::runtime_error
+  std::filesystem::path destination(const std::string &name) const { return directory_ / name; }
+  const std::filesystem::path &staging() const { return staging_; }
+  // Final path of a path inside the staging directory (e.g. one returned by a VTK writer).
+  std::filesystem::path destination_of(const std::filesystem::path &staged) const;
+
+  // Moves every staged file into place (series indices such as .pvd last), then removes the
+  // owned files of earlier runs that this run did not write. Returns the committed paths.
+  std::vector<std::filesystem::path> commit();
+
+ private:
+  std::filesystem::path directory_, staging_;
+  std::vector<std::string> owned_;
   bool committed_ = false;
 };
 

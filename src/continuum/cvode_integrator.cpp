@@ -1,6 +1,7 @@
 #include "continuum/cvode_integrator.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
@@ -55,7 +56,7 @@ void check(int flag, const char *call) {
 }  // namespace
 
 CvodeIntegrator::CvodeIntegrator(std::size_t size, Settings settings)
-    : impl_(std::make_unique<Impl>()), state_(size, 0.0) {
+    : impl_(std::make_unique<Impl>()), state_(size, 0.0), settings_(settings) {
   if (!(settings.rtol > 0.0) || !(settings.atol > 0.0) || settings.max_steps <= 0)
     throw std::invalid_argument("CVODE settings: rtol, atol and max_steps must be positive");
   Impl &s = *impl_;
@@ -105,6 +106,43 @@ void CvodeIntegrator::restart(double t0, const std::vector<double> &y0, Rhs rhs,
   }
 }
 
+std::string CvodeIntegrator::failure_message(int flag, double t, double target) const {
+  char *name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
+  const std::string tag = std::string(" [") + name + "]";
+  std::free(name);
+  char buffer[320];
+  switch (flag) {
+    case CV_TOO_MUCH_WORK:
+      std::snprintf(buffer, sizeof buffer,
+                    "could not advance past t = %.6g (too much work: %ld steps, the solver.max_steps limit, before "
+                    "t = %.6g): the solution changes faster than the tolerances can follow (a runaway or a very "
+                    "stiff transient)",
+                    t, settings_.max_steps, target);
+      return buffer + tag;
+    case CV_TOO_MUCH_ACC:
+      std::snprintf(buffer, sizeof buffer,
+                    "cannot meet rtol = %g, atol = %g at t = %.6g (below round-off for the size of the solution; "
+                    "loosen solver.rtol or solver.atol)",
+                    settings_.rtol, settings_.atol, t);
+      return buffer + tag;
+    case CV_ERR_FAILURE:
+      std::snprintf(buffer, sizeof buffer,
+                    "repeated error-test failures at t = %.6g with the step at its minimum: the solution jumps or "
+                    "blows up there",
+                    t);
+      return buffer + tag;
+    case CV_CONV_FAILURE:
+      std::snprintf(buffer, sizeof buffer,
+                    "the Newton iteration failed repeatedly at t = %.6g with the step at its minimum: the "
+                    "right-hand side is discontinuous or extremely stiff there",
+                    t);
+      return buffer + tag;
+    default:
+      std::snprintf(buffer, sizeof buffer, "failed at t = %.6g", t);
+      return buffer + (impl_->last_message.empty() ? std::string() : " (" + impl_->last_message + ")") + tag;
+  }
+}
+
 CvodeIntegrator::StepResult CvodeIntegrator::advance(double target) {
   Impl &s = *impl_;
   StepResult result;
@@ -130,9 +168,7 @@ CvodeIntegrator::StepResult CvodeIntegrator::advance(double target) {
     result.outcome = Outcome::ReachedTarget;
   } else {
     result.outcome = Outcome::Failed;
-    char *name = CVodeGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
-    result.message = std::string(name) + " (" + s.last_message + ")";
-    std::free(name);
+    result.message = failure_message(flag, t_reached, target);
   }
   return result;
 }

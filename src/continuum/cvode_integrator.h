@@ -27,7 +27,9 @@ class CvodeIntegrator {
     Outcome outcome = Outcome::Failed;
     double t = 0.0;
     std::vector<int> roots_found;  // per root function: 0, or +-1 crossing direction
-    std::string message;           // CVODE's message when Failed
+    // When Failed: one line saying what happened ("could not advance past t = ... (too much work
+    // ...)"), ending in CVODE's flag name, e.g. "[CV_TOO_MUCH_WORK]".
+    std::string message;
   };
 
   CvodeIntegrator(std::size_t size, Settings settings);
@@ -46,9 +48,12 @@ class CvodeIntegrator {
   long total_steps() const;
 
  private:
+  std::string failure_message(int flag, double t, double target) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::vector<double> state_;
+  Settings settings_;
 };
 
 }  // namespace runin::continuum

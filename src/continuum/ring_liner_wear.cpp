@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,17 @@ void RingLinerWearSettings::validate() const {
   require(std::isfinite(ring_share) && ring_share >= 0.0 && ring_share <= 1.0, "ring_share must lie in [0, 1]");
   require(std::isfinite(step_safety) && step_safety > 0.0 && step_safety < 1.0, "step_safety must lie in (0, 1)");
   require(std::isfinite(fixed_step) && fixed_step >= 0.0, "fixed_step must be >= 0");
+  require(std::isfinite(ring_thickness) && ring_thickness >= 0.0, "ring_thickness must be >= 0");
+  require(std::isfinite(liner_wall) && liner_wall >= 0.0, "liner_wall must be >= 0");
+}
+
+const char *to_string(RingLinerWearStatus status) {
+  switch (status) {
+    case RingLinerWearStatus::Ok: return "ok";
+    case RingLinerWearStatus::RingWornThrough: return "ring worn through";
+    case RingLinerWearStatus::LinerWornThrough: return "liner worn through";
+  }
+  return "unknown";
 }
 
 RingLinerWear::RingLinerWear(RingLinerWearSettings settings, tribo::ArchardWear wear)
@@ -118,17 +130,35 @@ void RingLinerWear::update(double x_ring, double load, double ds) {
   const double ring_share = s_.ring_share, liner_share = 1.0 - s_.ring_share;
   std::vector<double> depth(contact.pressure.size());
   for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = wear_.depth_rate(contact.pressure[i]) * ds;
-  for (std::size_t i = 0; i < depth.size(); ++i) ring_wear_[i] += ring_share * depth[i];
+  double ring_deepest = 0.0, liner_deepest = 0.0;
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    ring_wear_[i] += ring_share * depth[i];
+    ring_deepest = std::max(ring_deepest, ring_wear_[i]);
+  }
   for_each_overlap(x_ring, [&](int i, int j, double overlap) {
     liner_wear_[j] += liner_share * depth[i] * overlap / dx_;
+    liner_deepest = std::max(liner_deepest, liner_wear_[j]);
   });
   archard_volume_ += wear_.volume(load, ds);
   ++updates_;
+  char buffer[200];
+  if (s_.ring_thickness > 0.0 && ring_deepest > s_.ring_thickness) {
+    status_ = RingLinerWearStatus::RingWornThrough;
+    std::snprintf(buffer, sizeof buffer, "wear depth %.4g mm exceeds the ring's radial thickness %.4g mm",
+                  1e3 * ring_deepest, 1e3 * s_.ring_thickness);
+    message_ = buffer;
+  } else if (s_.liner_wall > 0.0 && liner_deepest > s_.liner_wall) {
+    status_ = RingLinerWearStatus::LinerWornThrough;
+    std::snprintf(buffer, sizeof buffer, "wear depth %.4g mm exceeds the liner wall %.4g mm (ring at x = %.6g m)",
+                  1e3 * liner_deepest, 1e3 * s_.liner_wall, x_ring);
+    message_ = buffer;
+  }
 }
 
-void RingLinerWear::slide(double x_from, double x_to, double load_from, double load_to) {
+bool RingLinerWear::slide(double x_from, double x_to, double load_from, double load_to) {
+  if (!ok()) return false;
   const double distance = std::abs(x_to - x_from);
-  if (!(distance > 0.0)) return;
+  if (!(distance > 0.0)) return true;
   const double h = step();
   const double steps = std::ceil(distance / h);
   if (steps > 1e8)
@@ -139,7 +169,9 @@ void RingLinerWear::slide(double x_from, double x_to, double load_from, double l
   for (long k = 0; k < n; ++k) {
     const double f = (k + 0.5) / static_cast<double>(n);  // midpoint of the sub-step
     update(x_from + f * (x_to - x_from), load_from + f * (load_to - load_from), ds);
+    if (!ok()) return false;
   }
+  return true;
 }
 
 double RingLinerWear::ring_volume() const {

@@ -6,9 +6,12 @@
 // (ring_share : 1 - ring_share); the liner gets it where the ring covers it (cell overlaps, so
 // volumes are conserved exactly). Steps are explicit in slip distance; the adaptive step is
 // safety * ArchardWear::stable_slip_step(k_c), the bound of the linearised update.
+// Wear deeper than the ring's radial thickness or the liner wall is not a run-in any more: the
+// update that crosses it stops the wear with a status (RingWornThrough / LinerWornThrough).
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "tribo/wear.h"
@@ -27,9 +30,14 @@ struct RingLinerWearSettings {
   double ring_share = 0.5;       // share of the worn volume taken by the ring face (tribo::wear_share)
   double step_safety = 0.5;      // adaptive step = safety * stable_slip_step
   double fixed_step = 0.0;       // m; > 0 replaces the adaptive step (to show the instability)
+  double ring_thickness = 0.0;   // m, radial; wear depth limit of the ring face (0: unchecked)
+  double liner_wall = 0.0;       // m, liner wall thickness; wear depth limit of the liner (0: unchecked)
 
   void validate() const;  // throws std::invalid_argument
 };
+
+enum class RingLinerWearStatus { Ok, RingWornThrough, LinerWornThrough };
+const char *to_string(RingLinerWearStatus status);
 
 struct ContactPressure {
   std::vector<double> pressure;  // Pa, per ring cell
@@ -56,8 +64,12 @@ class RingLinerWear {
   std::vector<double> liner_pressure(double x_ring, double load) const;
 
   // Slides the ring from x_from to x_to (one direction); the load varies linearly along it.
-  // Throws std::out_of_range if the ring leaves the liner grid.
-  void slide(double x_from, double x_to, double load_from, double load_to);
+  // Returns false (and does nothing more, now or later) once a wear depth passes its limit; see
+  // status() and message(). Throws std::out_of_range if the ring leaves the liner grid.
+  bool slide(double x_from, double x_to, double load_from, double load_to);
+  RingLinerWearStatus status() const { return status_; }
+  bool ok() const { return status_ == RingLinerWearStatus::Ok; }
+  const std::string &message() const { return message_; }  // what crossed which limit; empty while ok
 
   const std::vector<double> &ring_wear() const { return ring_wear_; }    // m, per ring cell
   const std::vector<double> &liner_wear() const { return liner_wear_; }  // m, per liner cell
@@ -78,6 +90,8 @@ class RingLinerWear {
   std::vector<double> ring_wear_, liner_wear_;
   double archard_volume_ = 0.0;
   long updates_ = 0;
+  RingLinerWearStatus status_ = RingLinerWearStatus::Ok;
+  std::string message_;
 };
 
 }  // namespace runin::continuum

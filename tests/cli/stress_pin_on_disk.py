@@ -2,7 +2,9 @@
 """Stress sweep of `runin pin-on-disk` (ctest label stress): mu0 in [0, 2] (both speed-term signs),
 load x1 and x1000, Archard k from 1e-8 to 1e-1. Each run must either finish with a finite CSV
 (exit 0) or stop with exit 1/2 and one line "runin: error: ...". A crash, a hang past the
-timeout or a NaN fails the sweep.
+timeout or a NaN fails the sweep. Velocity weakening with the torque held 5 % above the static
+limit accelerates without bound (dV/dt = (T/r - mu0 W + alpha W V)/m): those runs must stop with
+the runaway message, not a bare CVODE flag.
 
 usage: stress_pin_on_disk.py RUNIN OUT_DIR
 """
@@ -77,6 +79,9 @@ def main():
                 failures.append(f"{name}: non-finite values in the CSV")
         elif run.returncode in (1, 2) and len(lines) == 1 and lines[0].startswith("runin: error: "):
             outcome = "stopped: " + lines[0]
+            # mu = mu0 - alpha V under a held torque above the static limit: dV/dt grows with V.
+            if name.endswith("_weakening") and "runs away under velocity-weakening friction" not in lines[0]:
+                failures.append(f"{name}: expected the velocity-weakening runaway message, got {lines[0]!r}")
             if os.path.exists(os.path.join(result_dir, "pin_on_disk.csv")):
                 failures.append(f"{name}: output written despite the error")
         else:

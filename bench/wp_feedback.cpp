@@ -1,0 +1,135 @@
+// Work-precision of the lubricated roughness-feedback model (thesis ch. 3, inputs/feedback_lubricated.toml:
+// C1 = 0.02, C2 = 0.08, K1 = 1e-3, K2 = 4e-3, A = B = 1, R0 = 6 um, R* = 2 um, 8000 s = 16 relaxation times).
+//   build-io/bench/wp_feedback [OUT_DIR]   -> OUT_DIR/wp_feedback.csv, OUT_DIR/wp_feedback.png
+// Reference: the closed form R^2(t) = R*^2 + (R0^2 - R*^2) exp(-2 A K1 t) (tribo::FeedbackModel::exact_roughness).
+// Error: max relative error of R over the 40 s output grid (200 points).
+// Methods: CVODE BDF and Adams (continuum::simulate, rtol 1e-4 ... 1e-12, atol = 1e-3 rtol) against
+// naive fixed-step explicit Euler and classical RK4 on the same right-hand side (FeedbackSystem::rhs).
+// Wall time: median of repeated runs (std::chrono::steady_clock), one thread.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "continuum/feedback_system.h"
+
+using namespace runin;
+using namespace runin::continuum;
+
+namespace {
+constexpr double kR0 = 6.0, kEnd = 8000.0, kGrid = 40.0;
+
+tribo::FeedbackModel lubricated() {
+  tribo::FeedbackCoefficients c;
+  c.C1 = 0.02;
+  c.C2 = 0.08;
+  c.K1 = 1e-3;
+  c.K2 = 4e-3;
+  c.A = 1.0;
+  c.B = 1.0;
+  return tribo::FeedbackModel(c, tribo::FeedbackKind::lubricated);
+}
+
+double median_seconds(const std::function<void()> &work, int repeats) {
+  std::vector<double> times;
+  for (int i = 0; i < repeats; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+double relative_error(const tribo::FeedbackModel &m, double t, double r) {
+  return std::abs(r / m.exact_roughness(kR0, t) - 1.0);
+}
+
+// Fixed-step explicit baseline on y = (R, W): Euler (order 1) or classical RK4 (order 4).
+double fixed_step_error(const FeedbackSystem &system, double dt, bool rk4) {
+  const long steps = std::lround(kEnd / dt), every = std::lround(kGrid / dt);
+  double y[2] = {kR0, 0.0}, worst = 0.0;
+  double k1[2], k2[2], k3[2], k4[2], tmp[2];
+  for (long n = 0; n < steps; ++n) {
+    const double t = n * dt;
+    system.rhs(t, y, k1);
+    if (!rk4) {
+      for (int i = 0; i < 2; ++i) y[i] += dt * k1[i];
+    } else {
+      for (int i = 0; i < 2; ++i) tmp[i] = y[i] + 0.5 * dt * k1[i];
+      system.rhs(t + 0.5 * dt, tmp, k2);
+      for (int i = 0; i < 2; ++i) tmp[i] = y[i] + 0.5 * dt * k2[i];
+      system.rhs(t + 0.5 * dt, tmp, k3);
+      for (int i = 0; i < 2; ++i) tmp[i] = y[i] + dt * k3[i];
+      system.rhs(t + dt, tmp, k4);
+      for (int i = 0; i < 2; ++i) y[i] += dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    }
+    if ((n + 1) % every == 0) worst = std::max(worst, relative_error(system.model(), (n + 1) * dt, y[0]));
+  }
+  return worst;
+}
+}  // namespace
+
+int main(int argc, char **argv) {
+  const std::string out = argc > 1 ? argv[1] : ".";
+  const tribo::FeedbackModel model = lubricated();
+  const FeedbackSystem system(model);
+  std::printf("lubricated case: R0 = %g um, R* = %.10g um, relaxation time 1/(2 A K1) = %g s, t_end = %g s\n", kR0,
+              model.stationary_roughness(), 1.0 / model.relaxation_rate(), kEnd);
+
+  const std::string csv_path = out + "/wp_feedback.csv";
+  FILE *csv = std::fopen(csv_path.c_str(), "w");
+  if (!csv) {
+    std::perror(csv_path.c_str());
+    return 1;
+  }
+  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
+  std::printf("%-12s %10s %12s %12s %9s\n", "method", "setting", "rel. error", "wall time s", "steps");
+
+  for (const auto method : {CvodeIntegrator::Method::Bdf, CvodeIntegrator::Method::Adams}) {
+    const char *name = method == CvodeIntegrator::Method::Bdf ? "cvode_bdf" : "cvode_adams";
+    for (const double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
+      FeedbackRun run;
+      run.initial_roughness = kR0;
+      run.t_end = kEnd;
+      run.output_interval = kGrid;
+      run.integrator.method = method;
+      run.integrator.rtol = rtol;
+      run.integrator.atol = rtol * 1e-3;  // R is O(1) um, W grows to O(10)
+      double error = 0.0;
+      long steps = 0;
+      const double seconds = median_seconds(
+          [&] {
+            error = 0.0;
+            const auto report = simulate(system, run, [&](const FeedbackSample &s) {
+              error = std::max(error, relative_error(model, s.t, s.roughness));
+            });
+            if (!report.ok()) std::fprintf(stderr, "%s rtol %g: %s\n", name, rtol, report.message.c_str());
+            steps = report.steps;
+          },
+          21);
+      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", name, rtol, error, seconds, steps);
+      std::printf("%-12s %10g %12.3e %12.3e %9ld\n", name, rtol, error, seconds, steps);
+    }
+  }
+  for (const bool rk4 : {false, true}) {
+    const char *name = rk4 ? "rk4_fixed" : "euler_fixed";
+    for (const double dt : {40.0, 10.0, 1.0, 0.1, 0.01, 0.001}) {
+      if (rk4 && dt < 0.1) continue;  // RK4 is at round-off long before
+      double error = 0.0;
+      const double seconds = median_seconds([&] { error = fixed_step_error(system, dt, rk4); }, dt < 0.01 ? 3 : 7);
+      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", name, dt, error, seconds, std::lround(kEnd / dt));
+      std::printf("%-12s %10g %12.3e %12.3e %9ld\n", name, dt, error, seconds, std::lround(kEnd / dt));
+    }
+  }
+  std::fclose(csv);
+
+  const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_wp_feedback.py " +
+                           csv_path + " " + out + "/wp_feedback.png 'lubricated feedback model (8000 s)'";
+  if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "plot failed: %s\n", plot.c_str());
+  return 0;
+}
