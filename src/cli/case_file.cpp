@@ -28,7 +28,7 @@ const Schema kSchema = {
     {"wear", {"k", "hardness", "form", "step_safety", "max_steps"}},
     {"output", {"vtk_times"}},
     {"pin", {"mass", "track_radius", "normal_load"}},
-    {"loading", {"ramp_time", "applied_torque", "target_speed", "target_time"}},
+    {"loading", {"drive", "ramp_time", "applied_torque", "target_speed", "target_time", "sliding_speed"}},
     {"friction", friction_keys()},
     {"run", {"t_end", "output_interval", "initial_speed"}},
     {"solver", {"method", "rtol", "atol", "max_steps"}},
@@ -131,11 +131,23 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   p.ramp_time = reader.non_negative("loading.ramp_time", 2.0);
   c.friction = read_friction(reader, law_path);
 
+  const bool speed_drive = reader.choice("loading.drive", {"torque", "speed"}, std::string("torque")) == "speed";
   const bool explicit_torque = reader.has("loading.applied_torque");
   const bool targeted = reader.has("loading.target_speed") || reader.has("loading.target_time");
-  if (explicit_torque && targeted)
+  if (speed_drive) {
+    for (const char *key : {"loading.applied_torque", "loading.target_speed", "loading.target_time"})
+      if (reader.has(key)) reader.fail(key, "not used by loading.drive = \"speed\" (give loading.sliding_speed)");
+    p.drive = continuum::PinDrive::Speed;
+    p.sliding_speed = reader.positive("loading.sliding_speed");
+    c.torque_origin = "speed drive: V ramps to " + CaseReader::format(p.sliding_speed) + " m/s, T_app = T_f + J dw/dt";
+  } else if (reader.has("loading.sliding_speed")) {
+    reader.fail("loading.sliding_speed", "needs loading.drive = \"speed\"");
+  }
+  if (!speed_drive && explicit_torque && targeted)
     reader.fail("loading.applied_torque", "give either applied_torque or target_speed + target_time, not both");
-  if (explicit_torque) {
+  if (speed_drive) {
+    // the drive sets V(t); its torque is an output
+  } else if (explicit_torque) {
     p.applied_torque = reader.positive("loading.applied_torque");
     c.torque_origin = "from the case file";
   } else {
@@ -203,32 +215,45 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     if (c.vtk_times.size() > 100) reader.fail("output.vtk_times", "more than 100 frames");
   }
   if (reader.has("sweep")) {
-    if (c.friction_model != "constant" && c.friction_model != "static_kinetic")
-      reader.fail("sweep.mu0", "needs friction.model 'constant' or 'static_kinetic'");
+    if (c.friction_model == "law_file")
+      reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
     c.sweep_mu0 = reader.numbers("sweep.mu0");
     if (c.sweep_mu0.size() > 20) reader.fail("sweep.mu0", "more than 20 values");
     for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
       if (c.sweep_mu0[i] < 0.0) reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0");
-      if (!(with_mu0(c, c.sweep_mu0[i]).parameters.applied_torque > 0.0))
+      try {
+        friction_with_static_coefficient(*c.friction, c.friction_model, c.sweep_mu0[i]);
+      } catch (const std::invalid_argument &e) {
+        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": " + e.what());
+      }
+      if (!speed_drive && !(with_mu0(c, c.sweep_mu0[i]).parameters.applied_torque > 0.0))
         reader.fail("sweep.mu0", "element " + std::to_string(i) + ": eq. 4.11 gives a non-positive torque");
     }
   }
   return c;
 }
 
+continuum::SlidingFriction friction_with_static_coefficient(const continuum::SlidingFriction &friction,
+                                                            const std::string &model, double mu0) {
+  const double alpha = friction.speed_coefficient();
+  if (model == "constant") return SlidingFriction::constant(mu0, alpha);
+  if (model == "static_kinetic") {
+    const double mu_s = friction.static_coefficient();
+    const double ratio = mu_s > 0.0 ? friction.kinetic(0.0, 0.0) / mu_s : 1.0;
+    return SlidingFriction::static_kinetic(mu0, ratio * mu0, alpha);
+  }
+  if (model == "feedback" && friction.feedback_model()) {
+    const auto &law = *friction.feedback_model();
+    return SlidingFriction::feedback(law, SlidingFriction::feedback_roughness_for(law, mu0),
+                                     friction.state_per_distance(), alpha);
+  }
+  throw std::invalid_argument("a mu0 sweep needs friction model constant, static_kinetic or feedback");
+}
+
 PinOnDiskCase with_mu0(const PinOnDiskCase &c, double mu0) {
   PinOnDiskCase out = c;
   const double alpha = c.friction->speed_coefficient();
-  if (c.friction_model == "constant") {
-    out.friction = SlidingFriction::constant(mu0, alpha);
-  } else if (c.friction_model == "static_kinetic") {
-    const double ratio = c.friction->static_coefficient() > 0.0
-                             ? c.friction->kinetic(0.0, 0.0) / c.friction->static_coefficient()
-                             : 1.0;
-    out.friction = SlidingFriction::static_kinetic(mu0, ratio * mu0, alpha);
-  } else {
-    throw std::invalid_argument("a mu0 sweep needs friction model constant or static_kinetic");
-  }
+  out.friction = friction_with_static_coefficient(*c.friction, c.friction_model, mu0);
   if (c.torque_target)
     out.parameters.applied_torque = continuum::thesis_torque_for_speed(
         out.parameters, mu0, alpha, 0.0, c.torque_target->first, c.torque_target->second);

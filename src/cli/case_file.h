@@ -50,9 +50,17 @@ struct PinOnDiskCase {
   std::string friction_model;       // [friction] model
 };
 
-// The case with friction.mu0 (constant) or friction.mu_static (static_kinetic, mu_kinetic scaled
-// in proportion) replaced by `mu0`, and the torque re-derived from eq. 4.11 if it was targeted.
+// The case with its static coefficient replaced by `mu0` (see friction_with_static_coefficient), and
+// the torque re-derived from eq. 4.11 if it was targeted.
 PinOnDiskCase with_mu0(const PinOnDiskCase &c, double mu0);
+
+// `friction` (of [friction] model `model`) with the static coefficient replaced by mu0, the thesis's
+// one varied parameter: constant: mu0 (+ alpha V); static_kinetic: mu_static = mu0, mu_kinetic in the
+// case's ratio; feedback: the same law started at the roughness R0 with mu(R0) = mu0
+// (SlidingFriction::feedback_roughness_for). Throws std::invalid_argument otherwise (law_file) or if mu0
+// is not above the feedback law's steady value.
+continuum::SlidingFriction friction_with_static_coefficient(const continuum::SlidingFriction &friction,
+                                                            const std::string &model, double mu0);
 
 class CaseReader;
 // The [friction] table shared by every machine-element case: model = "constant" | "static_kinetic" |

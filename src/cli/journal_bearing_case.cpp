@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "cli/case_file.h"
 #include "cli/case_reader.h"
 
 namespace runin::cli {
@@ -13,7 +14,7 @@ const Schema kSchema = {
     {"contact", {"arc_half_angle", "nodes"}},
     {"drive", {"ramp_angle", "ramp_time", "run_speed", "inertia", "stiffness", "damping_ratio"}},
     {"wear", {"coefficient", "hardness", "form", "step_fraction", "fixed_step"}},
-    {"friction", {"model", "mu0", "mu_static", "mu_kinetic", "alpha", "distance_scale", "branch"}},
+    {"friction", friction_keys()},
     {"run", {"t_end", "output_interval", "frame_times"}},
     {"solver", {"method", "rtol", "atol", "max_steps"}},
     {"sweep", {"mu0"}},
@@ -23,9 +24,7 @@ const Schema kSchema = {
 }  // namespace
 
 continuum::SlidingFriction friction_with_mu0(const JournalBearingCase &c, double mu0) {
-  if (c.friction_model == "static_kinetic")
-    return continuum::SlidingFriction::static_kinetic(mu0, mu0 * c.kinetic_to_static, c.alpha);
-  return continuum::SlidingFriction::constant(mu0, c.alpha);
+  return friction_with_static_coefficient(*c.friction, c.friction_model, mu0);
 }
 
 JournalBearingCase read_journal_bearing_case(const std::string &path, const std::optional<std::string> &law_path) {
@@ -72,9 +71,9 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
                                           CaseReader::format(c.run.wear_step_fraction));
   c.run.fixed_wear_step = reader.has("wear.fixed_step") ? reader.positive("wear.fixed_step") : 0.0;
 
-  c.friction_model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file"});
+  c.friction_model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback"});
   c.friction = read_friction(reader, law_path);
-  c.alpha = reader.number("friction.alpha", 0.0);
+  c.alpha = c.friction->speed_coefficient();
   if (c.friction_model == "static_kinetic") {
     const double mu_static = reader.number("friction.mu_static");
     c.kinetic_to_static = mu_static > 0.0 ? reader.number("friction.mu_kinetic") / mu_static : 1.0;
@@ -100,11 +99,18 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   run.integrator = read_solver(reader, defaults);
 
   if (reader.has("sweep.mu0")) {
-    if (c.friction_model == "law_file") reader.fail("sweep.mu0", "needs friction.model 'constant' or 'static_kinetic'");
+    if (c.friction_model == "law_file")
+      reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
     c.sweep_mu0 = reader.numbers("sweep.mu0");
-    for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i)
+    for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
       if (c.sweep_mu0[i] < 0.0)
         reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0, got " + CaseReader::format(c.sweep_mu0[i]));
+      try {
+        friction_with_mu0(c, c.sweep_mu0[i]);
+      } catch (const std::invalid_argument &e) {
+        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": " + e.what());
+      }
+    }
   }
   c.axial_points = static_cast<int>(reader.positive_integer("output.axial_points", 11));
   if (c.axial_points < 2 || c.axial_points > 1000) reader.fail("output.axial_points", "must be in [2, 1000]");

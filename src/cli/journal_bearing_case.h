@@ -15,7 +15,7 @@ struct JournalBearingCase {
   continuum::JournalBearingParameters parameters;
   continuum::JournalBearingRun run;
   std::optional<continuum::SlidingFriction> friction;
-  std::string friction_model;           // constant | static_kinetic | law_file
+  std::string friction_model;           // constant | static_kinetic | law_file | feedback
   double kinetic_to_static = 1.0;       // mu_kinetic / mu_static (static_kinetic), kept in the sweep
   double alpha = 0.0;
   std::vector<double> sweep_mu0;        // [sweep] mu0, empty if absent
@@ -25,8 +25,9 @@ struct JournalBearingCase {
 // `law_path` is the --law option; required exactly when friction.model = "law_file".
 JournalBearingCase read_journal_bearing_case(const std::string &path, const std::optional<std::string> &law_path);
 
-// The case's friction law with the static coefficient replaced by mu0 (constant: mu0; static_kinetic:
-// mu_static = mu0, mu_kinetic = mu0 * kinetic_to_static).
+// The case's friction law with the static coefficient replaced by mu0 (friction_with_static_coefficient:
+// constant: mu0; static_kinetic: mu_static = mu0, mu_kinetic = mu0 * kinetic_to_static; feedback:
+// R0 with mu(R0) = mu0).
 continuum::SlidingFriction friction_with_mu0(const JournalBearingCase &c, double mu0);
 
 }  // namespace runin::cli

@@ -35,14 +35,7 @@ const Schema &schema() {
 }  // namespace
 
 continuum::SlidingFriction piston_ring_friction_with_mu0(const PistonRingCase &c, double mu0) {
-  const double alpha = c.friction->speed_coefficient();
-  if (c.friction_model == "constant") return continuum::SlidingFriction::constant(mu0, alpha);
-  if (c.friction_model == "static_kinetic") {
-    const double mu_s = c.friction->static_coefficient();
-    const double ratio = mu_s > 0.0 ? c.friction->kinetic(0.0, 0.0) / mu_s : 1.0;
-    return continuum::SlidingFriction::static_kinetic(mu0, ratio * mu0, alpha);
-  }
-  throw std::invalid_argument("a mu0 sweep needs friction model constant or static_kinetic");
+  return friction_with_static_coefficient(*c.friction, c.friction_model, mu0);
 }
 
 PistonRingCase read_piston_ring_case(const std::string &path, const std::optional<std::string> &law_path) {
@@ -122,6 +115,7 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   auto &w = c.wear_settings;
   w.bore = p.bore;
   w.ring_width = p.ring_width;
+  w.ring_thickness = thickness;  // wear-through limit of the ring face
   // Winkler layer: plane-strain modulus over the ring's radial thickness.
   w.foundation_modulus =
       reader.positive("wear.foundation_modulus", youngs / (1.0 - poisson * poisson) / thickness);
@@ -169,10 +163,15 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   double mu_static_max = c.friction->static_coefficient();
   if (reader.has("sweep.mu0")) {
     c.sweep_mu0 = reader.numbers("sweep.mu0");
-    if (c.friction_model != "constant" && c.friction_model != "static_kinetic")
-      reader.fail("sweep.mu0", "needs friction.model constant or static_kinetic, not '" + c.friction_model + "'");
+    if (c.friction_model == "law_file")
+      reader.fail("sweep.mu0", "needs friction.model constant, static_kinetic or feedback, not 'law_file'");
     for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
       if (c.sweep_mu0[i] < 0.0) reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0");
+      try {
+        piston_ring_friction_with_mu0(c, c.sweep_mu0[i]);
+      } catch (const std::invalid_argument &e) {
+        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": " + e.what());
+      }
       mu_static_max = std::max(mu_static_max, c.sweep_mu0[i]);
     }
   }

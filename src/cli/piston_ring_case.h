@@ -29,8 +29,8 @@ struct PistonRingCase {
 // `law_path` is the --law option; required exactly when friction.model = "law_file".
 PistonRingCase read_piston_ring_case(const std::string &path, const std::optional<std::string> &law_path);
 
-// The case's friction with the static coefficient replaced by mu0 (constant: mu0; static_kinetic:
-// mu_static = mu0 and mu_kinetic scaled by the same factor). Throws std::invalid_argument otherwise.
+// The case's friction with the static coefficient replaced by mu0 (friction_with_static_coefficient).
+// Throws std::invalid_argument for law_file or a mu0 not above the feedback law's steady value.
 continuum::SlidingFriction piston_ring_friction_with_mu0(const PistonRingCase &c, double mu0);
 
 }  // namespace runin::cli

@@ -111,13 +111,16 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
   auto coupling_torque = [&p](double t, const double *y) {
     return p.coupling_stiffness * (p.drive_angle(t) - y[0]) + p.coupling_damping * (p.drive_speed(t) - y[1]);
   };
-  auto static_limit = [&] { return friction.static_coefficient() * surface.normal_force * radius; };
+  // y = (theta, w, s, R); R is the friction law's state (feedback roughness), constant otherwise.
+  auto static_limit = [&](const double *y) {
+    return friction.static_coefficient(y[3]) * surface.normal_force * radius;
+  };
   auto slip_torque = [&](const double *y, int dir) {
-    return dir * friction.kinetic(y[2], radius * y[1]) * surface.normal_force * radius;
+    return dir * friction.kinetic(y[2], radius * y[1], y[3]) * surface.normal_force * radius;
   };
 
-  CvodeIntegrator integrator(3, run.integrator);
-  std::vector<double> y = {0.0, 0.0, 0.0};
+  CvodeIntegrator integrator(4, run.integrator);
+  std::vector<double> y = {0.0, 0.0, 0.0, friction.initial_state()};
   ContactState state = ContactState::Stick;
   int direction = 0;
   double t = 0.0;
@@ -136,7 +139,8 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
     s.friction_force = s.friction_torque / radius;
     s.normal_force = surface.normal_force;
     s.mu = s.friction_force / surface.normal_force;
-    s.mu_law = friction.kinetic(y[2], 0.0);
+    s.mu_law = friction.kinetic(y[2], 0.0, y[3]);
+    s.roughness = y[3];
     s.sliding_speed = radius * s.journal_speed;
     s.distance = y[2];
     s.wear_volume = surface.committed_volume + system.wear_law().volume(surface.normal_force, y[2] - surface.distance_at_update);
@@ -163,9 +167,13 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
     if (state == ContactState::Stick) {
       y[1] = 0.0;
       integrator.restart(
-          t, y, [](double, const double *, double *dy) { dy[0] = dy[1] = dy[2] = 0.0; },
+          t, y,
+          [&](double, const double *yy, double *dy) {
+            dy[0] = dy[1] = dy[2] = 0.0;
+            dy[3] = friction.state_rate(yy[3], 0.0, false);
+          },
           [&](double tt, const double *yy, double *g) {
-            g[0] = std::abs(coupling_torque(tt, yy)) - static_limit();
+            g[0] = std::abs(coupling_torque(tt, yy)) - static_limit(yy);
             g[1] = -1.0;
           },
           {+1, 0});
@@ -177,6 +185,7 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
             dy[0] = yy[1];
             dy[1] = (coupling_torque(tt, yy) - slip_torque(yy, dir)) / p.inertia;
             dy[2] = dir * radius * yy[1];  // = R|w| before the re-stick root, smooth through it
+            dy[3] = friction.state_rate(yy[3], radius * yy[1], true);
           },
           [&, dir](double, const double *yy, double *g) {
             g[0] = dir * yy[1];
@@ -192,7 +201,7 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
     y[1] = 0.0;
   };
 
-  if (std::abs(coupling_torque(t, y.data())) > static_limit()) {
+  if (std::abs(coupling_torque(t, y.data())) > static_limit(y.data())) {
     emit();
     break_away();
   }
@@ -236,7 +245,7 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
         }
         if (state == ContactState::Stick) {
           break_away();
-        } else if (std::abs(coupling_torque(t, y.data())) <= static_limit()) {
+        } else if (std::abs(coupling_torque(t, y.data())) <= static_limit(y.data())) {
           report.restick_times.push_back(t);
           state = ContactState::Stick;
           direction = 0;
@@ -305,6 +314,10 @@ JournalBearingSummary summarise(const std::vector<JournalBearingSample> &samples
       break;
     }
   const auto &first = samples.front(), &last = samples.back();
+  for (const auto &s : samples) {  // up to the first slip sample: the stick sample at the event is mu_s N
+    summary.start_friction_force = std::max(summary.start_friction_force, std::abs(s.friction_force));
+    if (s.state == ContactState::Slip) break;
+  }
   summary.steady_mu = last.mu;
   summary.steady_friction_force = last.friction_force;
   summary.wear_volume = last.wear_volume;

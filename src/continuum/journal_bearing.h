@@ -3,9 +3,10 @@
 // `ramp_time`, then an optional constant speed); it turns the journal through a torsional
 // coupling (stiffness k, damping c), so the resisting torque of the contact is finite:
 //   J dw/dt = T_c - T_f,   T_c = k (theta_drive - theta) + c (w_drive - w),   ds/dt = R |w|
-//   stick: w = 0, T_f = T_c        while |T_c| < mu_static N R
-//   slip:  T_f = sign(w) mu(s, R|w|) N R,   N = integral of the contact pressure (>= W)
-// CVODE integrates (theta, w, s) with break-away / re-stick events (root finding). Between wear
+//   stick: w = 0, T_f = T_c        while |T_c| < mu_static(R) N R
+//   slip:  T_f = sign(w) mu(s, R|w|, R) N R,   N = integral of the contact pressure (>= W)
+// The shaft lags the prescribed drive angle by the coupling wind-up |T_c| / k <= mu_static N R / k.
+// CVODE integrates (theta, w, s, R) (R: the friction law's state, feedback roughness) with break-away / re-stick events (root finding). Between wear
 // updates the pressure is frozen; a wear update (root s = s_next) applies Archard wear
 // dw_i = (k/H) p_i ds to the bore and re-solves the conformal contact (conformal_contact.h).
 // The wear step ds is a fraction of ArchardWear::stable_slip_step(k_c), or fixed if asked.
@@ -50,6 +51,7 @@ struct JournalBearingSample {
   double normal_force = 0.0;      // N, integral of the pressure over the contact
   double mu = 0.0;                // mobilised F / N (stick: below mu_static)
   double mu_law = 0.0;            // law value at s without the speed term
+  double roughness = 0.0;         // friction-law state R (feedback model), 0 without one
   double sliding_speed = 0.0;     // m/s, R w
   double distance = 0.0;          // m, sliding distance s
   double wear_volume = 0.0;       // m^3, bore
@@ -123,11 +125,12 @@ WearHistory wear_in(const JournalBearingSystem &system, double ds, int steps);
 struct JournalBearingSummary {
   double peak_friction_force = 0.0, peak_time = 0.0;
   double breakaway_time = -1.0;  // -1: never broke away
+  double start_friction_force = 0.0;  // largest |F| up to the first slip sample: mu_static N at break-away
   double steady_time = -1.0;     // -1: not steady
   double steady_mu = 0.0, steady_friction_force = 0.0, wear_volume = 0.0;
   double initial_peak_pressure = 0.0, final_peak_pressure = 0.0;
   double initial_half_angle = 0.0, final_half_angle = 0.0;
-  static constexpr double steady_tolerance = 0.01;  // relative, on friction force and journal speed
+  static constexpr double steady_tolerance = 0.02;  // relative, on friction force and journal speed
 };
 // Steady from the first sample after which friction force and journal speed stay within
 // steady_tolerance of their final values (speed band at least 1e-3 of the peak speed);

@@ -19,6 +19,17 @@ void PinOnDiskParameters::validate() const {
   require(std::isfinite(normal_load) && normal_load > 0.0, "normal_load must be positive");
   require(std::isfinite(applied_torque), "applied_torque must be finite");
   require(std::isfinite(ramp_time) && ramp_time >= 0.0, "ramp_time must be >= 0");
+  if (drive == PinDrive::Speed)
+    require(std::isfinite(sliding_speed) && sliding_speed > 0.0, "sliding_speed must be positive");
+}
+
+double PinOnDiskParameters::prescribed_speed(double t) const {
+  if (ramp_time <= 0.0 || t >= ramp_time) return sliding_speed;
+  return sliding_speed * std::max(t, 0.0) / ramp_time;
+}
+
+double PinOnDiskParameters::prescribed_acceleration(double t) const {
+  return ramp_time > 0.0 && t <= ramp_time ? sliding_speed / ramp_time : 0.0;
 }
 
 void PinOnDiskRun::validate() const {
@@ -49,7 +60,7 @@ double PinOnDiskSystem::static_torque_limit(const double *y) const {
 
 double PinOnDiskSystem::friction_torque(double t, const double *y, ContactState state, int direction) const {
   if (state == ContactState::Stick) return applied_torque(t);  // whatever keeps w = 0
-  const double speed = p_.track_radius * y[0];
+  const double speed = p_.drive == PinDrive::Speed ? p_.prescribed_speed(t) : p_.track_radius * y[0];
   return direction * friction_.kinetic(y[1], speed, y[2]) * p_.normal_load * p_.track_radius;
 }
 
@@ -58,6 +69,13 @@ void PinOnDiskSystem::rhs(double t, const double *y, double *dydt, ContactState 
     dydt[0] = 0.0;
     dydt[1] = 0.0;
     dydt[2] = friction_.state_rate(y[2], 0.0, false);
+    return;
+  }
+  if (p_.drive == PinDrive::Speed) {  // w = V(t) / r prescribed: y[0] is not used (its jump in dw/dt at
+    const double speed = p_.prescribed_speed(t);  // the ramp end would stall CVODE)
+    dydt[0] = 0.0;
+    dydt[1] = speed;
+    dydt[2] = friction_.state_rate(y[2], speed, true);
     return;
   }
   dydt[0] = (applied_torque(t) - friction_torque(t, y, state, direction)) / p_.inertia();
@@ -71,11 +89,14 @@ PinOnDiskSample PinOnDiskSystem::sample(double t, const double *y, ContactState 
   s.t = t;
   s.applied_torque = applied_torque(t);
   s.friction_torque = friction_torque(t, y, state, direction);
+  if (p_.drive == PinDrive::Speed)
+    s.applied_torque = s.friction_torque + p_.inertia() * p_.prescribed_acceleration(t) / p_.track_radius;
   s.friction_force = s.friction_torque / p_.track_radius;
   s.mu = s.friction_force / p_.normal_load;
   s.mu_law = friction_.kinetic(y[1], 0.0, y[2]);
   s.roughness = y[2];
-  s.speed = state == ContactState::Stick ? 0.0 : p_.track_radius * y[0];
+  s.speed = state == ContactState::Stick ? 0.0
+            : (p_.drive == PinDrive::Speed ? p_.prescribed_speed(t) : p_.track_radius * y[0]);
   s.distance = y[1];
   s.state = state;
   return s;
@@ -105,8 +126,13 @@ SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, con
 
   auto emit = [&] { observer(system.sample(t, y.data(), state, direction)); };
   // One CVODE problem per contact phase; its single root function is the phase's exit.
+  const bool speed_drive = system.parameters().drive == PinDrive::Speed;
   auto start_phase = [&] {
-    if (state == ContactState::Stick) {
+    if (speed_drive) {  // slides throughout: no events
+      integrator.restart(
+          t, y, [&](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Slip, 1); },
+          [](double, const double *, double *) {}, {});
+    } else if (state == ContactState::Stick) {
       y[0] = 0.0;
       integrator.restart(
           t, y, [&](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Stick, 0); },
@@ -129,7 +155,12 @@ SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, con
   // Already past the static limit at the start (step loading), or no static friction at all
   // (CVODE does not report a root function that starts at zero)?
   const bool frictionless = system.static_torque_limit(y.data()) == 0.0 && system.parameters().applied_torque != 0.0;
-  if (state == ContactState::Stick && (system.breakaway_function(t, y.data()) > 0.0 || frictionless)) {
+  if (speed_drive) {  // the drive moves the pin from t = 0: break-away at the static limit at once
+    y[0] = system.parameters().prescribed_speed(0.0) / radius;
+    report.breakaway_times.push_back(0.0);
+    state = ContactState::Slip;
+    direction = 1;
+  } else if (state == ContactState::Stick && (system.breakaway_function(t, y.data()) > 0.0 || frictionless)) {
     emit();
     break_away();
   }
@@ -222,20 +253,22 @@ PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples) {
   const auto &last = samples.back();
   summary.steady_mu = last.mu;
   summary.steady_mu_law = last.mu_law;
+  summary.steady_friction_force = last.friction_force;
   summary.final_speed = last.speed;
-  const double tol = PinOnDiskSummary::steady_tolerance;
-  const double force_band = tol * std::abs(last.friction_force);
-  const double speed_band = tol * std::abs(last.speed);
-  double steady_from = samples.front().t;
-  for (std::size_t i = samples.size(); i-- > 0;) {
-    const auto &s = samples[i];
-    if (std::abs(s.friction_force - last.friction_force) > force_band || std::abs(s.speed - last.speed) > speed_band) {
-      steady_from = i + 1 < samples.size() ? samples[i + 1].t : last.t;
-      break;
-    }
+  if (samples.front().state == ContactState::Slip) summary.breakaway_time = samples.front().t;
+  for (const auto &s : samples) {  // up to the first slip sample: the stick sample at the event is mu_s W
+    summary.start_friction_force = std::max(summary.start_friction_force, std::abs(s.friction_force));
+    if (s.state == ContactState::Slip) break;
   }
-  const double t0 = samples.front().t;
-  if (steady_from <= t0 + 0.9 * (last.t - t0)) summary.steady_time = steady_from;
+  std::vector<double> t, force, speed;
+  for (const auto &s : samples) {
+    t.push_back(s.t);
+    force.push_back(s.friction_force);
+    speed.push_back(s.speed);
+  }
+  const double tol = PinOnDiskSummary::steady_tolerance;
+  const double t_force = equilibrium_time(t, force, tol), t_speed = equilibrium_time(t, speed, tol);
+  if (t_force >= 0.0 && t_speed >= 0.0) summary.steady_time = std::max(t_force, t_speed);
   return summary;
 }
 

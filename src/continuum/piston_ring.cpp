@@ -300,12 +300,16 @@ PistonRingSummary summarise(const PistonRingSystem &system, const std::vector<Pi
       summary.breakaway_time = samples[i].t;
       break;
     }
-  const double tol = PistonRingSummary::steady_tolerance;
+  for (const auto &s : samples) {  // up to the first slip sample: the stick sample at the event is mu_s W
+    summary.start_friction_force = std::max(summary.start_friction_force, std::abs(s.friction_force));
+    if (s.state == ContactState::Slip) break;
+  }
+  double tol = PistonRingSummary::steady_tolerance;
   const auto &last = samples.back();
   const double t0 = samples.front().t;
   const auto &p = system.parameters();
   if (p.motion == PistonMotion::Ramp) {
-    summary.steady_criterion = "|friction force| and sliding speed within 1 % of their final values";
+    summary.steady_criterion = "|friction force| and sliding speed within 2 % of their final values";
     summary.steady_mu = last.mu;
     summary.steady_friction_force = std::abs(last.friction_force);
     const double force_band = tol * std::abs(last.friction_force), speed_band = tol * std::abs(last.speed);
@@ -322,6 +326,7 @@ PistonRingSummary summarise(const PistonRingSystem &system, const std::vector<Pi
     return summary;
   }
   // Crank: means over a revolution, or over the gas cycle (720 deg four-stroke) when there is one.
+  tol = PistonRingSummary::cycle_tolerance;
   const double cycle = p.gas.empty() ? 2.0 * kPi : p.gas.cycle;
   summary.steady_criterion = fmt_cycle(cycle) + "-mean |friction force| within 1 % of the last full cycle's";
   const double period = cycle / p.crank_speed;

@@ -125,14 +125,16 @@ struct PistonRingSummary {
   double peak_friction_force = 0.0, peak_time = 0.0;  // largest |friction_force|
   double peak_land_force = 0.0;
   double breakaway_time = -1.0;   // first stick -> slip, -1: never
+  double start_friction_force = 0.0;  // largest |F| up to the first slip sample: mu_static W at break-away
   double steady_time = -1.0;      // -1: not steady by the criterion below
   double steady_mu = 0.0;
   double steady_friction_force = 0.0;
   std::string steady_criterion;
-  static constexpr double steady_tolerance = 0.01;
+  static constexpr double steady_tolerance = 0.02;  // ramp: relative, on |friction force| and speed
+  static constexpr double cycle_tolerance = 0.01;   // crank: relative, on the cycle-mean |friction force|
 };
 // Ramp: steady from the first sample after which |friction force| and sliding speed stay within
-// 1 % of their final values (not steady if that is in the last 10 % of the run).
+// 2 % of their final values (not steady if that is in the last 10 % of the run).
 // Crank: per crank revolution (per gas cycle if there is a gas table), the mean |friction force|;
 // steady from the first cycle whose mean is within 1 % of the last full cycle's (not steady if
 // only the last one is); steady mu = integral |F| / integral W over the last cycle.

@@ -1,5 +1,6 @@
 #include "continuum/sliding_friction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -65,6 +66,29 @@ SlidingFriction SlidingFriction::feedback(const tribo::FeedbackModel &model, dou
   f.r0_ = initial_roughness;
   f.per_distance_ = per_distance;
   return f;
+}
+
+double SlidingFriction::feedback_roughness_for(const tribo::FeedbackModel &model, double mu0) {
+  const auto &c = model.coefficients();
+  const double r_star = model.stationary_roughness(), mu_star = model.mu(r_star);
+  require(std::isfinite(mu0) && mu0 > mu_star,
+          "mu0 = " + format(mu0) + " is not above the steady value mu(R*) = " + format(mu_star) + " (no run-in)");
+  const double root = std::sqrt(mu0 * mu0 - 4.0 * c.C1 * c.C2);  // real: mu0 > mu(R*) >= 2 sqrt(C1 C2)
+  const double r0 = (mu0 + root) / (2.0 * c.C1);
+  require(r0 > r_star, "mu0 = " + format(mu0) + " gives R0 = " + format(r0) + " below R* = " + format(r_star));
+  return r0;
+}
+
+double equilibrium_time(const std::vector<double> &t, const std::vector<double> &x, double tolerance, double tail) {
+  if (t.empty() || t.size() != x.size()) return -1.0;
+  const double final_value = x.back(), band = tolerance * std::abs(final_value);
+  double from = t.front();
+  for (std::size_t i = x.size(); i-- > 0;)
+    if (std::abs(x[i] - final_value) > band) {
+      from = t[std::min(i + 1, t.size() - 1)];
+      break;
+    }
+  return from <= t.front() + (1.0 - tail) * (t.back() - t.front()) ? from : -1.0;
 }
 
 }  // namespace runin::continuum

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <memory>
 #include <optional>
@@ -35,6 +36,11 @@ class SlidingFriction {
   // (frozen in stick), otherwise along time.
   static SlidingFriction feedback(const tribo::FeedbackModel &model, double initial_roughness, bool per_distance,
                                   double alpha = 0.0);
+  // The rough root R0 of mu(R0) = C1 R0 + C2 / R0 = mu0 (the larger one): the initial roughness whose
+  // friction is the static coefficient mu0. The run-in then takes mu from mu0 to mu(R*), R* independent
+  // of R0, so a higher mu0 means a rougher start and a longer run-in. Throws std::invalid_argument
+  // unless mu0 > mu(R*) and R0 > R* (mu0 at or below the steady value has no run-in).
+  static double feedback_roughness_for(const tribo::FeedbackModel &model, double mu0);
 
   // Static coefficient at the initial state (feedback: mu(R0)).
   double static_coefficient() const { return mu_static_; }
@@ -71,5 +77,11 @@ class SlidingFriction {
   double r0_ = 0.0;
   bool per_distance_ = true;
 };
+
+// Time to equilibrium of a sampled series: the first time after which |x - x_final| <= tolerance |x_final|
+// at every later sample; -1 if that time lies in the last `tail` fraction of the span (not shown to be
+// steady within the run).
+double equilibrium_time(const std::vector<double> &t, const std::vector<double> &x, double tolerance,
+                     double tail = 0.1);
 
 }  // namespace runin::continuum

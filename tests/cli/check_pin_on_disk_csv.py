@@ -34,6 +34,9 @@ def main():
                         help="final wear volume = (k/H) W s (rel 1e-9); contact grows, pressure falls")
     parser.add_argument("--sweep", type=int, help="mu0 sweep of N values: thesis claim 2 in its summary")
     parser.add_argument("--vtk", type=int, help="expect N pin_face_*.vts frames and pin_face.pvd")
+    parser.add_argument("--claims", type=float, nargs=3, metavar=("PEAK", "TIME", "START"),
+                        help="thesis claims 2 and 3 on the sweep curves with these relative margins "
+                             "(tests/cli/thesis_claims.py)")
     parser.add_argument("--run-in", action="store_true",
                         help="thesis claim 3: law mu at the start of slip exceeds its final value by > 5 %%")
     args = parser.parse_args()
@@ -102,12 +105,27 @@ def main():
             table = sorted([[float(x) for x in row] for row in reader])
         if len(table) != args.sweep:
             problems.append(f"{len(table)} sweep rows, expected {args.sweep}")
-        # Claim 2: higher mu0 -> higher peak friction force, later break-away, later steady state.
+        # Higher mu0 -> higher peak friction force (by > 20 %) and a later (or equal: speed drive at
+        # t = 0) break-away. The time to equilibrium is checked on the curves by --claims only: under
+        # the thesis's torque ramp every run settles within ms of the ramp end (doc/validation.md).
         for lower, higher in zip(table, table[1:]):
-            for column, name in ((3, "peak friction force"), (2, "break-away"), (5, "steady time")):
-                if not higher[column] > lower[column]:
-                    problems.append(f"{name} not increasing with mu0: {lower[0]} -> {lower[column]}, "
-                                    f"{higher[0]} -> {higher[column]}")
+            if not higher[3] > 1.2 * lower[3]:
+                problems.append(f"peak friction force not 20 % higher at mu0 {higher[0]} ({higher[3]}) "
+                                f"than at {lower[0]} ({lower[3]})")
+            if not higher[2] >= lower[2]:
+                problems.append(f"break-away earlier at mu0 {higher[0]} ({higher[2]}) than at {lower[0]} ({lower[2]})")
+    if args.claims:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        from thesis_claims import check_claims
+        curves = {}
+        with open(os.path.join(args.dir, "pin_on_disk_mu0.csv"), newline="") as f:
+            reader = csv.reader(f)
+            next(reader)
+            for row in reader:
+                mu0, t, force, _, speed = (float(x) for x in row[:5])
+                c = curves.setdefault(mu0, ([], [], []))
+                c[0].append(t), c[1].append(force), c[2].append(speed)
+        problems += check_claims(curves, *args.claims)
     if args.vtk is not None:
         frames = [n for n in os.listdir(args.dir) if n.startswith("pin_face_") and n.endswith(".vts")]
         if len(frames) != args.vtk or not os.path.exists(os.path.join(args.dir, "pin_face.pvd")):

@@ -6,9 +6,9 @@ usage: check_piston_ring_csv.py DIR --t-end T --mu-static MU --k-over-h K_H
 
 --k-over-h: Archard factor k/H (1/Pa) of the case; the total wear volume must equal
   k/H * integral W ds along the CSV (trapezoid, rel 2e-3: the CSV is a sampling of the run).
---sweep N: piston_ring_mu0.csv holds N mu0 curves; asserts thesis claims 2 and 3 on them:
-  higher mu0 -> higher peak friction force and later steady state (|F| and speed within 1 % of
-  the final values from then on); start-up friction above the steady value.
+--sweep N: piston_ring_mu0.csv holds N mu0 curves.
+--claims PEAK TIME START: thesis claims 2 and 3 on those curves with these relative margins
+  (tests/cli/thesis_claims.py: peak, time to equilibrium in a 2 % band, start-up vs steady friction).
 """
 import argparse
 import csv
@@ -32,15 +32,6 @@ def read(path, columns=None):
     return header, rows
 
 
-def steady_time(t, force, speed, tol=0.01):
-    """First time after which |force| and speed stay within tol of their final values."""
-    f_end, v_end = abs(force[-1]), speed[-1]
-    for i in range(len(t) - 1, -1, -1):
-        if abs(abs(force[i]) - f_end) > tol * f_end or abs(speed[i] - v_end) > tol * abs(v_end):
-            return t[min(i + 1, len(t) - 1)]
-    return t[0]
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("dir")
@@ -48,7 +39,9 @@ def main():
     parser.add_argument("--mu-static", type=float, required=True)
     parser.add_argument("--k-over-h", type=float, required=True)
     parser.add_argument("--breakaway", type=float, help="expected first break-away time (rel 1e-6)")
-    parser.add_argument("--sweep", type=int, help="number of mu0 curves; checks claims 2 and 3")
+    parser.add_argument("--sweep", type=int, help="number of mu0 curves")
+    parser.add_argument("--claims", type=float, nargs=3, metavar=("PEAK", "TIME", "START"),
+                        help="thesis claims 2 and 3 on the sweep curves with these relative margins")
     parser.add_argument("--liner-peak-within", type=float, help="max liner wear within this many mm of TDC")
     parser.add_argument("--vtk", type=int, help="number of VTK frames per surface")
     parser.add_argument("--png", action="store_true")
@@ -110,24 +103,11 @@ def main():
             curves.setdefault(r[0], []).append(r)
         if len(curves) != args.sweep:
             problems.append(f"{len(curves)} mu0 curves, expected {args.sweep}")
-        stats = []
-        for mu0 in sorted(curves, reverse=True):
-            c = curves[mu0]
-            ct = [r[1] for r in c]
-            force = [r[2] for r in c]
-            peak = max(abs(f) for f in force)
-            steady = steady_time(ct, force, [r[4] for r in c])
-            start = max(abs(r[2]) for r in c if r[1] <= ct[0] + 0.05 * (ct[-1] - ct[0]))
-            stats.append((mu0, peak, steady, start, abs(force[-1])))
-            print(f"mu0 {mu0:g}: peak {peak:.6g} N, steady from {steady:.6g} s, start {start:.6g} N, final {abs(force[-1]):.6g} N")
-        for hi, lo in zip(stats, stats[1:]):
-            if not hi[1] > lo[1]:
-                problems.append(f"claim 2: peak force {hi[1]} at mu0 {hi[0]} not above {lo[1]} at mu0 {lo[0]}")
-            if not hi[2] > lo[2]:
-                problems.append(f"claim 2: steady time {hi[2]} at mu0 {hi[0]} not after {lo[2]} at mu0 {lo[0]}")
-        for s in stats:
-            if not s[3] > s[4]:
-                problems.append(f"claim 3: start-up friction {s[3]} not above the steady {s[4]} at mu0 {s[0]}")
+        if args.claims:
+            sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+            from thesis_claims import check_claims
+            problems += check_claims({mu0: ([r[1] for r in c], [r[2] for r in c], [r[4] for r in c])
+                                      for mu0, c in curves.items()}, *args.claims)
 
     if args.vtk is not None:
         vtk = os.path.join(args.dir, "vtk")

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "continuum/journal_bearing.h"
+#include "tribo/feedback.h"
 
 using namespace runin::continuum;
 
@@ -95,28 +96,57 @@ TEST(JournalBearing, SteadySlidingBalancesTheCouplingAndFollowsTheLaw) {
   EXPECT_GT(r.report.wear_updates, 0);
 }
 
-TEST(JournalBearing, HigherStaticCoefficientGivesHigherPeakAndLongerTimeToEquilibrium) {
-  // Thesis claim 2, with mu_kinetic = 0.9 mu_static: every case settles within 2 s.
-  double previous_peak = HUGE_VAL, previous_steady = HUGE_VAL;
+namespace {
+// inputs/journal_bearing.toml: drive 1 rad over 2 s then held at 0.5 rad/s, coupling k = 5 N m/rad,
+// dry feedback law mu = 0.04 R + 0.01 / R, R* = 1 um (mu* = 0.05), A = B = 125 /m; mu(R0) = mu0.
+JournalBearingParameters runin_bearing() {
+  auto p = thesis_bearing(5.0, 0.3);
+  p.run_speed = 0.5;
+  return p;
+}
+SlidingFriction runin_law(double mu0) {
+  const runin::tribo::FeedbackModel law({0.04, 0.01, 1.0, 1.0, 125.0, 125.0}, runin::tribo::FeedbackKind::dry);
+  return SlidingFriction::feedback(law, SlidingFriction::feedback_roughness_for(law, mu0), true);
+}
+}  // namespace
+
+TEST(JournalBearing, ThesisClaims2And3WithTheRunInLaw) {
+  // Only mu0 changes. Claim 2: peak friction > 1.2 x the next lower mu0's and time to equilibrium
+  // (friction force and journal speed in a 2 % band of their final values, 2 ms grid) > 1.1 x.
+  // Claim 3: friction at break-away (mu0 N) > 1.2 x the steady value. Measured: doc/validation.md.
+  std::vector<JournalBearingSummary> runs;
   for (double mu0 : {0.95, 0.55, 0.15}) {
-    const auto r = run(thesis_bearing(), SlidingFriction::static_kinetic(mu0, 0.9 * mu0));
+    const auto r = run(runin_bearing(), runin_law(mu0), 10.0, 2e-3);
     ASSERT_TRUE(r.report.ok()) << r.report.message;
-    ASSERT_GT(r.summary.steady_time, 0.0) << "mu0 = " << mu0;
-    EXPECT_LT(r.summary.peak_friction_force, previous_peak) << "mu0 = " << mu0;
-    EXPECT_LT(r.summary.steady_time, previous_steady) << "mu0 = " << mu0;
-    previous_peak = r.summary.peak_friction_force;
-    previous_steady = r.summary.steady_time;
+    runs.push_back(r.summary);
+    std::printf("claims: mu0 %.2f peak %.6g N start %.6g N steady %.6g N equilibrium %.6g s\n", mu0,
+                r.summary.peak_friction_force, r.summary.start_friction_force, r.summary.steady_friction_force, r.summary.steady_time);
+    ASSERT_GT(r.summary.steady_time, 2.0) << "mu0 = " << mu0;  // after the ramp end, not at it
+    const double n0 = r.samples.front().normal_force;
+    EXPECT_NEAR(r.summary.start_friction_force, mu0 * n0, 1e-6 * n0);
+    EXPECT_GT(r.summary.start_friction_force, 1.2 * std::abs(r.summary.steady_friction_force)) << "mu0 = " << mu0;
+  }
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    EXPECT_GT(runs[i - 1].peak_friction_force, 1.2 * runs[i].peak_friction_force);
+    EXPECT_GT(runs[i - 1].steady_time, 1.1 * runs[i].steady_time);
   }
 }
 
-TEST(JournalBearing, FrictionAtTheStartExceedsTheSteadyValue) {
-  // Thesis claim 3: the break-away peak (mu_static N) is above the steady sliding force.
-  for (double mu0 : {0.95, 0.55, 0.15}) {
-    const auto r = run(thesis_bearing(), SlidingFriction::static_kinetic(mu0, 0.9 * mu0));
-    ASSERT_TRUE(r.report.ok());
-    EXPECT_GT(r.summary.peak_friction_force, 1.05 * r.summary.steady_friction_force) << "mu0 = " << mu0;
-    EXPECT_LT(r.summary.peak_time, r.summary.steady_time);
+TEST(JournalBearing, ShaftFollowsThePrescribedAngleWithinTheCouplingWindUp) {
+  // The drive end turns exactly 1 rad in 2 s; the journal (angle s / R, it turns forward only here)
+  // lags by the wind-up T_c / k <= mu0 N R / k plus the damper's share; at 2 s it is within 2 % of 1 rad.
+  const auto p = runin_bearing();
+  const auto r = run(p, runin_law(0.95), 2.0, 1e-3);
+  ASSERT_TRUE(r.report.ok()) << r.report.message;
+  const double n = r.samples.front().normal_force;
+  const double bound = 0.95 * n * p.bore.shaft_radius / p.coupling_stiffness;  // 0.0233 rad
+  for (const auto &s : r.samples) {
+    const double lag = s.drive_angle - s.distance / p.bore.shaft_radius;
+    EXPECT_GE(lag, -1e-9) << s.t;
+    EXPECT_LE(lag, 1.05 * bound) << s.t;
   }
+  EXPECT_NEAR(r.samples.back().drive_angle, 1.0, 1e-12);
+  EXPECT_NEAR(r.samples.back().distance / p.bore.shaft_radius, 1.0, 0.02);
 }
 
 TEST(JournalBearing, HighStaticCoefficientGivesStickSlipAction) {

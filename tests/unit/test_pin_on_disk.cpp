@@ -2,7 +2,10 @@
 // break-away time of the ramp, exact stick, re-stick, and a tabulated micro law.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "continuum/pin_on_disk.h"
 #include "tribo/feedback.h"
@@ -259,9 +262,12 @@ TEST(PinOnDisk, FeedbackPerTimeEvolvesDuringStick) {
   for (const auto &s : samples) EXPECT_NEAR(s.roughness / model.exact_roughness(4.0, s.t), 1.0, 1e-6);
 }
 
-TEST(PinOnDisk, ThesisClaim2HigherMu0GivesHigherPeakForceAndLaterEquilibrium) {
+TEST(PinOnDisk, ThesisTorqueRampOrdersPeakForceAndBreakAwayByMu0) {
   // The thesis's three runs: mu0 = 0.15, 0.55, 0.95, everything else fixed; T_app from eq. 4.11
-  // for each (100 mm/s at 2 s), ramped over 2 s and held.
+  // for each (100 mm/s at 2 s), ramped over 2 s and held. Peak force (= T_app / r, > 20 % apart) and
+  // break-away order by mu0. The time to equilibrium does not: the speed lags the torque by only
+  // m / (alpha W) = 1.5 ms, so all three settle within 20 ms of the ramp end (claim 2 is shown with the
+  // speed drive below).
   std::vector<PinOnDiskSummary> summaries;
   for (const double mu0 : {0.15, 0.55, 0.95}) {
     auto p = thesis_parameters(0.0, 2.0);
@@ -272,11 +278,92 @@ TEST(PinOnDisk, ThesisClaim2HigherMu0GivesHigherPeakForceAndLaterEquilibrium) {
     ASSERT_TRUE(report.ok());
     summaries.push_back(summarise(samples));
     EXPECT_NEAR(summaries.back().final_speed, 0.1, 1e-6);
+    EXPECT_NEAR(summaries.back().peak_friction_force, p.applied_torque / kRadius, 1e-9);
+    EXPECT_NEAR(summaries.back().steady_time, 2.0, 0.02) << mu0;
   }
   for (std::size_t i = 1; i < summaries.size(); ++i) {
-    EXPECT_GT(summaries[i].peak_friction_force, summaries[i - 1].peak_friction_force);
+    EXPECT_GT(summaries[i].peak_friction_force, 1.2 * summaries[i - 1].peak_friction_force);
     EXPECT_GT(summaries[i].breakaway_time, summaries[i - 1].breakaway_time);
-    EXPECT_GT(summaries[i].steady_time, summaries[i - 1].steady_time);
+  }
+}
+
+TEST(PinOnDisk, TorqueDriveHoldsTheFrictionForceAtTheAppliedTorqueWhateverTheLaw) {
+  // Why claim 3 cannot show in the force under the thesis's torque drive: once the pin slides at
+  // a steady speed, F = T_app / r however far mu has run in (here mu(R) falls 0.85 -> 0.4 and the
+  // speed rises instead).
+  runin::tribo::FeedbackCoefficients k{0.2, 0.2, 1.0, 1.0, 50.0, 50.0};
+  const runin::tribo::FeedbackModel model(k, runin::tribo::FeedbackKind::dry);
+  auto p = thesis_parameters(0.0, 2.0);
+  p.applied_torque = thesis_torque_for_speed(p, 0.85, kAlpha, 0.0, 0.1, 2.0);
+  const PinOnDiskSystem system(p, SlidingFriction::feedback(model, 4.0, true, kAlpha));
+  SolveReport report;
+  const auto samples = run_all(system, tight_run(3.0, 1e-3), &report);
+  ASSERT_TRUE(report.ok()) << report.message;
+  for (const auto &s : samples) EXPECT_LE(s.friction_force, p.applied_torque / kRadius * (1 + 1e-9)) << s.t;
+  EXPECT_NEAR(samples.back().friction_force, p.applied_torque / kRadius, 1e-6 * p.applied_torque / kRadius);
+  EXPECT_LT(samples.back().mu_law, 0.5);
+}
+
+namespace {
+// inputs/pin_on_disk_runin.toml: speed drive 0.1 m/s after a 2 s ramp, dry feedback law
+// mu = 0.04 R + 0.01 / R, R* = 1 um (mu* = 0.05), A = B = 10 /m, + 0.68 V.
+runin::tribo::FeedbackModel runin_law() {
+  return runin::tribo::FeedbackModel({0.04, 0.01, 1.0, 1.0, 10.0, 10.0}, runin::tribo::FeedbackKind::dry);
+}
+PinOnDiskParameters speed_drive() {
+  auto p = thesis_parameters(0.0, 2.0);
+  p.drive = PinDrive::Speed;
+  p.sliding_speed = 0.1;
+  return p;
+}
+}  // namespace
+
+TEST(PinOnDisk, SpeedDriveFrictionIsTheLawAlongTheRampDistance) {
+  // V = V1 t / t_r on the ramp, so s = V1 t^2 / (2 t_r), then s = V1 (t - t_r / 2); F = (mu(R(s)) + alpha V) W
+  // with R(s) the closed form of dR/ds = -A K1 R + B K2 / R.
+  const auto law = runin_law();
+  const double r0 = SlidingFriction::feedback_roughness_for(law, 0.95);
+  EXPECT_NEAR(law.mu(r0), 0.95, 1e-12);
+  const PinOnDiskSystem system(speed_drive(), SlidingFriction::feedback(law, r0, true, kAlpha));
+  SolveReport report;
+  const auto samples = run_all(system, tight_run(4.0, 1e-2), &report);
+  ASSERT_TRUE(report.ok()) << report.message;
+  ASSERT_EQ(report.breakaway_times.size(), 1u);
+  EXPECT_EQ(report.breakaway_times[0], 0.0);
+  EXPECT_NEAR(samples.front().friction_force, 0.95 * kLoad, 1e-12);  // mu0 W at the start
+  for (const auto &s : samples) {
+    const double v = 0.1 * std::min(s.t / 2.0, 1.0);
+    const double dist = s.t <= 2.0 ? 0.1 * s.t * s.t / 4.0 : 0.1 * (s.t - 1.0);
+    EXPECT_NEAR(s.speed, v, 1e-12);
+    EXPECT_NEAR(s.distance, dist, 1e-8) << s.t;
+    EXPECT_NEAR(s.roughness / law.exact_roughness(r0, s.distance), 1.0, 1e-6) << s.t;
+    EXPECT_NEAR(s.friction_force, (law.mu(s.roughness) + kAlpha * v) * kLoad, 1e-12);
+  }
+}
+
+TEST(PinOnDisk, ThesisClaims2And3UnderTheSpeedDriveWithTheRunInLaw) {
+  // Only mu0 changes (through R0, mu(R0) = mu0). Claim 2: peak force > 1.2 x the next lower mu0's, time
+  // to equilibrium (force and speed in a 2 % band of their final values, 2 ms grid) > 1.1 x. Claim 3:
+  // the start (mu0 W) > 1.2 x the steady (mu* + alpha V1) W. Measured: doc/validation.md.
+  std::vector<PinOnDiskSummary> runs;
+  for (const double mu0 : {0.95, 0.55, 0.15}) {
+    const auto law = runin_law();
+    const PinOnDiskSystem system(speed_drive(),
+                                 SlidingFriction::feedback(law, SlidingFriction::feedback_roughness_for(law, mu0), true, kAlpha));
+    SolveReport report;
+    const auto samples = run_all(system, tight_run(8.0, 2e-3), &report);
+    ASSERT_TRUE(report.ok()) << report.message;
+    runs.push_back(summarise(samples));
+    const auto &r = runs.back();
+    std::printf("claims: mu0 %.2f peak %.6g N start %.6g N steady %.6g N equilibrium %.6g s\n", mu0,
+                r.peak_friction_force, r.start_friction_force, r.steady_friction_force, r.steady_time);
+    ASSERT_GT(r.steady_time, 2.0) << mu0;  // after the ramp: not an artefact of its end
+    EXPECT_NEAR(r.start_friction_force, mu0 * kLoad, 1e-12);
+    EXPECT_GT(r.start_friction_force, 1.2 * r.steady_friction_force) << mu0;
+  }
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    EXPECT_GT(runs[i - 1].peak_friction_force, 1.2 * runs[i].peak_friction_force);
+    EXPECT_GT(runs[i - 1].steady_time, 1.1 * runs[i].steady_time);
   }
 }
 

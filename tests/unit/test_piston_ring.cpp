@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
 #include "continuum/piston_ring.h"
 #include "continuum/ring_liner_wear.h"
+#include "tribo/feedback.h"
 
 using namespace runin::continuum;
 
@@ -242,27 +244,34 @@ TEST(RingLinerWear, TooLargeFixedStepOscillatesAdaptiveStepDoesNot) {
 }
 
 namespace {
-struct ClaimRun {
-  double peak, steady_time, steady_force, start_force;
-};
-ClaimRun thesis_run(double mu0) {
-  const PistonRingSystem system(thesis_parameters(), SlidingFriction::static_kinetic(mu0, 0.7 * mu0));
-  const auto samples = run(system, 2.0, 1e-4);
-  const auto s = summarise(system, samples);
-  double start = 0.0;  // largest friction in the first 5 % of the run
-  for (const auto &x : samples)
-    if (x.t <= 0.1) start = std::max(start, std::abs(x.friction_force));
-  EXPECT_GT(s.steady_time, 0.0) << mu0;
-  return {s.peak_friction_force, s.steady_time, s.steady_friction_force, start};
+// inputs/piston_ring.toml's friction: dry feedback law mu = 0.04 R + 0.01 / R, R* = 1 um (mu* = 0.05),
+// A = B = 250 /m (relaxation length 2 mm); mu(R0) = mu0.
+PistonRingSummary thesis_run(double mu0) {
+  const runin::tribo::FeedbackModel law({0.04, 0.01, 1.0, 1.0, 250.0, 250.0}, runin::tribo::FeedbackKind::dry);
+  const PistonRingSystem system(thesis_parameters(),
+                                SlidingFriction::feedback(law, SlidingFriction::feedback_roughness_for(law, mu0), true));
+  const auto samples = run(system, 2.0, 1e-3);
+  return summarise(system, samples);
 }
 }  // namespace
 
-TEST(PistonRingClaims, HigherStaticCoefficientGivesHigherPeakAndLaterEquilibrium) {
-  const auto high = thesis_run(0.95), mid = thesis_run(0.55), low = thesis_run(0.15);
-  EXPECT_GT(high.peak, mid.peak);
-  EXPECT_GT(mid.peak, low.peak);
-  EXPECT_GT(high.steady_time, mid.steady_time);
-  EXPECT_GT(mid.steady_time, low.steady_time);
-  // Claim 3: the start-up friction exceeds the steady value.
-  for (const auto &r : {high, mid, low}) EXPECT_GT(r.start_force, 1.2 * r.steady_force);
+TEST(PistonRingClaims, ThesisClaims2And3WithTheRunInLaw) {
+  // Only mu0 changes. Claim 2: peak friction > 1.2 x the next lower mu0's and time to equilibrium
+  // (|F| and speed in a 2 % band of their final values, 1 ms grid) > 1.1 x. Claim 3: friction at
+  // break-away (mu0 W) > 1.2 x the steady value. Measured: doc/validation.md.
+  const double load = thesis_parameters().elastic_pressure * thesis_parameters().contact_area();
+  std::vector<PistonRingSummary> runs;
+  for (double mu0 : {0.95, 0.55, 0.15}) {
+    runs.push_back(thesis_run(mu0));
+    const auto &r = runs.back();
+    std::printf("claims: mu0 %.2f peak %.6g N start %.6g N steady %.6g N equilibrium %.6g s\n", mu0,
+                r.peak_friction_force, r.start_friction_force, r.steady_friction_force, r.steady_time);
+    ASSERT_GT(r.steady_time, 0.0) << mu0;
+    EXPECT_NEAR(r.start_friction_force, mu0 * load, 1e-6 * load);
+    EXPECT_GT(r.start_friction_force, 1.2 * r.steady_friction_force) << mu0;
+  }
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    EXPECT_GT(runs[i - 1].peak_friction_force, 1.2 * runs[i].peak_friction_force);
+    EXPECT_GT(runs[i - 1].steady_time, 1.1 * runs[i].steady_time);
+  }
 }
