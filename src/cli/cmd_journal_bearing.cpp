@@ -113,14 +113,14 @@ Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &fr
 const char *kColumns =
     "t_s,drive_angle_rad,drive_speed_rad_s,journal_speed_rad_s,coupling_torque_N_m,friction_torque_N_m,friction_force_N,normal_force_N,"
     "mu,mu_law,sliding_speed_m_s,sliding_distance_m,wear_volume_m3,contact_half_angle_rad,peak_pressure_Pa,"
-    "mean_pressure_Pa,state_slip";
+    "mean_pressure_Pa,state_slip,roughness";
 
 std::string row(const JournalBearingSample &s) {
   return fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},"
-                     "{:.12g},{:.12g},{:.12g},{}",
+                     "{:.12g},{:.12g},{:.12g},{},{:.12g}",
                      s.t, s.drive_angle, s.drive_speed, s.journal_speed, s.coupling_torque, s.friction_torque, s.friction_force,
                      s.normal_force, s.mu, s.mu_law, s.sliding_speed, s.distance, s.wear_volume, s.contact_half_angle,
-                     s.peak_pressure, s.mean_pressure, s.state == continuum::ContactState::Slip ? 1 : 0);
+                     s.peak_pressure, s.mean_pressure, s.state == continuum::ContactState::Slip ? 1 : 0, s.roughness);
 }
 
 void run_plot(const std::vector<std::string> &script_args) {
@@ -233,6 +233,7 @@ int run(const Options &o) {
              p.ramp_angle, p.ramp_time, p.run_speed, p.coupling_stiffness, p.coupling_damping);
   fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
   fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
+  fmt::print("  start friction    {:.6g} N (largest |F| up to the first slip sample)\n", s.start_friction_force);
   fmt::print("  steady state      {} (friction force and journal speed within {:g} % of final values from then on)\n",
              or_none(s.steady_time), 100 * continuum::JournalBearingSummary::steady_tolerance);
   fmt::print("  steady mu         {:.6g} = F / N (N = {:.6g} N, pressure integral); F = {:.6g} N\n", s.steady_mu,

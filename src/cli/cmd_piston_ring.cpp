@@ -119,7 +119,7 @@ WearPass run_wear(continuum::RingLinerWear &wear, const std::vector<PistonRingSa
 const char *kColumns =
     "t_s,crank_angle_deg,piston_position_m,piston_velocity_m_s,ring_position_m,speed_m_s,sliding_distance_m,"
     "friction_force_N,land_force_N,normal_load_N,mu,mu_law,state_slip,wear_ring_m3,wear_liner_m3,wear_volume_m3,"
-    "contact_width_m,peak_pressure_Pa,mean_pressure_Pa";
+    "contact_width_m,peak_pressure_Pa,mean_pressure_Pa,roughness";
 
 std::string csv_text(const std::vector<PistonRingSample> &samples, const std::vector<WearRow> &wear) {
   std::string text = std::string(kColumns) + "\n";
@@ -128,10 +128,10 @@ std::string csv_text(const std::vector<PistonRingSample> &samples, const std::ve
     const auto &w = wear[i];
     text += fmt::format(
         "{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g},"
-        "{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n",
+        "{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n",
         s.t, s.crank_angle * 180.0 / kPi, s.piston_position, s.piston_velocity, s.ring_position, s.speed, s.distance,
         s.friction_force, s.land_force, s.normal_load, s.mu, s.mu_law, s.state == continuum::ContactState::Slip ? 1 : 0,
-        w.ring, w.liner, w.ring + w.liner, w.width, w.peak, w.mean);
+        w.ring, w.liner, w.ring + w.liner, w.width, w.peak, w.mean, s.roughness);
   }
   return text;
 }
@@ -288,6 +288,7 @@ int run(const Options &o, const PistonRingPlotter &plot) {
   fmt::print("  peak friction     {:.6g} N at t = {:.6g} s (liner); peak land force {:.6g} N\n", s.peak_friction_force,
              s.peak_time, s.peak_land_force);
   fmt::print("  steady state      {} ({})\n", or_none(s.steady_time), s.steady_criterion);
+  fmt::print("  start friction    {:.6g} N (largest |F| up to the first slip sample)\n", s.start_friction_force);
   fmt::print("  steady mu         {:.6g}, friction force {:.6g} N\n", s.steady_mu, s.steady_friction_force);
   if (p.motion == continuum::PistonMotion::Crank)
     fmt::print("  pressure run-in   {} (cycle-max peak contact pressure within 1 % of the last cycle's from then on)\n",

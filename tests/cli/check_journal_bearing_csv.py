@@ -13,7 +13,7 @@ import sys
 COLUMNS = ["t_s", "drive_angle_rad", "drive_speed_rad_s", "journal_speed_rad_s", "coupling_torque_N_m",
            "friction_torque_N_m", "friction_force_N", "normal_force_N", "mu", "mu_law", "sliding_speed_m_s",
            "sliding_distance_m", "wear_volume_m3", "contact_half_angle_rad", "peak_pressure_Pa",
-           "mean_pressure_Pa", "state_slip"]
+           "mean_pressure_Pa", "state_slip", "roughness"]
 SWEEP = ["mu0", "peak_friction_force_N", "peak_time_s", "breakaway_time_s", "steady_time_s", "steady_mu",
          "wear_volume_m3"]
 

@@ -19,7 +19,7 @@ import sys
 COLUMNS = ["t_s", "crank_angle_deg", "piston_position_m", "piston_velocity_m_s", "ring_position_m", "speed_m_s",
            "sliding_distance_m", "friction_force_N", "land_force_N", "normal_load_N", "mu", "mu_law", "state_slip",
            "wear_ring_m3", "wear_liner_m3", "wear_volume_m3", "contact_width_m", "peak_pressure_Pa",
-           "mean_pressure_Pa"]
+           "mean_pressure_Pa", "roughness"]
 
 
 def read(path, columns=None):

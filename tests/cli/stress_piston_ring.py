@@ -16,6 +16,7 @@ import csv
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -67,6 +68,7 @@ def main():
                     with open(case, "w") as f:
                         f.write(text)
                     out = os.path.join(work, name)
+                    shutil.rmtree(out, ignore_errors=True)  # a stopped run keeps an earlier run's output
                     runs += 1
                     p = subprocess.run([runin, "piston-ring", case, "--output-dir", out, "--no-plot"],
                                        capture_output=True, text=True, timeout=300)
