@@ -74,19 +74,15 @@ void FixRuninWearState::assign_from_variable(Column column, const char *referenc
   }
 }
 
+// Per step the volumes change by parts per million: the cap height is found by Newton from the current
+// one (the same root to round-off as the closed form, which is the fallback).
 void FixRuninWearState::refresh_geometry(int i)
 {
-  const double radius = atom->radius ? atom->radius[i] : 0.0;
-  if (!(radius > 0.0)) {
-    values[i][WEAR_DEPTH] = values[i][FLAT_RADIUS] = 0.0;
-    return;
-  }
-  const runin::tribo::WornAsperity worn =
-      runin::tribo::worn_asperity(radius, values[i][VOLUME_LOST], values[i][VOLUME_GAINED]);
-  values[i][WEAR_DEPTH] = worn.summit_drop;
-  values[i][FLAT_RADIUS] = worn.flat_radius;
+  refresh_geometry(i, atom->radius ? atom->radius[i] : 0.0);
 }
 
+// Radii or volumes may have been set since the last step; a height that is still the root is kept as it is
+// (a restart reproduces the state bit for bit), any other is found again (or from the closed form).
 void FixRuninWearState::refresh_geometry_all()
 {
   for (int i = 0; i < atom->nlocal; i++) refresh_geometry(i);

@@ -15,6 +15,7 @@ FixStyle(RUNIN/WEAR_STATE,FixRuninWearState);
 #define LMP_FIX_RUNIN_WEAR_STATE_H
 
 #include "fix.h"
+#include "tribo/asperity_geometry.h"
 
 namespace LAMMPS_NS {
 
@@ -31,8 +32,22 @@ class FixRuninWearState : public Fix {
 
   double **state() { return values; }
   double local_sum(Column column, int groupbit) const;
-  // Recompute WEAR_DEPTH and FLAT_RADIUS of owned atom i from its volumes and radius.
+  // Recompute WEAR_DEPTH and FLAT_RADIUS of owned atom i from its volumes and radius, starting from its
+  // current WEAR_DEPTH (per step, after a small change of the volumes).
   void refresh_geometry(int i);
+  // The same with the radius given (inline, for the per-step loop of the pair style).
+  void refresh_geometry(int i, double radius)
+  {
+    if (!(radius > 0.0)) {
+      values[i][WEAR_DEPTH] = values[i][FLAT_RADIUS] = 0.0;
+      return;
+    }
+    const runin::tribo::WornAsperity worn = runin::tribo::worn_asperity(
+        radius, values[i][VOLUME_LOST], values[i][VOLUME_GAINED], values[i][WEAR_DEPTH]);
+    values[i][WEAR_DEPTH] = worn.summit_drop;
+    values[i][FLAT_RADIUS] = worn.flat_radius;
+  }
+  // The same for every owned atom (at setup: volumes or radii may have been set).
   void refresh_geometry_all();
   // Send the geometry columns to the ghosts.
   void forward_geometry();

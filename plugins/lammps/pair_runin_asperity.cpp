@@ -2,12 +2,13 @@
 
 #include "fix_runin_wear_state.h"
 #include "runin_lammps_compat.h"
-#include "runin_timestep_guard.h"    // timestep guard hook (micro-bench)
+#include "runin_timestep_guard.h"    // timestep guard hook, finite-force check
 #include "tribo/asperity_geometry.h"
 #include "tribo/contact.h"
 
 #include "atom.h"
 #include "comm.h"
+#include "compute.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_dummy.h"
@@ -36,18 +37,20 @@ const char *const kHistoryId = "NEIGH_HISTORY_RUNIN";
 
 using TypePairModel = PairRuninAsperity::TypePairModel;
 
-TypePairModel make_model(const PairRuninAsperity::Coefficients &c, tribo::ArchardForm form)
+TypePairModel make_model(const PairRuninAsperity::Coefficients &c, tribo::ArchardForm form, double transfer)
 {
   tribo::HertzNormal(c.effective_modulus, 1.0);    // validates E*
   if (!(c.effective_shear_modulus > 0.0))
     throw tribo::InvalidCoefficient("G*: effective shear modulus must be > 0");
   if (!(c.hardness_j > 0.0)) throw tribo::InvalidCoefficient("H: hardness must be > 0");
   const double softer = std::min(c.hardness_i, c.hardness_j);
-  return TypePairModel{tribo::RestitutionDamping(c.restitution),
+  return TypePairModel{c.effective_modulus,
+                       c.effective_shear_modulus,
+                       tribo::RestitutionDamping(c.restitution),
                        tribo::StaticKineticFriction(c.mu_static, c.mu_kinetic, c.slip_weakening_distance),
                        tribo::ArchardWear(c.wear_coefficient, softer, form),
                        tribo::AdhesionPloughing(c.shear_strength, c.ploughing_factor),
-                       tribo::wear_share(c.hardness_i, c.hardness_j)};
+                       tribo::WearExchangeRule(tribo::wear_share(c.hardness_i, c.hardness_j), transfer)};
 }
 
 inline double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -62,15 +65,16 @@ inline void cross(const double *a, const double *b, double *out)
 
 PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
     Pair(lmp), dt(0.0), wear_on(true), reshape(true), archard_form(tribo::ArchardForm::plain),
-    friction_model(FrictionModel::coulomb), transfer_fraction(0.0), restick_speed(0.0),
-    wear_increment(nullptr), gain_increment(nullptr), nmax_increment(0), maxrad(nullptr), fix_history(nullptr),
+    friction_model(FrictionModel::coulomb), transfer_fraction(0.0), restick_speed(0.0), sums_requested(false),
+    wear_increment(nullptr), gain_increment(nullptr), nmax_increment(0), worn_owned(nullptr), worn_ghost(nullptr),
+    nworn_owned(0), nworn_ghost(0), worn_listed(nullptr), maxrad(nullptr), fix_history(nullptr),
     fix_wear(nullptr)
 {
   single_enable = 0;
   no_virial_fdotr_compute = 1;
   finitecutflag = 1;
   restartinfo = 1;
-  comm_reverse = 2;    // wear and transfer increments
+  comm_reverse = 2;    // wear and transfer increments (1 without transfer, set at init)
   // slip distance is a scalar: do not negate it when LAMMPS swaps i and j
   nondefault_history_transfer = 1;
   beyond_contact = 0;
@@ -93,6 +97,9 @@ PairRuninAsperity::~PairRuninAsperity()
   }
   memory->destroy(wear_increment);
   memory->destroy(gain_increment);
+  memory->destroy(worn_owned);
+  memory->destroy(worn_ghost);
+  memory->destroy(worn_listed);
 }
 
 void PairRuninAsperity::allocate()
@@ -197,7 +204,7 @@ void PairRuninAsperity::attach_wear_state()
 void PairRuninAsperity::validate(const Coefficients &c, const char *origin)
 {
   try {
-    make_model(c, archard_form);
+    make_model(c, archard_form, transfer_fraction);
   } catch (const tribo::InvalidCoefficient &e) {
     error->all(FLERR, "pair_coeff runin/asperity ({}): {}", origin, e.what());
   }
@@ -367,6 +374,24 @@ void PairRuninAsperity::init_style()
 
   models.assign(coeffs.size(), std::nullopt);
 
+  // the transfer array exists only with transfer > 0: reallocate both at the first step
+  comm_reverse = transfer_fraction > 0.0 ? 2 : 1;
+  memory->destroy(wear_increment);
+  memory->destroy(gain_increment);
+  memory->destroy(worn_owned);
+  memory->destroy(worn_ghost);
+  memory->destroy(worn_listed);
+  wear_increment = gain_increment = nullptr;
+  worn_owned = worn_ghost = nullptr;
+  worn_listed = nullptr;
+  nmax_increment = nworn_owned = nworn_ghost = 0;
+
+  // contact sums cost a few operations per contact: only when a compute can read them
+  sums_requested = false;
+  for (int i = 0; i < modify->ncompute; i++)
+    if (strcmp(modify->compute[i]->style, "runin/friction") == 0) sums_requested = true;
+  sums = RuninContactSums();
+
   // --- timestep guard hook (runin_timestep_guard.h): WARNING/ERROR on dt vs the Rayleigh time ---
   runin_lammps::guard_timestep(lmp, "pair runin/asperity", [this](int i, int j) {
     return setflag[i][j] ? runin_lammps::PairModuli{coeff_of(i, j).effective_modulus,
@@ -381,47 +406,113 @@ double PairRuninAsperity::init_one(int i, int j)
   if (!setflag[i][j])
     error->all(FLERR, "pair runin/asperity: coefficients for types {} {} are not set (pair_coeff)", i, j);
   const int n = atom->ntypes + 1;
-  models[i * n + j].emplace(make_model(coeff_of(i, j), archard_form));
-  models[j * n + i].emplace(make_model(coeff_of(j, i), archard_form));
+  models[i * n + j].emplace(make_model(coeff_of(i, j), archard_form, transfer_fraction));
+  models[j * n + i].emplace(make_model(coeff_of(j, i), archard_form, transfer_fraction));
   return maxrad[i] + maxrad[j];
+}
+
+template <int... Index>
+std::array<PairRuninAsperity::EvalFunction, sizeof...(Index)> PairRuninAsperity::eval_table(
+    std::integer_sequence<int, Index...>)
+{
+  return {{&PairRuninAsperity::eval<(Index >> 4) & 1, (Index >> 3) & 1, (Index >> 2) & 1, (Index >> 1) & 1,
+                                    Index & 1>...}};
+}
+
+void PairRuninAsperity::grow_increments()
+{
+  if (atom->nmax <= nmax_increment) return;
+  nmax_increment = atom->nmax;
+  memory->destroy(wear_increment);
+  memory->destroy(gain_increment);
+  memory->destroy(worn_owned);
+  memory->destroy(worn_ghost);
+  memory->destroy(worn_listed);
+  memory->create(wear_increment, nmax_increment, "pair:wear_increment");
+  std::fill(wear_increment, wear_increment + nmax_increment, 0.0);
+  if (transfer_fraction > 0.0) {
+    memory->create(gain_increment, nmax_increment, "pair:gain_increment");
+    std::fill(gain_increment, gain_increment + nmax_increment, 0.0);
+  }
+  // one slot per atom, plus the one list_worn writes past the end
+  memory->create(worn_owned, nmax_increment + 1, "pair:worn_owned");
+  memory->create(worn_ghost, nmax_increment + 1, "pair:worn_ghost");
+  memory->create(worn_listed, nmax_increment, "pair:worn_listed");
+  std::fill(worn_listed, worn_listed + nmax_increment, 0);
+  nworn_owned = nworn_ghost = 0;
 }
 
 void PairRuninAsperity::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  sums = RuninContactSums();
   const bool advance = update->setupflag == 0;
   const bool track_wear = wear_on && advance;
 
   // worn geometry of owned atoms (all of them at setup: radii or volumes may have been set), then ghosts
-  double **state = fix_wear ? fix_wear->state() : nullptr;
-  if (fix_wear) {
-    if (!advance) fix_wear->refresh_geometry_all();
-    fix_wear->forward_geometry();
-  }
-  const bool worn_geometry = reshape && state;
+  if (fix_wear && !advance) fix_wear->refresh_geometry_all();
+  const bool worn_geometry = reshape && fix_wear;
+  if (worn_geometry) fix_wear->forward_geometry();
+  if (track_wear) grow_increments();
 
+  static const auto table = eval_table(std::make_integer_sequence<int, 32>());
+  const int index = (track_wear ? 16 : 0) | (worn_geometry ? 8 : 0) |
+                    (friction_model == FrictionModel::strength ? 4 : 0) | (sums_requested ? 2 : 0) |
+                    (evflag ? 1 : 0);
+  (this->*table[index])(eflag);
+
+  if (track_wear) {
+    if (force->newton_pair) runin_compat::reverse_comm(comm, this);
+    // listed owned atoms: add the increments to the state and refresh the geometry; then clear all listed
+    double **state = fix_wear->state();
+    const double *radius = atom->radius;
+    for (int k = 0; k < nworn_owned; k++) {
+      const int i = worn_owned[k];
+      state[i][FixRuninWearState::VOLUME_LOST] += wear_increment[i];
+      wear_increment[i] = 0.0;
+      if (gain_increment) {
+        state[i][FixRuninWearState::VOLUME_GAINED] += gain_increment[i];
+        gain_increment[i] = 0.0;
+      }
+      worn_listed[i] = 0;
+      fix_wear->refresh_geometry(i, radius[i]);
+    }
+    for (int k = 0; k < nworn_ghost; k++) {
+      const int i = worn_ghost[k];
+      wear_increment[i] = 0.0;
+      if (gain_increment) gain_increment[i] = 0.0;
+      worn_listed[i] = 0;
+    }
+    nworn_owned = nworn_ghost = 0;
+  }
+}
+
+// One force evaluation. WEAR: advance the wear increments; RESHAPE: worn geometry enters the contact;
+// STRENGTH: friction strength (adhesion + ploughing); SUMS: fill the contact sums; EVFLAG: tally energy
+// and virial.
+template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRuninAsperity::eval(int eflag)
+{
+  const bool advance = update->setupflag == 0;
+  // the wear state is one contiguous block (memory->grow), NCOLUMNS per atom: index it without the row pointers
+  double **state_rows = RESHAPE ? fix_wear->state() : nullptr;
+  const double *state = state_rows && atom->nmax > 0 ? state_rows[0] : nullptr;
+  constexpr int NCOL = FixRuninWearState::NCOLUMNS;
+  constexpr int DEPTH = FixRuninWearState::WEAR_DEPTH, FLAT = FixRuninWearState::FLAT_RADIUS;
   double **x = atom->x, **v = atom->v, **f = atom->f;
   double **omega = atom->omega, **torque = atom->torque;
   const double *radius = atom->radius, *rmass = atom->rmass;
   const int *type = atom->type;
   const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
-  const int nall = nlocal + atom->nghost;
   const int newton_pair = force->newton_pair;
   const int ntypes1 = atom->ntypes + 1;
-
-  if (track_wear) {
-    if (atom->nmax > nmax_increment) {
-      nmax_increment = atom->nmax;
-      memory->destroy(wear_increment);
-      memory->destroy(gain_increment);
-      memory->create(wear_increment, nmax_increment, "pair:wear_increment");
-      memory->create(gain_increment, nmax_increment, "pair:gain_increment");
-    }
-    std::fill(wear_increment, wear_increment + nall, 0.0);
-    std::fill(gain_increment, gain_increment + nall, 0.0);
-  }
+  const double step_dt = dt;    // a local: the force stores could alias the member
+  const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
+  const double restick = restick_speed;
+  const std::optional<TypePairModel> *const model_table = models.data();
+  RuninContactSums local_sums;
+  // NaN and inf propagate through the sum of all pair forces: one add per contact replaces a pass over
+  // every atom's force (FixRuninFiniteCheck skips its pass for this pair)
+  double force_sum = 0.0;
 
   const int inum = list->inum;
   const int *ilist = list->ilist, *numneigh = list->numneigh;
@@ -431,38 +522,44 @@ void PairRuninAsperity::compute(int eflag, int vflag)
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
+    const int jnum = numneigh[i];
+    if (jnum == 0) continue;
     const int itype = type[i];
+    const double xi[3] = {x[i][0], x[i][1], x[i][2]};
     const double radi = radius[i];
+    const double drop_i = RESHAPE ? state[NCOL * i + DEPTH] : 0.0;
     int *touch = firsttouch[i];
     double *allhistory = firsthistory[i];
     const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
+    const std::optional<TypePairModel> *model_row = model_table + itype * ntypes1;
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      double *history = &allhistory[HISTORY_SIZE * jj];
-      double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
       const double rsq = dot(del, del);
       const double radj = radius[j];
       const double radsum = radi + radj;
       // worn summits sit lower by their wear depth (higher if material was deposited)
-      const double summit_drop =
-          worn_geometry ? state[i][FixRuninWearState::WEAR_DEPTH] + state[j][FixRuninWearState::WEAR_DEPTH] : 0.0;
-      const double reach = radsum - summit_drop;
+      const double reach = RESHAPE ? radsum - (drop_i + state[NCOL * j + DEPTH]) : radsum;
 
-      if (reach <= 0.0 || rsq >= reach * reach) {
-        touch[jj] = 0;
-        for (int k = 0; k < HISTORY_SIZE; k++) history[k] = 0.0;
+      if ((RESHAPE && reach <= 0.0) || rsq >= reach * reach) {
+        // a pair that was not touching has a zero history already (fix NEIGH_HISTORY zeroes new pairs)
+        if (touch[jj]) {
+          touch[jj] = 0;
+          double *history = &allhistory[HISTORY_SIZE * jj];
+          for (int k = 0; k < HISTORY_SIZE; k++) history[k] = 0.0;
+        }
         continue;
       }
       touch[jj] = 1;
+      double *history = &allhistory[HISTORY_SIZE * jj];
 
       const int jtype = type[j];
-      const Coefficients &c = coeffs[itype * ntypes1 + jtype];
-      const TypePairModel &model = *models[itype * ntypes1 + jtype];
+      const TypePairModel &model = *model_row[jtype];
       const double r = std::sqrt(rsq);
+      const double rinv = 1.0 / r;
       const double overlap = reach - r;
-      const double normal[3] = {del[0] / r, del[1] / r, del[2] / r};
+      const double normal[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
       const double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
 
       // relative velocity of i w.r.t. j at the contact point
@@ -475,89 +572,84 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       double vt[3];
       for (int k = 0; k < 3; k++) vt[k] = vr[k] - vn * normal[k] + spin_velocity[k];
 
-      const double flat = worn_geometry ? tribo::combined_flat_radius(state[i][FixRuninWearState::FLAT_RADIUS],
-                                                                      state[j][FixRuninWearState::FLAT_RADIUS])
-                                        : 0.0;
-      const tribo::FlatHertzNormal contact(c.effective_modulus, radi * radj / radsum, flat);
-      const double contact_radius = contact.contact_radius(overlap);
-      const double stiffness = contact.stiffness(overlap);
-      double fn = contact.force(overlap) + model.damping.force(stiffness, meff, vn);
+      const double flat =
+          RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
+      const double r_eff = radi * radj / radsum;
+      const tribo::FlatHertzContact contact =
+          tribo::flat_hertz_contact(model.effective_modulus, r_eff, flat, overlap);
+      double fn = contact.force + model.damping.force(contact.stiffness, meff, vn);
       if (fn < 0.0) fn = 0.0;    // damping must not glue asperities together
 
-      const double kt = tribo::mindlin_stiffness(c.effective_shear_modulus, contact_radius);
+      const double kt = tribo::mindlin_stiffness(model.effective_shear_modulus, contact.contact_radius);
+      double &slip = history[SLIP];
       tribo::FrictionStrengthParts strength;
-      tribo::TangentialUpdate tangential;
-      if (friction_model == FrictionModel::strength && fn > 0.0) {
+      double limit;
+      if (STRENGTH) {
         // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
-        strength = model.strength.strength(fn, contact_radius, overlap);
-        const double mu_kinetic = strength.total() / fn;
-        const tribo::StaticKineticFriction limit(mu_kinetic + c.mu_static - c.mu_kinetic, mu_kinetic,
-                                                 c.slip_weakening_distance);
-        tangential = tribo::mindlin_coulomb(kt, fn, limit, normal, vt, dt, &history[SPRING_X], history[SLIP],
-                                            advance);
+        // (tribo::strength_friction)
+        if (fn > 0.0) {
+          strength = model.strength.strength(fn, contact.contact_radius, overlap);
+          limit = model.friction.limit_force(slip, fn, strength.total());
+        } else {
+          limit = 0.0;
+        }
       } else {
-        tangential = tribo::mindlin_coulomb(kt, fn, model.friction, normal, vt, dt, &history[SPRING_X],
-                                            history[SLIP], advance);
+        limit = model.friction.coefficient(slip) * fn;
       }
-      if (advance && tribo::resticks(tangential, std::sqrt(dot(vt, vt)), restick_speed))
-        history[SLIP] = 0.0;    // re-stuck: the contact heals to its static limit
+      const tribo::TangentialUpdate tangential =
+          tribo::mindlin_spring(kt, limit, normal, vt, step_dt, &history[SPRING_X], slip, advance);
+      if (advance && tribo::resticks_squared(tangential, dot(vt, vt), restick))
+        slip = 0.0;    // re-stuck: the contact heals to its static limit
       const double *ft = tangential.force;
 
       const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
+      force_sum += fpair[0] + fpair[1] + fpair[2];
       double tor[3];
       cross(normal, ft, tor);
       const bool j_here = newton_pair || j < nlocal;
       for (int k = 0; k < 3; k++) {
         f[i][k] += fpair[k];
         torque[i][k] -= radi * tor[k];
-        if (j_here) {
+      }
+      if (j_here)
+        for (int k = 0; k < 3; k++) {
           f[j][k] -= fpair[k];
           torque[j][k] -= radj * tor[k];
         }
-      }
 
       // with newton off a contact with a ghost is computed on both ranks: count half on each
-      const double weight = j_here ? 1.0 : 0.5;
-      const bool j_is_counter = jtype > itype || (jtype == itype && tag[j] > tag[i]);
-      const double orient = j_is_counter ? -weight : weight;
-      sums.normal_force += weight * fn;
-      for (int k = 0; k < 3; k++) sums.tangential_force[k] += orient * ft[k];
-      sums.contacts += weight;
-      if (!tangential.slipping) sums.sticking_contacts += weight;
-      sums.contact_area += weight * MY_PI * contact_radius * contact_radius;
-      sums.adhesion_force += weight * strength.adhesion;
-      sums.ploughing_force += weight * strength.ploughing;
-      if (dt > 0.0) sums.frictional_power += weight * std::sqrt(dot(ft, ft)) * tangential.slip_increment / dt;
+      const double weight = SUMS && !j_here ? 0.5 : 1.0;
+      if (SUMS) {
+        const bool j_is_counter = jtype > itype || (jtype == itype && tag[j] > tag[i]);
+        const double orient = j_is_counter ? -weight : weight;
+        local_sums.normal_force += weight * fn;
+        for (int k = 0; k < 3; k++) local_sums.tangential_force[k] += orient * ft[k];
+        local_sums.contacts += weight;
+        if (!tangential.slipping) local_sums.sticking_contacts += weight;
+        local_sums.contact_area += weight * MY_PI * contact.contact_radius * contact.contact_radius;
+        local_sums.adhesion_force += weight * strength.adhesion;
+        local_sums.ploughing_force += weight * strength.ploughing;
+        local_sums.frictional_power += weight * tangential.force_magnitude * tangential.slip_increment * inv_dt;
+      }
 
-      if (track_wear && tangential.slip_increment > 0.0) {
+      if (WEAR && tangential.slip_increment > 0.0) {
         const double worn = model.wear.volume(fn, tangential.slip_increment);
-        const tribo::WearExchange exchange = tribo::exchange_wear(worn, model.share_i, transfer_fraction);
-        wear_increment[i] += exchange.lost_a;
-        gain_increment[i] += exchange.gained_a;
-        if (j_here) {
-          wear_increment[j] += exchange.lost_b;
-          gain_increment[j] += exchange.gained_b;
-        }
-        sums.wear_volume += weight * worn;
+        const tribo::WearExchange exchange = model.exchange.split(worn);
+        add_wear(i, exchange.lost_a, exchange.gained_a, nlocal);
+        if (j_here) add_wear(j, exchange.lost_b, exchange.gained_b, nlocal);
+        if (SUMS) local_sums.wear_volume += weight * worn;
       }
 
-      if (evflag) {
-        const double energy = eflag ? contact.elastic_energy(overlap) : 0.0;
-        ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1],
-                     del[2]);
+      if (EVFLAG) {
+        const double energy =
+            eflag ? tribo::FlatHertzNormal(model.effective_modulus, r_eff, flat).elastic_energy(overlap) : 0.0;
+        ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
       }
     }
   }
 
-  if (track_wear) {
-    if (newton_pair) runin_compat::reverse_comm(comm, this);
-    for (int i = 0; i < nlocal; i++) {
-      if (wear_increment[i] == 0.0 && gain_increment[i] == 0.0) continue;
-      state[i][FixRuninWearState::VOLUME_LOST] += wear_increment[i];
-      state[i][FixRuninWearState::VOLUME_GAINED] += gain_increment[i];
-      fix_wear->refresh_geometry(i);
-    }
-  }
+  if (SUMS) sums = local_sums;
+  if (!std::isfinite(force_sum)) runin_lammps::stop_on_non_finite_force(lmp, "pair runin/asperity");
 }
 
 void PairRuninAsperity::transfer_history(double *source, double *target)
@@ -571,7 +663,7 @@ int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
   int m = 0;
   for (int k = 0; k < n; k++) {
     buf[m++] = wear_increment[first + k];
-    buf[m++] = gain_increment[first + k];
+    if (gain_increment) buf[m++] = gain_increment[first + k];
   }
   return m;
 }
@@ -580,8 +672,9 @@ void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
   for (int k = 0; k < n; k++) {
-    wear_increment[list[k]] += buf[m++];
-    gain_increment[list[k]] += buf[m++];
+    const double lost = buf[m++];
+    const double gained = gain_increment ? buf[m++] : 0.0;
+    if (lost != 0.0 || gained != 0.0) add_wear(list[k], lost, gained, atom->nlocal);
   }
 }
 
@@ -647,7 +740,8 @@ void PairRuninAsperity::reset_dt()
 
 double PairRuninAsperity::memory_usage()
 {
-  return 2.0 * static_cast<double>(nmax_increment) * sizeof(double);
+  return (gain_increment ? 2.0 : 1.0) * static_cast<double>(nmax_increment) * sizeof(double) +
+         static_cast<double>(nmax_increment) * (2.0 * sizeof(int) + sizeof(char));
 }
 
 double PairRuninAsperity::atom2cut(int i)

@@ -14,17 +14,20 @@ PairStyle(runin/asperity,PairRuninAsperity);
 
 #include "pair.h"
 #include "runin_contact_sums.h"
+#include "runin_timestep_guard.h"
 #include "tribo/contact.h"
 #include "tribo/friction_strength.h"
 #include "tribo/wear.h"
 
+#include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
 
-class PairRuninAsperity : public Pair, public RuninContactSource {
+class PairRuninAsperity : public Pair, public RuninContactSource, public runin_lammps::FiniteForcePair {
  public:
   // Per type-pair coefficients (SI units), validated where they are parsed.
   struct Coefficients {
@@ -43,13 +46,16 @@ class PairRuninAsperity : public Pair, public RuninContactSource {
     static Coefficients unpack(const double *values);
   };
 
-  // Kernel objects for one type pair, rebuilt from the coefficients at every init.
+  // Kernel objects for one type pair, rebuilt (validated) from the coefficients at every init; all the
+  // force loop reads for a contact, in one place.
   struct TypePairModel {
+    double effective_modulus;          // E* [Pa]
+    double effective_shear_modulus;    // G* [Pa]
     runin::tribo::RestitutionDamping damping;
     runin::tribo::StaticKineticFriction friction;
     runin::tribo::ArchardWear wear;
     runin::tribo::AdhesionPloughing strength;
-    double share_i;    // part of a contact's wear volume taken by the type-I atom
+    runin::tribo::WearExchangeRule exchange;    // type-I atom's share of the wear volume, transfer fraction
   };
 
   PairRuninAsperity(class LAMMPS *);
@@ -90,10 +96,29 @@ class PairRuninAsperity : public Pair, public RuninContactSource {
   std::vector<Coefficients> coeffs;    // (ntypes+1)^2; [J][I] has the hardnesses swapped
   std::vector<std::optional<TypePairModel>> models;    // same layout, built in init_one
   RuninContactSums sums;
+  bool sums_requested;             // a compute runin/friction exists (set at init): fill 'sums'
 
-  double *wear_increment;    // owned + ghost, reverse-communicated each step
-  double *gain_increment;    // volume deposited by transfer, same layout
+  // Wear and transfer increments of one step, owned + ghost, reverse-communicated. All zero between
+  // steps: an atom that receives an increment is listed once per step, and only the listed entries are
+  // applied (owned atoms) and cleared, instead of passes over all owned and ghost atoms.
+  double *wear_increment;
+  double *gain_increment;          // volume deposited by transfer; allocated only with transfer > 0
   int nmax_increment;
+  int *worn_owned, *worn_ghost;    // the listed atoms, owned and ghost (nmax_increment + 1 each)
+  int nworn_owned, nworn_ghost;
+  char *worn_listed;               // 1 while an atom is listed
+  void add_wear(int i, double lost, double gained, int nlocal)
+  {
+    // branch-free: the slot is always written and kept only for an atom not listed yet
+    const bool first = !worn_listed[i], owned = i < nlocal;
+    worn_owned[nworn_owned] = i;
+    worn_ghost[nworn_ghost] = i;
+    nworn_owned += first && owned;
+    nworn_ghost += first && !owned;
+    worn_listed[i] = 1;
+    wear_increment[i] += lost;
+    if (gain_increment) gain_increment[i] += gained;
+  }
   double *maxrad;            // per type
 
   class FixDummy *fix_dummy;
@@ -102,6 +127,12 @@ class PairRuninAsperity : public Pair, public RuninContactSource {
 
   void allocate();
   void attach_wear_state();
+  void grow_increments();
+  // The force loop, specialised at compile time on the features in use (OPT-package style).
+  template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void eval(int eflag);
+  using EvalFunction = void (PairRuninAsperity::*)(int);
+  template <int... Index>
+  static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
   Coefficients &coeff_of(int itype, int jtype);
   Coefficients read_coefficients_file(const std::string &file, const std::string &material_i,
                                       const std::string &material_j);

@@ -1,5 +1,9 @@
 // Stability guard for RunIn pair styles: a timestep check at init and a non-finite-force check
 // every step. The limits come from runin::tribo (src/tribo/stability.h).
+// The per-step check costs a pass over the forces of all owned and ghost atoms (and an MPI_Allreduce
+// on more than one rank). A pair style that tests each contact force in its own loop (nearly free: one
+// sum) implements runin_lammps::FiniteForcePair, and the fix then skips its pass whenever that pair is the
+// only source of forces before reverse communication (no hybrid, bonds or kspace).
 #ifdef FIX_CLASS
 // clang-format off
 FixStyle(RUNIN/FINITE_CHECK,FixRuninFiniteCheck);
@@ -23,11 +27,13 @@ class FixRuninFiniteCheck : public Fix {
   static constexpr const char *default_id = "RUNIN_FINITE_CHECK";
   FixRuninFiniteCheck(class LAMMPS *, int, char **);
   int setmask() override;
+  void init() override;
   void setup_pre_reverse(int, int) override;
   void pre_reverse(int, int) override;
   std::string style_label = "pair runin/asperity";
 
  private:
+  bool pair_checks_itself = false;    // set at init: the pair's own per-contact test covers every force
   void check();
 };
 
@@ -46,6 +52,18 @@ struct PairModuli {
 // Returns the smallest Rayleigh time (0 if there are no atoms).
 double guard_timestep(LAMMPS_NS::LAMMPS *lmp, const char *style,
                       const std::function<PairModuli(int, int)> &moduli_of);
+
+// Implemented by a pair style whose force loop tests every force it adds (e.g. isfinite of the sum of its
+// pair forces) and calls stop_on_non_finite_force when the test fails.
+class FiniteForcePair {
+ public:
+  virtual ~FiniteForcePair() = default;
+};
+
+// For a force loop that found a non-finite force on this rank: stops the run with the guard's ERROR
+// (step and up to 4 IDs of owned or ghost atoms whose force is not finite). On one rank error->all; on
+// more, error->one (the other ranks do not know, and a collective per step is what the caller avoids).
+void stop_on_non_finite_force(LAMMPS_NS::LAMMPS *lmp, const std::string &style);
 
 }    // namespace runin_lammps
 

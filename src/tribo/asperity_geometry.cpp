@@ -11,11 +11,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-TruncatedSphere::TruncatedSphere(double radius) : radius_(radius)
-{
-  if (!(radius > 0.0) || !std::isfinite(radius)) throw InvalidCoefficient("R: asperity radius must be > 0");
-}
-
 double TruncatedSphere::sphere_volume() const
 {
   return 4.0 / 3.0 * kPi * radius_ * radius_ * radius_;
@@ -25,12 +20,6 @@ double TruncatedSphere::cap_volume(double h) const
 {
   h = std::clamp(h, 0.0, 2.0 * radius_);
   return kPi * h * h * (3.0 * radius_ - h) / 3.0;
-}
-
-double TruncatedSphere::flat_radius(double h) const
-{
-  h = std::clamp(h, 0.0, 2.0 * radius_);
-  return std::sqrt(h * (2.0 * radius_ - h));
 }
 
 // In x = h/R and q = 3V/(pi R^3) in [0, 4]: x^2 (3 - x) = q. With x = 1 + y this is the depressed

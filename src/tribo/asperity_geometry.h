@@ -2,27 +2,73 @@
 // Pure functions, no LAMMPS, no I/O; SI units. Derivations: doc/worn_asperity_geometry.md.
 #pragma once
 
+#include "tribo/contact.h"    // InvalidCoefficient
+
+#include <algorithm>
+#include <cmath>
+
 namespace runin::tribo {
 
 // A sphere of radius R whose summit cap of height h has been removed (exact truncated sphere).
 // h is valid in [0, 2R]; the flat is widest at h = R (a hemisphere).
 class TruncatedSphere {
  public:
-  explicit TruncatedSphere(double radius);
+  explicit TruncatedSphere(double radius) : radius_(radius)
+  {
+    if (!(radius > 0.0) || !std::isfinite(radius)) throw InvalidCoefficient("R: asperity radius must be > 0");
+  }
 
   // Removed cap volume V(h) = pi h^2 (3R - h) / 3.
   double cap_volume(double cap_height) const;
   // Radius of the flat left by the cut: a_w^2 = 2 R h - h^2.
-  double flat_radius(double cap_height) const;
+  double flat_radius(double cap_height) const
+  {
+    cap_height = std::clamp(cap_height, 0.0, 2.0 * radius_);
+    return std::sqrt(cap_height * (2.0 * radius_ - cap_height));
+  }
   // Exact inverse of cap_volume on [0, 4/3 pi R^3]: the root of h^3 - 3 R h^2 + 3 V / pi = 0 in [0, 2R]
   // (trigonometric closed form, polished by Newton to round-off). Volumes beyond the whole sphere clamp.
   double cap_height(double removed_volume) const;
+  // The same root from a nearby height (the previous one of an asperity that wears a little per step), by
+  // Halley's iteration instead of the acos/cos: exact to the same round-off. A near_height that is already
+  // the root is returned unchanged (a refresh of an unchanged volume, e.g. after a restart, is bit for bit).
+  // Falls back to cap_height(V) for near_height outside (0, 1.5 R) (h(V) is ill-conditioned towards 2R)
+  // or when a few steps do not settle. Header-inline: it runs for every worn asperity and step.
+  double cap_height(double removed_volume, double near_height) const;
   double sphere_volume() const;
   double radius() const { return radius_; }
 
  private:
   double radius_;
 };
+
+// Halley on g(x) = x^2 (3 - x) - q, x = h/R, q = 3V/(pi R^3): the error e falls as
+// e -> (g''^2 / (4 g'^2) - g''' / (6 g')) e^3, i.e. e/x -> (e/x)^3 / 4 for small x and (e/x)^3 / 3 near
+// x = 1, no faster than that up to x = 1.5. A step below 1e-6 x leaves an error below 1e-18 x: the root to
+// round-off.
+inline double TruncatedSphere::cap_height(double volume, double near_height) const
+{
+  constexpr double kPi = 3.14159265358979323846;
+  if (!(volume > 0.0)) return 0.0;
+  const double q = 3.0 * volume / (kPi * radius_ * radius_ * radius_);
+  if (q >= 4.0) return 2.0 * radius_;
+  double x = near_height / radius_;
+  if (!(x > 0.0 && x < 1.5)) return cap_height(volume);
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    const double g = x * x * (3.0 - x) - q;
+    const double slope = 3.0 * x * (2.0 - x);
+    const double curvature = 6.0 * (1.0 - x);
+    const double step = 2.0 * g * slope / (2.0 * slope * slope - g * curvature);
+    // already the root to ~2 ulp (the round-off of g): keep the stored height
+    if (iteration == 0 && std::fabs(step) <= 4e-16 * x) return near_height;
+    const double next = x - step;
+    if (!(next > 0.0 && next < 1.5)) break;
+    x = next;
+    if (std::fabs(step) <= 1e-6 * x) return x * radius_;
+  }
+  return cap_height(volume);
+}
+
 
 // Geometry of one asperity after wear (volume_lost) and transfer (volume_gained).
 // Gained material refills the worn cap first; a net gain beyond the intact sphere raises the summit
@@ -32,6 +78,53 @@ struct WornAsperity {
   double flat_radius = 0.0;    // a_w [m]
 };
 WornAsperity worn_asperity(double radius, double volume_lost, double volume_gained);
+// The same, starting the cap-height root from the asperity's previous summit drop (see cap_height): the
+// per-step refresh of an asperity whose volumes changed a little.
+inline WornAsperity worn_asperity(double radius, double volume_lost, double volume_gained,
+                                  double previous_summit_drop)
+{
+  const double net_removed = volume_lost - volume_gained;
+  if (!(net_removed >= 0.0 && previous_summit_drop > 0.0)) return worn_asperity(radius, volume_lost, volume_gained);
+  const TruncatedSphere sphere(radius);
+  WornAsperity out;
+  out.summit_drop = sphere.cap_height(net_removed, previous_summit_drop);
+  out.flat_radius = sphere.flat_radius(out.summit_drop);
+  return out;
+}
+
+// Everything the force loop needs from the Sneddon contact at one overlap (FlatHertzNormal::evaluate).
+struct FlatHertzContact {
+  double contact_radius = 0.0;    // a [m]
+  double curved_radius = 0.0;     // c = sqrt(a^2 - b^2) [m]
+  double force = 0.0;             // F [N]
+  double stiffness = 0.0;         // 2 E* a [N/m]
+};
+
+// FlatHertzNormal's a, c, F and k in one pass (two square roots and a division for a flat, one root for
+// b = 0, where it is Hertz), header-inline for force loops. Takes the coefficients as FlatHertzNormal
+// validated them (E* > 0, R* > 0, b >= 0) and does not check them again. Agrees with the member functions
+// to round-off.
+inline FlatHertzContact flat_hertz_contact(double e_eff, double r_eff, double flat, double overlap)
+{
+  FlatHertzContact out;
+  if (!(overlap > 0.0)) return out;
+  const double rd = r_eff * overlap;
+  if (flat == 0.0) {
+    out.contact_radius = out.curved_radius = std::sqrt(rd);
+    out.force = 4.0 / 3.0 * e_eff * out.contact_radius * overlap;
+  } else {
+    // a^2 = (b^2 + sqrt(b^4 + 4 (R delta)^2)) / 2 (a sum, no cancellation) and a c = R delta, so
+    // c = R delta / a and F = 2 E* / (3R) c (2a^2 + b^2) = 2/3 E* delta (2a^2 + b^2) / a: one division
+    const double b2 = flat * flat;
+    const double a2 = 0.5 * (b2 + std::sqrt(b2 * b2 + 4.0 * rd * rd));
+    out.contact_radius = std::sqrt(a2);
+    const double inv_a = 1.0 / out.contact_radius;
+    out.curved_radius = rd * inv_a;
+    out.force = 2.0 / 3.0 * e_eff * overlap * (2.0 * a2 + b2) * inv_a;
+  }
+  out.stiffness = 2.0 * e_eff * out.contact_radius;
+  return out;
+}
 
 // Normal contact of a truncated paraboloid (flat radius b, curvature radius R) on a flat elastic
 // half-space, Sneddon's solution (flat punch + Hertz):
@@ -49,6 +142,7 @@ class FlatHertzNormal {
   // Half-width of the curved (ploughing) ring seen from the axis: c = sqrt(a^2 - b^2).
   double curved_radius(double overlap) const;
   double flat_radius() const { return flat_; }
+  FlatHertzContact evaluate(double overlap) const { return flat_hertz_contact(e_eff_, r_eff_, flat_, overlap); }
 
  private:
   double e_eff_, r_eff_, flat_;

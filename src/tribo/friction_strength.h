@@ -24,8 +24,20 @@ class AdhesionPloughing {
   // shear_strength tau_s [Pa] >= 0; ploughing_factor scales mu_p (1 = Rabinowicz's cone, 0 = off), >= 0.
   AdhesionPloughing(double shear_strength, double ploughing_factor = 1.0);
 
-  static double ploughing_coefficient(double tan_attack_angle);    // (2/pi) tan(theta)
-  FrictionStrengthParts strength(double normal_force, double contact_radius, double overlap) const;
+  static double ploughing_coefficient(double tan_attack_angle)    // (2/pi) tan(theta)
+  {
+    return 2.0 / 3.14159265358979323846 * tan_attack_angle;
+  }
+  // Inline: pair runin/asperity evaluates it for every contact and step.
+  FrictionStrengthParts strength(double normal_force, double contact_radius, double overlap) const
+  {
+    FrictionStrengthParts parts;
+    if (!(contact_radius > 0.0)) return parts;
+    parts.adhesion = tau_s_ * 3.14159265358979323846 * contact_radius * contact_radius;
+    if (overlap > 0.0 && normal_force > 0.0)
+      parts.ploughing = ploughing_factor_ * ploughing_coefficient(overlap / contact_radius) * normal_force;
+    return parts;
+  }
   double shear_strength() const { return tau_s_; }
   double ploughing_factor() const { return ploughing_factor_; }
 

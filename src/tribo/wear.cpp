@@ -14,11 +14,6 @@ ArchardWear::ArchardWear(double k, double hardness, ArchardForm form)
   factor_ = k / (form == ArchardForm::thesis ? 3.0 * hardness : hardness);
 }
 
-double ArchardWear::volume(double normal_force, double slip_distance) const
-{
-  return factor_ * std::fabs(normal_force) * std::fabs(slip_distance);
-}
-
 double ArchardWear::stable_slip_step(double contact_stiffness_per_area) const
 {
   if (!(contact_stiffness_per_area > 0.0)) throw InvalidCoefficient("k_c: contact stiffness per area must be > 0");
@@ -26,16 +21,14 @@ double ArchardWear::stable_slip_step(double contact_stiffness_per_area) const
   return 2.0 / (factor_ * contact_stiffness_per_area);
 }
 
-WearExchange exchange_wear(double removed, double share_a, double transfer)
+WearExchangeRule::WearExchangeRule(double share_a, double transfer) : share_a_(share_a), transfer_(transfer)
 {
   if (!(transfer >= 0.0 && transfer <= 1.0)) throw InvalidCoefficient("transfer: fraction must be in [0, 1]");
-  WearExchange out;
-  out.lost_a = removed * share_a;
-  out.lost_b = removed - out.lost_a;
-  out.gained_a = transfer * out.lost_b;
-  out.gained_b = transfer * out.lost_a;
-  out.debris = (1.0 - transfer) * removed;
-  return out;
+}
+
+WearExchange exchange_wear(double removed, double share_a, double transfer)
+{
+  return WearExchangeRule(share_a, transfer).split(removed);
 }
 
 }    // namespace runin::tribo

@@ -1,6 +1,8 @@
 // Archard wear kernels.
 #pragma once
 
+#include <cmath>
+
 namespace runin::tribo {
 
 // The thesis's eq. 1.4 carries a factor 1/3 (V = k W s / (3H)); most texts omit it.
@@ -12,7 +14,10 @@ class ArchardWear {
   ArchardWear(double wear_coefficient, double hardness, ArchardForm form = ArchardForm::plain);
 
   // Worn volume for a normal load |W| and a slip distance |ds|: k |W| |ds| / H (or / 3H).
-  double volume(double normal_force, double slip_distance) const;
+  double volume(double normal_force, double slip_distance) const
+  {
+    return factor_ * std::fabs(normal_force) * std::fabs(slip_distance);
+  }
   // Wear depth per unit slip under contact pressure p: dh/ds = (k/H) p (or k p / 3H).
   double depth_rate(double pressure) const { return factor_ * pressure; }
   // Largest stable explicit wear step (slip distance) on a surface whose pressure falls by
@@ -45,5 +50,27 @@ struct WearExchange {
 };
 // share_a from wear_share; transfer in [0, 1] (throws InvalidCoefficient otherwise).
 WearExchange exchange_wear(double removed_volume, double share_a, double transfer);
+
+// exchange_wear for one body pair, with the transfer fraction checked once (by the constructor) instead of
+// per contact and step; header-inline for force loops. split(V) == exchange_wear(V, share_a, transfer).
+class WearExchangeRule {
+ public:
+  WearExchangeRule(double share_a, double transfer);
+  WearExchange split(double removed) const
+  {
+    WearExchange out;
+    out.lost_a = removed * share_a_;
+    out.lost_b = removed - out.lost_a;
+    out.gained_a = transfer_ * out.lost_b;
+    out.gained_b = transfer_ * out.lost_a;
+    out.debris = (1.0 - transfer_) * removed;
+    return out;
+  }
+  double share_a() const { return share_a_; }
+  double transfer() const { return transfer_; }
+
+ private:
+  double share_a_, transfer_;
+};
 
 }    // namespace runin::tribo

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace runin::tribo;
@@ -141,4 +142,86 @@ TEST(FlatHertzNormal, StiffnessAndEnergyAreConsistent)
   }
   EXPECT_THROW(FlatHertzNormal(4.8e10, 5e-7, -1e-9), InvalidCoefficient);
   EXPECT_EQ(combined_flat_radius(2e-8, 5e-8), 2e-8);
+}
+
+// --- Fast paths of the force loops: they must agree with the validated kernels to round-off ---
+
+// evaluate() (one pass, a Hertz branch for b = 0) against the member functions, from the flat punch
+// (R delta << b^2) through b ~ sqrt(R delta) to Hertz-like contacts (R delta >> b^2).
+TEST(FlatHertzNormal, EvaluateAgreesWithMembersToRoundOff)
+{
+  const double E = 4.817e10, R = 5e-7;
+  double worst = 0.0;
+  for (double b : {0.0, 1e-10, 3e-9, 4e-8, 2e-7}) {
+    const FlatHertzNormal worn(E, R, b);
+    for (double delta = 1e-16; delta < 1e-7; delta *= 3.1) {
+      const FlatHertzContact fast = worn.evaluate(delta);
+      const double expected[4] = {worn.contact_radius(delta), worn.curved_radius(delta), worn.force(delta),
+                                  worn.stiffness(delta)};
+      const double got[4] = {fast.contact_radius, fast.curved_radius, fast.force, fast.stiffness};
+      for (int k = 0; k < 4; ++k) {
+        ASSERT_GT(expected[k], 0.0);
+        worst = std::max(worst, std::fabs(got[k] - expected[k]) / expected[k]);
+        EXPECT_NEAR(got[k], expected[k], 4e-15 * expected[k]) << "b " << b << " delta " << delta << " k " << k;
+      }
+    }
+    const FlatHertzContact none = worn.evaluate(0.0), apart = worn.evaluate(-1e-9);
+    EXPECT_EQ(none.force, 0.0);
+    EXPECT_EQ(none.stiffness, 0.0);
+    EXPECT_EQ(apart.contact_radius, 0.0);
+  }
+  EXPECT_LT(worst, 4e-15);
+}
+
+// cap_height(V, h_near), the per-step path (Halley from the previous height), returns the closed-form root
+// to round-off: from heights a part per million to a few percent off, and from unusable starts (fallback).
+TEST(TruncatedSphere, CapHeightFromNearbyHeightMatchesClosedForm)
+{
+  const double R = 1.0e-6;
+  const TruncatedSphere sphere(R);
+  for (double fraction = 1e-15; fraction < 1.0; fraction *= 2.9) {
+    const double volume = fraction * sphere.sphere_volume();
+    const double exact = sphere.cap_height(volume);
+    const double x = exact / R;
+    const double tolerance = 4e-16 * (3.0 - x) / (3.0 * (2.0 - x)) * 3.0 * exact;    // condition of h(V)
+    for (double previous_fraction : {1.0 - 1e-6, 1.0 - 1e-3, 0.97, 1.0 + 1e-6}) {
+      const double near = sphere.cap_height(previous_fraction * volume);
+      EXPECT_NEAR(sphere.cap_height(volume, near), exact, tolerance) << fraction << " " << previous_fraction;
+    }
+    for (double unusable : {0.0, -1e-9, 2.0 * R, 5.0 * R})
+      EXPECT_NEAR(sphere.cap_height(volume, unusable), exact, tolerance) << fraction << " " << unusable;
+    EXPECT_NEAR(sphere.cap_height(volume, 1.4 * R), exact, tolerance) << fraction;    // far: Halley or fallback
+  }
+  EXPECT_EQ(sphere.cap_height(0.0, 1e-7), 0.0);
+  EXPECT_EQ(sphere.cap_height(2.0 * sphere.sphere_volume(), 1e-7), 2.0 * R);
+}
+
+// worn_asperity from the previous summit drop gives the geometry of the closed form, also across the switch
+// between a net loss and a net gain.
+TEST(WornAsperity, PreviousDropGivesTheSameGeometry)
+{
+  const double R = 1e-6;
+  for (double lost : {0.0, 1e-24, 3e-21, 1e-19}) {
+    for (double gained : {0.0, 2e-24, 1e-21}) {
+      const WornAsperity exact = worn_asperity(R, lost, gained);
+      for (double previous : {0.0, -1e-12, exact.summit_drop * (1.0 - 1e-6), 1e-9}) {
+        const WornAsperity fast = worn_asperity(R, lost, gained, previous);
+        EXPECT_NEAR(fast.summit_drop, exact.summit_drop, 1e-15 * std::fabs(exact.summit_drop)) << lost << " " << gained;
+        EXPECT_NEAR(fast.flat_radius, exact.flat_radius, 1e-15 * exact.flat_radius) << lost << " " << gained;
+      }
+    }
+  }
+}
+
+// A stored height of an unchanged volume is kept bit for bit (the state survives write/read_restart, whose
+// setup refreshes every atom), up to h = 1.5 R where h(V) is well conditioned.
+TEST(TruncatedSphere, CapHeightOfAnUnchangedVolumeIsKept)
+{
+  const double R = 1.0e-6;
+  const TruncatedSphere sphere(R);
+  for (double fraction = 1e-15; fraction < 0.84; fraction *= 1.9) {
+    const double volume = fraction * sphere.sphere_volume();
+    const double stored = sphere.cap_height(volume, sphere.cap_height((1.0 - 1e-6) * volume));
+    EXPECT_EQ(sphere.cap_height(volume, stored), stored) << fraction;
+  }
 }

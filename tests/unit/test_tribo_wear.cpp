@@ -75,3 +75,22 @@ TEST(Archard, WearExchangeBookkeepingIsExact)
   EXPECT_THROW(exchange_wear(removed, share, 1.5), InvalidCoefficient);
   EXPECT_THROW(exchange_wear(removed, share, -0.1), InvalidCoefficient);
 }
+
+// The per-type-pair rule of the force loops splits exactly as exchange_wear and checks the fraction once.
+TEST(Archard, WearExchangeRuleSplitsAsExchangeWear)
+{
+  const double share = wear_share(0.245e9, 0.87e9);
+  for (double transfer : {0.0, 0.3, 1.0}) {
+    const WearExchangeRule rule(share, transfer);
+    for (double removed : {0.0, 1e-30, 3.7e-22, 2e-18}) {
+      const WearExchange a = rule.split(removed), b = exchange_wear(removed, share, transfer);
+      EXPECT_EQ(a.lost_a, b.lost_a);
+      EXPECT_EQ(a.lost_b, b.lost_b);
+      EXPECT_EQ(a.gained_a, b.gained_a);
+      EXPECT_EQ(a.gained_b, b.gained_b);
+      EXPECT_EQ(a.debris, b.debris);
+    }
+  }
+  EXPECT_THROW(WearExchangeRule(share, 1.5), InvalidCoefficient);
+  EXPECT_THROW(WearExchangeRule(share, -0.1), InvalidCoefficient);
+}
