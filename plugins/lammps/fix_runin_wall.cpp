@@ -7,7 +7,6 @@
 #include "tribo/contact.h"
 #include "tribo/friction_strength.h"
 #include "tribo/load_servo.h"
-#include "tribo/strength_friction.h"
 #include "tribo/wear.h"
 
 #include "atom.h"
@@ -376,27 +375,31 @@ void FixRuninWall::compute_contacts(bool advance)
     double vt[3];
     for (int k = 0; k < 3; k++) vt[k] = vr[k] - vn * normal[k] + spin_velocity[k];
 
-    const tribo::FlatHertzNormal contact(e_star, r, flat);
-    const double stiffness = contact.stiffness(overlap);
-    const double elastic = contact.force(overlap);
-    double fn = elastic + damping.force(stiffness, rmass[i], vn);
+    // a flat wall: the asperity's own radius is the effective radius
+    const tribo::FlatHertzContact contact = tribo::flat_hertz_contact(e_star, r, flat, overlap);
+    double fn = contact.force + damping.force(contact.stiffness, rmass[i], vn);
     if (fn < 0.0) fn = 0.0;    // damping must not glue the asperity to the wall
-    const double contact_radius = contact.contact_radius(overlap);
+    const double elastic = contact.force, stiffness = contact.stiffness;
+    const double contact_radius = contact.contact_radius;
     const double kt = tribo::mindlin_stiffness(g_star, contact_radius);
+    double &slip = history[i][SLIP];
     tribo::FrictionStrengthParts strength;
-    tribo::TangentialUpdate tangential;
-    if (strength_model && fn > 0.0) {
+    double limit;
+    if (strength_model) {
       // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
-      strength = adhesion_ploughing.strength(fn, contact_radius, overlap);
-      const tribo::StaticKineticFriction limit = tribo::strength_friction(mu_s, mu_k, slip_weakening, strength, fn);
-      tangential =
-          tribo::mindlin_coulomb(kt, fn, limit, normal, vt, dt, &history[i][SPRING_X], history[i][SLIP], advance);
+      if (fn > 0.0) {
+        strength = adhesion_ploughing.strength(fn, contact_radius, overlap);
+        limit = friction.limit_force(slip, fn, strength.total());
+      } else {
+        limit = 0.0;
+      }
     } else {
-      tangential = tribo::mindlin_coulomb(kt, fn, friction, normal, vt, dt, &history[i][SPRING_X],
-                                          history[i][SLIP], advance);
+      limit = friction.coefficient(slip) * fn;
     }
-    if (advance && tribo::resticks(tangential, std::sqrt(dot(vt, vt)), restick_speed))
-      history[i][SLIP] = 0.0;    // re-stuck: the contact heals to its static limit
+    const tribo::TangentialUpdate tangential =
+        tribo::mindlin_spring(kt, limit, normal, vt, dt, &history[i][SPRING_X], slip, advance);
+    if (advance && tribo::resticks_squared(tangential, dot(vt, vt), restick_speed))
+      slip = 0.0;    // re-stuck: the contact heals to its static limit
     const double *ft = tangential.force;
     if (!std::isfinite(fn + ft[0] + ft[1] + ft[2])) first_bad = std::min(first_bad, tag[i]);
 

@@ -2,6 +2,7 @@
 
 #include "fix_runin_wear_state.h"
 #include "runin_lammps_compat.h"
+#include "runin_material_file.h"
 #include "runin_timestep_guard.h"    // timestep guard hook, finite-force check
 #include "tribo/asperity_geometry.h"
 #include "tribo/contact.h"
@@ -19,12 +20,10 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
-#include "tokenizer.h"
 #include "update.h"
 
 #include <cmath>
 #include <cstring>
-#include <map>
 
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
@@ -272,80 +271,22 @@ void PairRuninAsperity::read_optional_coefficients(Coefficients &c, int narg, ch
   }
 }
 
-// File format (potentials/*.runin), SI units, '#' comments:
-//   material NAME  E[Pa]  nu[-]  rho[kg/m^3]  H[Pa]
-//   pair NAME_A NAME_B  e[-]  mu_s[-]  mu_k[-]  d_c[m]  k[-]
+// Coefficient file (potentials/*.runin); format and checks in runin_material_file.h.
 PairRuninAsperity::Coefficients PairRuninAsperity::read_coefficients_file(
     const std::string &file, const std::string &material_i, const std::string &material_j)
 {
-  std::string problem;
-  double packed[Coefficients::NPACKED] = {0};
-  if (comm->me == 0) {
-    FILE *fp = utils::open_potential(file, lmp, nullptr);
-    if (!fp) {
-      problem = fmt::format("cannot open coefficient file '{}'", file);
-    } else {
-      std::map<std::string, tribo::Material> materials;
-      std::optional<std::vector<double>> pair_values;
-      char line[1024];
-      int lineno = 0;
-      try {
-        while (fgets(line, sizeof(line), fp)) {
-          lineno++;
-          ValueTokenizer words(utils::trim_comment(line));
-          if (!words.has_next()) continue;
-          const std::string kind = words.next_string();
-          if (kind == "material") {
-            if (words.count() != 6) throw TokenizerException("material needs NAME E nu rho H", "");
-            const std::string name = words.next_string();
-            tribo::Material m;
-            m.youngs_modulus = words.next_double();
-            m.poisson_ratio = words.next_double();
-            words.next_double();    // density: used by the timestep guard, not by the force
-            m.hardness = words.next_double();
-            m.validate(fmt::format("{} line {}: material {}", file, lineno, name));
-            materials[name] = m;
-          } else if (kind == "pair") {
-            if (words.count() != 8) throw TokenizerException("pair needs A B e mu_s mu_k d_c k", "");
-            const std::string a = words.next_string(), b = words.next_string();
-            if ((a == material_i && b == material_j) || (a == material_j && b == material_i)) {
-              std::vector<double> v;
-              for (int k = 0; k < 5; k++) v.push_back(words.next_double());
-              pair_values = v;
-            }
-          } else {
-            throw TokenizerException(fmt::format("unknown entry '{}'", kind), "");
-          }
-        }
-        if (!materials.count(material_i))
-          problem = fmt::format("material '{}' not found in '{}'", material_i, file);
-        else if (!materials.count(material_j))
-          problem = fmt::format("material '{}' not found in '{}'", material_j, file);
-        else if (!pair_values)
-          problem = fmt::format("no 'pair {} {}' entry in '{}'", material_i, material_j, file);
-        else {
-          const auto &mi = materials[material_i], &mj = materials[material_j];
-          const auto &v = *pair_values;
-          const double values[Coefficients::NPACKED] = {
-              tribo::effective_modulus(mi, mj), tribo::effective_shear_modulus(mi, mj),
-              v[0], v[1], v[2], v[3], v[4], mi.hardness, mj.hardness};
-          std::copy(values, values + Coefficients::NPACKED, packed);
-        }
-      } catch (const TokenizerException &e) {
-        problem = fmt::format("{} line {}: {}", file, lineno, e.what());
-      } catch (const tribo::InvalidCoefficient &e) {
-        problem = e.what();
-      }
-      fclose(fp);
-    }
-  }
-  int length = problem.size();
-  MPI_Bcast(&length, 1, MPI_INT, 0, world);
-  problem.resize(length);
-  MPI_Bcast(&problem[0], length, MPI_CHAR, 0, world);
-  if (length) error->all(FLERR, "pair_coeff runin/asperity: {}", problem);
-  MPI_Bcast(packed, Coefficients::NPACKED, MPI_DOUBLE, 0, world);
-  return Coefficients::unpack(packed);
+  const RuninMaterialPair entry =
+      read_runin_material_pair(lmp, file, material_i, material_j, "pair_coeff runin/asperity");
+  const double values[Coefficients::NPACKED] = {tribo::effective_modulus(entry.a, entry.b),
+                                                tribo::effective_shear_modulus(entry.a, entry.b),
+                                                entry.restitution,
+                                                entry.mu_static,
+                                                entry.mu_kinetic,
+                                                entry.slip_weakening_distance,
+                                                entry.wear_coefficient,
+                                                entry.a.hardness,
+                                                entry.b.hardness};
+  return Coefficients::unpack(values);
 }
 
 void PairRuninAsperity::init_style()
@@ -586,7 +527,6 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
       double limit;
       if (STRENGTH) {
         // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
-        // (tribo::strength_friction)
         if (fn > 0.0) {
           strength = model.strength.strength(fn, contact.contact_radius, overlap);
           limit = model.friction.limit_force(slip, fn, strength.total());

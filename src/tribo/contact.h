@@ -91,7 +91,7 @@ class StaticKineticFriction {
     if (d_c_ == 0.0) return 0.0;
     return (mu_s_ - mu_k_) * std::max(0.0, 1.0 - accumulated_slip / d_c_);
   }
-  // Limit force when the kinetic level is given as a force (e.g. adhesion + ploughing, strength_friction.h):
+  // Limit force when the kinetic level is given as a force (e.g. adhesion + ploughing, friction_strength.h):
   // kinetic_force + static_excess(slip) F_n; with kinetic_force = mu_k F_n this is coefficient(slip) F_n.
   double limit_force(double accumulated_slip, double normal_force, double kinetic_force) const
   {

@@ -1,26 +1,25 @@
-// Coulomb limit from the micro friction strength (adhesion + ploughing) with a static excess.
+// Coulomb limit from the micro friction strength (adhesion + ploughing) with a static excess:
+// StaticKineticFriction::limit_force, used by pair runin/asperity and fix runin/wall with 'friction strength'.
+#include "tribo/contact.h"
 #include "tribo/friction_strength.h"
-#include "tribo/strength_friction.h"
 
 #include <gtest/gtest.h>
 
 using namespace runin::tribo;
 
-// mu(slip) = mu_p + mu_adh + (mu_s - mu_k) max(0, 1 - slip / d_c): the kinetic level is the strength
-// over the normal force, the static excess and its slip weakening are those of the coefficient set.
-TEST(StrengthFriction, KineticLevelIsStrengthOverLoadWithStaticExcess)
+// F_lim = F_adh + F_pl + (mu_s - mu_k) max(0, 1 - slip / d_c) F_n: the kinetic level is the strength,
+// the static excess and its slip weakening are those of the coefficient set.
+TEST(StrengthFriction, KineticLevelIsStrengthWithStaticExcess)
 {
   const double mu_s = 0.7, mu_k = 0.5, d_c = 2e-8, fn = 3e-3;
   FrictionStrengthParts parts;
   parts.adhesion = 4e-4;
   parts.ploughing = 2e-4;
-  const double mu_strength = (4e-4 + 2e-4) / fn;    // 0.2
-  const StaticKineticFriction limit = strength_friction(mu_s, mu_k, d_c, parts, fn);
-  EXPECT_NEAR(limit.mu_kinetic(), mu_strength, 1e-15);
-  EXPECT_NEAR(limit.mu_static(), mu_strength + 0.2, 1e-15);
-  EXPECT_NEAR(limit.coefficient(0.0), mu_strength + 0.2, 1e-15);
-  EXPECT_NEAR(limit.coefficient(0.5 * d_c), mu_strength + 0.1, 1e-15);
-  EXPECT_NEAR(limit.coefficient(3.0 * d_c), mu_strength, 1e-15);
+  const double strength = 6e-4;    // mu_strength = 0.2
+  const StaticKineticFriction friction(mu_s, mu_k, d_c);
+  EXPECT_NEAR(friction.limit_force(0.0, fn, parts.total()), strength + 0.2 * fn, 1e-18);
+  EXPECT_NEAR(friction.limit_force(0.5 * d_c, fn, parts.total()), strength + 0.1 * fn, 1e-18);
+  EXPECT_NEAR(friction.limit_force(3.0 * d_c, fn, parts.total()), strength, 1e-18);
 }
 
 // Without a static excess the limit is the strength alone at every slip distance (the pure
@@ -29,8 +28,8 @@ TEST(StrengthFriction, NoExcessIsPureStrength)
 {
   FrictionStrengthParts parts;
   parts.ploughing = 1e-3;
-  const StaticKineticFriction limit = strength_friction(0.4, 0.4, 1e-8, parts, 1e-2);
-  EXPECT_NEAR(limit.coefficient(0.0), 0.1, 1e-15);
-  EXPECT_NEAR(limit.coefficient(1.0), 0.1, 1e-15);
-  EXPECT_EQ(strength_friction(0.4, 0.4, 0.0, FrictionStrengthParts{}, 1e-2).coefficient(0.0), 0.0);
+  const StaticKineticFriction friction(0.4, 0.4, 1e-8);
+  EXPECT_NEAR(friction.limit_force(0.0, 1e-2, parts.total()), 1e-3, 1e-18);
+  EXPECT_NEAR(friction.limit_force(1.0, 1e-2, parts.total()), 1e-3, 1e-18);
+  EXPECT_EQ(StaticKineticFriction(0.4, 0.4, 0.0).limit_force(0.0, 1e-2, FrictionStrengthParts{}.total()), 0.0);
 }
