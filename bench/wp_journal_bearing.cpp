@@ -3,7 +3,7 @@
 // switched at step ends, no event location) against a CVODE BDF rtol = 1e-12 reference.
 // Error: max over the 1 ms output grid of |s(t) - s_ref(t)| / s_ref(2 s), s the sliding distance.
 // Also times the long wear run-in: 1000 wear updates on a 512-node arc.
-//   build-journal/bench/wp_journal_bearing [OUT.csv]   (default wp_journal_bearing.csv; PNG beside it)
+//   build-bench/bench/wp_journal_bearing [OUT.csv]   (default wp_journal_bearing.csv; PNG beside it)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
