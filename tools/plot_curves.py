@@ -12,6 +12,7 @@ and contact radius, and peak/mean contact pressure vs time.
 Uses Debian's matplotlib: run with /usr/bin/python3.
 """
 import argparse
+import textwrap
 
 import matplotlib
 
@@ -39,7 +40,7 @@ def main():
     fig, axes = plt.subplots(4 if contact else 2, 1, sharex=True, figsize=(8, 12 if contact else 7),
                              constrained_layout=True)
     top, bottom = axes[0], axes[1]
-    fig.suptitle(args.title)
+    fig.suptitle(textwrap.fill(args.title, 90), fontsize=10)
 
     top.plot(t, data["friction_force_N"], color="tab:red", label="friction force")
     top.set_ylabel("friction force (N)", color="tab:red")
@@ -92,7 +93,7 @@ def main():
 def overlay(args):
     data = np.genfromtxt(args.csv, delimiter=",", names=True)
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 7), constrained_layout=True)
-    fig.suptitle(args.title)
+    fig.suptitle(textwrap.fill(args.title, 90), fontsize=10)
     for mu0 in sorted(set(data["mu0"]), reverse=True):
         rows = data["mu0"] == mu0
         line, = top.plot(data["t_s"][rows], data["friction_force_N"][rows], label=f"mu0 = {mu0:g}")

@@ -9,6 +9,7 @@ lines, the analogue of thesis Figs. 3.3/3.4. sweep: the same two panels, one cur
 Uses Debian's matplotlib: run with /usr/bin/python3.
 """
 import argparse
+import textwrap
 
 import matplotlib
 
@@ -21,7 +22,7 @@ def curve(args):
     data = np.genfromtxt(args.csv, delimiter=",", names=True)
     t = data["t"]
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 7), constrained_layout=True)
-    fig.suptitle(args.title)
+    fig.suptitle(textwrap.fill(args.title, 90), fontsize=10)
     top.plot(t, data["mu"], color="tab:blue", label="mu(t)")
     top.axhline(args.mu_min, color="k", linestyle=":", linewidth=1, label=f"global min mu = {args.mu_min:.4g}")
     top.set_ylabel("friction coefficient mu")
@@ -47,7 +48,7 @@ def sweep(args):
     values = np.atleast_1d(summary[summary.dtype.names[0]])
     r_star = np.atleast_1d(summary["R_star"])
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 7), constrained_layout=True)
-    fig.suptitle(f"{args.title}: sweep of {args.parameter}")
+    fig.suptitle(textwrap.fill(f"{args.title}: sweep of {args.parameter}", 90), fontsize=10)
     colours = plt.cm.viridis(np.linspace(0, 0.9, len(values)))
     for value, rs, colour in zip(values, r_star, colours):
         rows = data["value"] == value

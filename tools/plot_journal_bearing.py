@@ -13,6 +13,7 @@ wp: error vs CPU time from bench/wp_journal_bearing, one panel per mu0.
 Uses Debian's matplotlib: run with /usr/bin/python3.
 """
 import argparse
+import textwrap
 
 import matplotlib
 
@@ -37,7 +38,7 @@ def curve(args):
     t = d["t_s"]
     slip = d["state_slip"] > 0.5
     fig, (top, mid, bottom) = plt.subplots(3, 1, sharex=True, figsize=(8, 9), constrained_layout=True)
-    fig.suptitle(args.title)
+    fig.suptitle(textwrap.fill(args.title, 90), fontsize=10)
     shade_stick(top, t, slip)
     top.plot(t, d["friction_force_N"], color="tab:red", label="friction force F = T_f / R")
     top.set_ylabel("friction force (N)", color="tab:red")
@@ -71,7 +72,7 @@ def curve(args):
 def sweep(args):
     d = np.genfromtxt(args.csv, delimiter=",", names=True)
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 7), constrained_layout=True)
-    fig.suptitle(args.title + "\nmu0 overlay")
+    fig.suptitle(textwrap.fill(args.title + "\nmu0 overlay", 90), fontsize=10)
     for mu0 in np.unique(d["mu0"])[::-1]:
         rows = d[d["mu0"] == mu0]
         line, = top.plot(rows["t_s"], rows["friction_force_N"], label=f"mu0 = {mu0:g}")
@@ -89,7 +90,7 @@ def wp(args):
         rows = [r for r in csv.DictReader(f) if r["case"] == "thesis_2s"]
     mus = sorted({r["mu0"] for r in rows}, key=float, reverse=True)
     fig, axes = plt.subplots(1, len(mus), figsize=(4.2 * len(mus), 4), sharey=True, constrained_layout=True)
-    fig.suptitle(args.title)
+    fig.suptitle(textwrap.fill(args.title, 90), fontsize=10)
     for axis, mu0 in zip(np.atleast_1d(axes), mus):
         for method, marker in (("cvode_bdf", "o-"), ("cvode_adams", "s-"), ("euler_fixed", "^--")):
             sel = [r for r in rows if r["mu0"] == mu0 and r["method"] == method]

@@ -12,6 +12,7 @@ sweep: friction force vs time for each mu0 (the thesis's 0.95 / 0.55 / 0.15 over
 Uses Debian's matplotlib: run with /usr/bin/python3.
 """
 import argparse
+import textwrap
 
 import matplotlib
 
@@ -34,7 +35,7 @@ def plot_curve(args):
     t = d["t_s"]
     slip = d["state_slip"] > 0.5
     fig, axes = plt.subplots(3, 2, figsize=(12, 11), constrained_layout=True)
-    fig.suptitle(args.title)
+    fig.suptitle(textwrap.fill(args.title, 90), fontsize=10)
 
     ax = axes[0, 0]
     ax.plot(t, d["friction_force_N"], color="tab:red", label="friction force (liner)")
@@ -113,7 +114,7 @@ def plot_curve(args):
 def plot_sweep(args):
     d = np.genfromtxt(args.csv, delimiter=",", names=True)
     fig, (full, zoom) = plt.subplots(1, 2, figsize=(12, 5), constrained_layout=True)
-    fig.suptitle(args.title + ": static coefficient mu0")
+    fig.suptitle(textwrap.fill(args.title + ": static coefficient mu0", 90), fontsize=10)
     ends = []
     for mu0 in sorted(set(d["mu0"]), reverse=True):
         m = d["mu0"] == mu0
@@ -137,7 +138,7 @@ def plot_wp(args):
     d = np.genfromtxt(args.csv, delimiter=",", names=True, dtype=None, encoding=None)
     cases = sorted(set(d["mu0"]), reverse=True)
     fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4.5), constrained_layout=True, squeeze=False)
-    fig.suptitle("piston-ring thesis case (2 s): error vs wall time, closed-form reference")
+    fig.suptitle(textwrap.fill("piston-ring thesis case (2 s): error vs wall time, closed-form reference", 90), fontsize=10)
     styles = {"cvode_bdf": "o-", "cvode_adams": "s-", "fixed_euler": "x--", "fixed_rk4": "d--"}
     for ax, mu0 in zip(axes[0], cases):
         for method, style in styles.items():
