@@ -124,6 +124,7 @@ double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairMo
   MPI_Allreduce(local.data(), global.data(), 2 * (ntypes + 1), MPI_DOUBLE, MPI_MIN, lmp->world);
 
   double t_rayleigh = inf;
+  double t_cfl = inf;    // thesis eq. 2.1 with h = 2R, beta = 1: reported beside the Rayleigh limit
   int worst_i = 0, worst_j = 0;
   for (int i = 1; i <= ntypes; i++)
     for (int j = i; j <= ntypes; j++) {
@@ -135,6 +136,7 @@ double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairMo
         if (global[2 * t] == inf) continue;    // no atoms of this type
         const double time = tribo::rayleigh_time(global[2 * t], equivalent, global[2 * t + 1]);
         if (time < t_rayleigh) t_rayleigh = time, worst_i = i, worst_j = j;
+        t_cfl = std::min(t_cfl, tribo::cfl_time_step(2.0 * global[2 * t], equivalent.youngs_modulus, global[2 * t + 1]));
       }
     }
 
@@ -157,9 +159,9 @@ double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairMo
     case tribo::TimeStepVerdict::warn:
       if (lmp->comm->me == 0)
         lmp->error->warning(FLERR, "{}: timestep {:.4g} s exceeds the critical timestep {:.4g} s ({} x the Rayleigh "
-                            "time {:.4g} s, types {} {})",
+                            "time {:.4g} s, types {} {}; CFL limit of thesis eq. 2.1 with h = 2R: {:.4g} s)",
                             style, dt, Policy::warn_fraction * t_rayleigh, Policy::warn_fraction, t_rayleigh,
-                            worst_i, worst_j);
+                            worst_i, worst_j, t_cfl);
       break;
     case tribo::TimeStepVerdict::ok:
       break;
