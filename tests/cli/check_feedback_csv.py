@@ -11,9 +11,7 @@ import math
 import os
 import sys
 
-
-def close(a, b, rel):
-    return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)
+from output_checks import close, finish, leftover_problems, png_problems
 
 
 def main():
@@ -71,13 +69,9 @@ def main():
         problems.append("plot scratch file feedback_sweep_curves.csv left behind")
     if args.png:
         names = ["feedback.png"] + (["feedback_sweep.png"] if args.sweep is not None else [])
-        for name in names:
-            path = os.path.join(args.dir, name)
-            if not os.path.exists(path) or open(path, "rb").read(8) != b"\x89PNG\r\n\x1a\n":
-                problems.append(f"{name} missing or not a PNG")
-    for p in problems:
-        print("check_feedback_csv:", p, file=sys.stderr)
-    sys.exit(1 if problems else 0)
+        problems += png_problems(args.dir, names)
+    problems += leftover_problems(args.dir)
+    finish("check_feedback_csv", problems, "ok" if not problems else "failed")
 
 
 if __name__ == "__main__":

@@ -10,16 +10,14 @@ import math
 import os
 import sys
 
+from output_checks import close, finish, leftover_problems, png_problems
+
 COLUMNS = ["t_s", "drive_angle_rad", "drive_speed_rad_s", "journal_speed_rad_s", "coupling_torque_N_m",
            "friction_torque_N_m", "friction_force_N", "normal_force_N", "mu", "mu_law", "sliding_speed_m_s",
            "sliding_distance_m", "wear_volume_m3", "contact_half_angle_rad", "peak_pressure_Pa",
            "mean_pressure_Pa", "state_slip", "roughness"]
 SWEEP = ["mu0", "peak_friction_force_N", "peak_time_s", "breakaway_time_s", "steady_time_s", "steady_mu",
          "wear_volume_m3"]
-
-
-def close(a, b, rel):
-    return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)
 
 
 def read(path, header):
@@ -128,17 +126,9 @@ def main():
                     problems.append(f"VTK frame lacks field {field}")
     if args.png:
         names = ["journal_bearing.png"] + (["journal_bearing_mu0.png"] if args.sweep else [])
-        for name in names:
-            with open(os.path.join(args.dir, name), "rb") as f:
-                if f.read(8) != b"\x89PNG\r\n\x1a\n":
-                    problems.append(f"{name} is not a PNG")
-    leftovers = [n for n in os.listdir(args.dir) if n.startswith(".")]
-    if leftovers:
-        problems.append(f"temporary files left: {leftovers}")
-    for p in problems:
-        print("check_journal_bearing_csv:", p, file=sys.stderr)
-    print(f"checked {len(rows)} rows, {len(breakaway)} break-away(s), final friction {rows[-1][c['friction_force_N']]} N")
-    sys.exit(1 if problems else 0)
+        problems += png_problems(args.dir, names)
+    problems += leftover_problems(args.dir)
+    finish("check_journal_bearing_csv", problems, f"checked {len(rows)} rows, {len(breakaway)} break-away(s), final friction {rows[-1][c['friction_force_N']]} N")
 
 
 if __name__ == "__main__":

@@ -11,15 +11,13 @@ import math
 import os
 import sys
 
+from output_checks import close, finish, leftover_problems, png_problems
+
 COLUMNS = ["t_s", "applied_torque_N_m", "friction_force_N", "friction_torque_N_m", "mu",
            "speed_m_s", "sliding_distance_m", "state_slip", "mu_law", "roughness", "wear_volume_m3",
            "contact_radius_m", "peak_pressure_Pa", "mean_pressure_Pa"]
 SWEEP = ["mu0", "applied_torque_N_m", "breakaway_s", "peak_friction_force_N", "peak_time_s", "steady_time_s",
          "steady_mu", "wear_volume_m3"]
-
-
-def close(a, b, rel):
-    return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)
 
 
 def main():
@@ -74,10 +72,7 @@ def main():
         problems.append("sliding distance decreases")
     if args.png:
         names = ["pin_on_disk.png"] + (["pin_on_disk_mu0.png"] if args.sweep else [])
-        for name in names:
-            with open(os.path.join(args.dir, name), "rb") as f:
-                if f.read(8) != b"\x89PNG\r\n\x1a\n":
-                    problems.append(f"{name} is not a PNG")
+        problems += png_problems(args.dir, names)
     if args.archard:
         k_over_h, load = args.archard
         wear = [r[10] for r in rows]
@@ -135,13 +130,8 @@ def main():
                 text = f.read()
             if 'Name="pressure_Pa"' not in text or 'Name="wear_depth_m"' not in text:
                 problems.append(f"{name} lacks the pressure_Pa / wear_depth_m point fields")
-    leftovers = [n for n in os.listdir(args.dir) if n.startswith(".")]
-    if leftovers:
-        problems.append(f"temporary files left: {leftovers}")
-    for p in problems:
-        print("check_pin_on_disk_csv:", p, file=sys.stderr)
-    print(f"checked {len(rows)} rows, break-away at {slip_starts[:1]}, final speed {rows[-1][5]}")
-    sys.exit(1 if problems else 0)
+    problems += leftover_problems(args.dir)
+    finish("check_pin_on_disk_csv", problems, f"checked {len(rows)} rows, break-away at {slip_starts[:1]}, final speed {rows[-1][5]}")
 
 
 if __name__ == "__main__":

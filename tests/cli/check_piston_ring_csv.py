@@ -16,6 +16,8 @@ import math
 import os
 import sys
 
+from output_checks import finish, leftover_problems, png_problems
+
 COLUMNS = ["t_s", "crank_angle_deg", "piston_position_m", "piston_velocity_m_s", "ring_position_m", "speed_m_s",
            "sliding_distance_m", "friction_force_N", "land_force_N", "normal_load_N", "mu", "mu_law", "state_slip",
            "wear_ring_m3", "wear_liner_m3", "wear_volume_m3", "contact_width_m", "peak_pressure_Pa",
@@ -120,17 +122,9 @@ def main():
                 if f.read().count("<DataSet") != args.vtk:
                     problems.append(f"vtk: {stem}.pvd does not list {args.vtk} frames")
     if args.png:
-        for name in ["piston_ring.png"] + (["piston_ring_mu0.png"] if args.sweep else []):
-            with open(os.path.join(args.dir, name), "rb") as f:
-                if f.read(8) != b"\x89PNG\r\n\x1a\n":
-                    problems.append(f"{name} is not a PNG")
-    leftovers = [n for n in os.listdir(args.dir) if n.startswith(".")]
-    if leftovers:
-        problems.append(f"temporary files left: {leftovers}")
-    for p in problems:
-        print("check_piston_ring_csv:", p, file=sys.stderr)
-    print(f"checked {len(rows)} rows; wear {total[-1]:.6g} m^3 vs k/H int W ds {expected:.6g} m^3")
-    sys.exit(1 if problems else 0)
+        problems += png_problems(args.dir, ["piston_ring.png"] + (["piston_ring_mu0.png"] if args.sweep else []))
+    problems += leftover_problems(args.dir)
+    finish("check_piston_ring_csv", problems, f"checked {len(rows)} rows; wear {total[-1]:.6g} m^3 vs k/H int W ds {expected:.6g} m^3")
 
 
 if __name__ == "__main__":
