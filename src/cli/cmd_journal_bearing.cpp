@@ -10,8 +10,6 @@
 #include <vector>
 
 #include <fmt/core.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include "cli/case_file.h"
 #include "cli/journal_bearing_case.h"
@@ -20,8 +18,6 @@
 #ifdef RUNIN_HAVE_VTK
 #include "coupling/vtk_export.h"
 #endif
-
-extern char **environ;
 
 namespace runin::cli {
 namespace {
@@ -123,23 +119,6 @@ std::string row(const JournalBearingSample &s) {
                      s.peak_pressure, s.mean_pressure, s.state == continuum::ContactState::Slip ? 1 : 0, s.roughness);
 }
 
-void run_plot(const std::vector<std::string> &script_args) {
-  const char *python_env = std::getenv("RUNIN_PYTHON");
-  const std::string python = python_env && *python_env ? python_env : RUNIN_DEFAULT_PYTHON;
-  const std::string script = std::string(RUNIN_SOURCE_DIR) + "/tools/plot_journal_bearing.py";
-  std::vector<std::string> args = {python, script};
-  args.insert(args.end(), script_args.begin(), script_args.end());
-  std::vector<char *> argv;
-  for (auto &a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-    throw std::runtime_error("cannot start " + python + " for the plot (set RUNIN_PYTHON or use --no-plot)");
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error("plotting failed: " + python + " " + script + " (use --no-plot to skip)");
-}
-
 std::string or_none(double t) { return t < 0.0 ? std::string("not reached") : fmt::format("{:.6g} s", t); }
 
 #ifdef RUNIN_HAVE_VTK
@@ -171,7 +150,7 @@ std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, 
 }
 #endif
 
-int run(const Options &o) {
+int run(const Options &o, const PlotRunner &plot) {
   const JournalBearingCase c = read_journal_bearing_case(o.case_path, o.law_path);
   const Curve main_curve = run_case(c, *c.friction, true, o.max_wear_updates);
   std::vector<Curve> sweep;
@@ -202,11 +181,11 @@ int run(const Options &o) {
     written.insert(written.end(), {"journal_bearing_sweep.csv", "journal_bearing_sweep_summary.csv"});
   }
   if (!o.no_plot) {
-    run_plot({"curve", out.file("journal_bearing.csv").string(), out.file("journal_bearing.png").string(), "--title",
+    plot("plot_journal_bearing.py", {"curve", out.file("journal_bearing.csv").string(), out.file("journal_bearing.png").string(), "--title",
               c.title});
     written.push_back("journal_bearing.png");
     if (!sweep.empty()) {
-      run_plot({"sweep", out.file("journal_bearing_sweep.csv").string(), out.file("journal_bearing_mu0.png").string(),
+      plot("plot_journal_bearing.py", {"sweep", out.file("journal_bearing_sweep.csv").string(), out.file("journal_bearing_mu0.png").string(),
                 "--title", c.title});
       written.push_back("journal_bearing_mu0.png");
     }
@@ -262,7 +241,7 @@ int run(const Options &o) {
 
 }  // namespace
 
-Subcommand add_journal_bearing_command(CLI::App &app) {
+Subcommand add_journal_bearing_command(CLI::App &app, PlotRunner plot) {
   auto options = std::make_shared<Options>();
   auto *cmd = app.add_subcommand("journal-bearing", "Dry journal bearing run-in: contact, friction torque, wear (thesis ch. 5)");
   cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
@@ -273,7 +252,7 @@ Subcommand add_journal_bearing_command(CLI::App &app) {
                   "stop with an error instead of running more wear updates (contact re-solves) than this")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  return {cmd, [options] { return run(*options); }};
+  return {cmd, [options, plot = std::move(plot)] { return run(*options, plot); }};
 }
 
 }  // namespace runin::cli

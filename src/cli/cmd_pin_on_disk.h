@@ -1,12 +1,10 @@
 // `runin pin-on-disk`: the pin-on-disk run-in (thesis ch. 4) with contact, wear, VTK and mu0 sweep.
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
-#include <vector>
 
-#include <CLI/CLI.hpp>
+#include "cli/subcommand.h"
 
 namespace runin::cli {
 
@@ -15,9 +13,6 @@ struct PinOnDiskOptions {
   std::optional<std::string> law_path;
   bool no_plot = false;
 };
-
-// Runs tools/<script> with the configured python and the arguments; throws on failure.
-using PlotRunner = std::function<void(const std::string &script, const std::vector<std::string> &args)>;
 
 CLI::App *add_pin_on_disk_command(CLI::App &app, PinOnDiskOptions &options);
 // Bad input throws InputError (exit 2); numerical or I/O failure std::runtime_error (exit 1).

@@ -195,7 +195,7 @@ double pressure_settling_time(const continuum::PistonRingParameters &p, const st
   return first < cycles - 1 ? first * period : -1.0;
 }
 
-int run(const Options &o, const PistonRingPlotter &plot) {
+int run(const Options &o, const PlotRunner &plot) {
   const PistonRingCase c = read_piston_ring_case(o.case_path, o.law_path);
   const auto &p = c.parameters;
   const Curve curve = run_dynamics(c, *c.friction);
@@ -325,7 +325,7 @@ int run(const Options &o, const PistonRingPlotter &plot) {
 
 }  // namespace
 
-PistonRingCommand add_piston_ring_command(CLI::App &app, PistonRingPlotter plot) {
+Subcommand add_piston_ring_command(CLI::App &app, PlotRunner plot) {
   auto options = std::make_shared<Options>();
   auto *cmd = app.add_subcommand("piston-ring", "Piston ring in a cylinder: run-in friction and wear (thesis ch. 6)");
   cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();

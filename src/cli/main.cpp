@@ -289,8 +289,8 @@ int main(int argc, char **argv) {
   vtk_cmd->add_option("--output-dir", vtk_dir, "directory for the .vtp files and the .pvd collection")->required();
   vtk_cmd->add_option("--stem", vtk_stem, "file name stem")->capture_default_str();
 
-  const Subcommand journal_bearing = add_journal_bearing_command(app);
-  const PistonRingCommand piston_ring = add_piston_ring_command(app, run_python_plot);
+  const Subcommand journal_bearing = add_journal_bearing_command(app, run_python_plot);
+  const Subcommand piston_ring = add_piston_ring_command(app, run_python_plot);
 
   try {
     app.parse(argc, argv);
