@@ -88,54 +88,83 @@ void apply_wear(const JournalBearingSystem &sys, Surface &surface, double distan
 
 }  // namespace
 
-JournalBearingReport simulate(const JournalBearingSystem &system, const JournalBearingRun &run,
-                              const JournalBearingObserver &observer, const JournalBearingFrameObserver &frames) {
-  run.validate();
-  const auto &p = system.parameters();
-  const double radius = p.bore.shaft_radius;
-  const double round_off = 64.0 * std::numeric_limits<double>::epsilon() * run.t_end;
-  const auto &friction = system.friction();
-
-  JournalBearingReport report;
-  Surface surface;
-  surface.wear.assign(system.contact().nodes(), 0.0);
-  if (!solve_contact(system, surface, report.message)) {
-    report.status = SolveStatus::IntegratorFailure;
-    return report;
-  }
-  report.stable_wear_step = system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
-  const double wear_step = run.fixed_wear_step > 0.0 ? run.fixed_wear_step : run.wear_step_fraction * report.stable_wear_step;
-  const bool wearing = p.wear_coefficient > 0.0 && std::isfinite(wear_step);
-  double next_wear = wearing ? wear_step : HUGE_VAL;
-
-  auto coupling_torque = [&p](double t, const double *y) {
-    return p.coupling_stiffness * (p.drive_angle(t) - y[0]) + p.coupling_damping * (p.drive_speed(t) - y[1]);
-  };
-  // y = (theta, w, s, R); R is the friction law's state (feedback roughness), constant otherwise.
-  auto static_limit = [&](const double *y) {
-    return friction.static_coefficient(y[3]) * surface.normal_force * radius;
-  };
-  auto slip_torque = [&](const double *y, int dir) {
-    return dir * friction.kinetic(y[2], radius * y[1], y[3]) * surface.normal_force * radius;
-  };
-
-  CvodeIntegrator integrator(4, run.integrator);
-  std::vector<double> y = {0.0, 0.0, 0.0, friction.initial_state()};
-  ContactState state = ContactState::Stick;
-  int direction = 0;
-  double t = 0.0;
+namespace {
+// y = (theta, w, s, R); R is the friction law's state (feedback roughness), constant otherwise.
+// The pressure is frozen between wear updates, which are an extra root (s = next_wear) in slip.
+struct JournalBearingHooks : StickSlipHooksBase {
+  const JournalBearingSystem &system;
+  const JournalBearingParameters &p;
+  const SlidingFriction &friction;
+  const double radius;
+  Surface &surface;
+  JournalBearingReport &report;
+  const double wear_step;
+  double next_wear;
+  const JournalBearingObserver &observer;
+  const JournalBearingFrameObserver &frames;
+  std::vector<double> frame_times;
   std::size_t next_frame = 0;
-  std::vector<double> frame_times = run.frame_times;
-  std::sort(frame_times.begin(), frame_times.end());
+  const double round_off;
+  static constexpr std::size_t speed_index = 1;
 
-  auto emit = [&] {
+  JournalBearingHooks(const JournalBearingSystem &sys, Surface &surf, JournalBearingReport &rep, double step,
+                      bool wearing, const JournalBearingObserver &obs, const JournalBearingFrameObserver &fr,
+                      const JournalBearingRun &run)
+      : system(sys), p(sys.parameters()), friction(sys.friction()), radius(p.bore.shaft_radius), surface(surf),
+        report(rep), wear_step(step), next_wear(wearing ? step : HUGE_VAL), observer(obs), frames(fr),
+        frame_times(run.frame_times), round_off(64.0 * std::numeric_limits<double>::epsilon() * run.t_end) {
+    std::sort(frame_times.begin(), frame_times.end());
+  }
+
+  double coupling_torque(double t, const double *y) const {
+    return p.coupling_stiffness * (p.drive_angle(t) - y[0]) + p.coupling_damping * (p.drive_speed(t) - y[1]);
+  }
+  double static_limit(const double *y) const { return friction.static_coefficient(y[3]) * surface.normal_force * radius; }
+  double slip_torque(const double *y, int dir) const {
+    return dir * friction.kinetic(y[2], radius * y[1], y[3]) * surface.normal_force * radius;
+  }
+
+  void rhs(double t, const double *y, double *dy, ContactState state, int dir) const {
+    if (state == ContactState::Stick) {
+      dy[0] = dy[1] = dy[2] = 0.0;
+      dy[3] = friction.state_rate(y[3], 0.0, false);
+      return;
+    }
+    dy[0] = y[1];
+    dy[1] = (coupling_torque(t, y) - slip_torque(y, dir)) / p.inertia;
+    dy[2] = dir * radius * y[1];  // = R|w| before the re-stick root, smooth through it
+    dy[3] = friction.state_rate(y[3], radius * y[1], true);
+  }
+  double breakaway_function(double t, const double *y) const {
+    return std::abs(coupling_torque(t, y)) - static_limit(y);
+  }
+  int breakaway_direction(double t, const double *y) const { return sign_of(coupling_torque(t, y)); }
+
+  // Stick: a constant, so both phases have two roots.
+  void extra_roots(double, const double *y, ContactState state, double *g) const {
+    g[0] = state == ContactState::Stick ? -1.0 : y[2] - next_wear;
+  }
+  std::vector<int> extra_root_directions(ContactState state) const {
+    return {state == ContactState::Stick ? 0 : +1};
+  }
+  bool on_extra_roots(StickSlipState &s, const std::vector<int> &found, std::string &message) {
+    if (s.state != ContactState::Slip || found[1] == 0) return true;
+    apply_wear(system, surface, s.y[2]);
+    ++report.wear_updates;
+    next_wear = s.y[2] + wear_step;
+    return solve_contact(system, surface, message);
+  }
+
+  void emit(const StickSlipState &st) {
+    const double t = st.t;
+    const std::vector<double> &y = st.y;
     JournalBearingSample s;
     s.t = t;
     s.drive_angle = p.drive_angle(t);
     s.drive_speed = p.drive_speed(t);
-    s.journal_speed = state == ContactState::Stick ? 0.0 : y[1];
+    s.journal_speed = st.state == ContactState::Stick ? 0.0 : y[1];
     s.coupling_torque = coupling_torque(t, y.data());
-    s.friction_torque = state == ContactState::Stick ? s.coupling_torque : slip_torque(y.data(), direction);
+    s.friction_torque = st.state == ContactState::Stick ? s.coupling_torque : slip_torque(y.data(), st.direction);
     s.friction_force = s.friction_torque / radius;
     s.normal_force = surface.normal_force;
     s.mu = s.friction_force / surface.normal_force;
@@ -147,7 +176,7 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
     s.contact_half_angle = surface.contact.contact_half_angle;
     s.peak_pressure = surface.contact.peak_pressure;
     s.mean_pressure = surface.contact.mean_pressure;
-    s.state = state;
+    s.state = st.state;
     observer(s);
     while (frames && next_frame < frame_times.size() && t >= frame_times[next_frame] - round_off) {
       JournalBearingFrame f;
@@ -160,114 +189,46 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
       frames(f);
       ++next_frame;
     }
-  };
-
-  // One CVODE problem per contact phase and wear interval.
-  auto start_phase = [&] {
-    if (state == ContactState::Stick) {
-      y[1] = 0.0;
-      integrator.restart(
-          t, y,
-          [&](double, const double *yy, double *dy) {
-            dy[0] = dy[1] = dy[2] = 0.0;
-            dy[3] = friction.state_rate(yy[3], 0.0, false);
-          },
-          [&](double tt, const double *yy, double *g) {
-            g[0] = std::abs(coupling_torque(tt, yy)) - static_limit(yy);
-            g[1] = -1.0;
-          },
-          {+1, 0});
-    } else {
-      const int dir = direction;
-      integrator.restart(
-          t, y,
-          [&, dir](double tt, const double *yy, double *dy) {
-            dy[0] = yy[1];
-            dy[1] = (coupling_torque(tt, yy) - slip_torque(yy, dir)) / p.inertia;
-            dy[2] = dir * radius * yy[1];  // = R|w| before the re-stick root, smooth through it
-            dy[3] = friction.state_rate(yy[3], radius * yy[1], true);
-          },
-          [&, dir](double, const double *yy, double *g) {
-            g[0] = dir * yy[1];
-            g[1] = yy[2] - next_wear;
-          },
-          {-1, +1});
-    }
-  };
-  auto break_away = [&] {
-    report.breakaway_times.push_back(t);
-    state = ContactState::Slip;
-    direction = sign_of(coupling_torque(t, y.data()));
-    y[1] = 0.0;
-  };
-
-  if (std::abs(coupling_torque(t, y.data())) > static_limit(y.data())) {
-    emit();
-    break_away();
   }
-  emit();
-  start_phase();
+};
+}  // namespace
 
-  long next_grid = 1;
-  int events = 0;
-  const double kink = p.ramp_time;
-  while (t < run.t_end - round_off) {
-    const double grid_time = std::min(static_cast<double>(next_grid) * run.output_interval, run.t_end);
-    const bool kink_first = t < kink - round_off && kink < grid_time - round_off;
-    const double target = kink_first ? kink : grid_time;
+JournalBearingReport simulate(const JournalBearingSystem &system, const JournalBearingRun &run,
+                              const JournalBearingObserver &observer, const JournalBearingFrameObserver &frames) {
+  run.validate();
+  const auto &p = system.parameters();
 
-    const auto step = integrator.advance(target);
-    y = integrator.state();
-    t = step.t;
-    if (step.outcome == CvodeIntegrator::Outcome::Failed) {
-      report.status = SolveStatus::IntegratorFailure;
-      report.message = "CVODE failed at t = " + std::to_string(t) + " s: " + step.message;
-      break;
-    }
-    if (step.outcome == CvodeIntegrator::Outcome::FoundRoot) {
-      const bool stop_event = step.roots_found[0] != 0;
-      if (state == ContactState::Slip && step.roots_found[1] != 0) {  // wear update
-        apply_wear(system, surface, y[2]);
-        ++report.wear_updates;
-        next_wear = y[2] + wear_step;
-        if (!solve_contact(system, surface, report.message)) {
-          report.status = SolveStatus::IntegratorFailure;
-          break;
-        }
-      }
-      if (stop_event) {
-        emit();
-        if (++events > run.max_events) {
-          report.status = SolveStatus::TooManyEvents;
-          report.message = "more than " + std::to_string(run.max_events) + " stick/slip events by t = " +
-                           std::to_string(t) + " s";
-          break;
-        }
-        if (state == ContactState::Stick) {
-          break_away();
-        } else if (std::abs(coupling_torque(t, y.data())) <= static_limit(y.data())) {
-          report.restick_times.push_back(t);
-          state = ContactState::Stick;
-          direction = 0;
-        } else {
-          report.breakaway_times.push_back(t);
-          direction = sign_of(coupling_torque(t, y.data()));
-          y[1] = 0.0;
-        }
-        emit();
-      }
-      start_phase();
-      continue;
-    }
-    emit();
-    if (kink_first) {
-      start_phase();  // restart at the kink of the drive speed instead of stepping across it
-    } else {
-      ++next_grid;
-    }
+  JournalBearingReport report;
+  Surface surface;
+  surface.wear.assign(system.contact().nodes(), 0.0);
+  if (!solve_contact(system, surface, report.message)) {
+    report.status = SolveStatus::IntegratorFailure;
+    return report;
   }
-  report.end_time = t;
-  report.steps = integrator.total_steps();
+  report.stable_wear_step = system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
+  const double wear_step = run.fixed_wear_step > 0.0 ? run.fixed_wear_step : run.wear_step_fraction * report.stable_wear_step;
+  const bool wearing = p.wear_coefficient > 0.0 && std::isfinite(wear_step);
+
+  CvodeIntegrator integrator(4, run.integrator);
+  StickSlipState start;
+  start.y = {0.0, 0.0, 0.0, system.friction().initial_state()};
+  const StickSlipGrid grid{run.t_end, run.output_interval, p.ramp_time, run.max_events};
+  JournalBearingHooks hooks(system, surface, report, wear_step, wearing, observer, frames, run);
+  SolveReport events;
+  StickSlipLoop<JournalBearingHooks> loop(hooks, grid, integrator, std::move(start), events);
+
+  const auto &s = loop.state();
+  if (hooks.breakaway_function(s.t, s.y.data()) > 0.0) {
+    loop.emit();
+    loop.break_away();
+  }
+  loop.run();
+  report.status = events.status;
+  report.message = std::move(events.message);
+  report.end_time = events.end_time;
+  report.breakaway_times = std::move(events.breakaway_times);
+  report.restick_times = std::move(events.restick_times);
+  report.steps = events.steps;
   return report;
 }
 

@@ -18,7 +18,7 @@
 
 #include "continuum/conformal_contact.h"
 #include "continuum/cvode_integrator.h"
-#include "continuum/pin_on_disk.h"  // ContactState, SolveStatus
+#include "continuum/stick_slip_loop.h"  // ContactState, SolveStatus
 #include "continuum/sliding_friction.h"
 #include "tribo/wear.h"
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace runin::continuum {
@@ -102,118 +101,48 @@ PinOnDiskSample PinOnDiskSystem::sample(double t, const double *y, ContactState 
   return s;
 }
 
-const char *to_string(SolveStatus status) {
-  switch (status) {
-    case SolveStatus::Success: return "success";
-    case SolveStatus::IntegratorFailure: return "integrator failure";
-    case SolveStatus::TooManyEvents: return "too many stick/slip events";
+namespace {
+struct PinOnDiskHooks : SystemHooks<PinOnDiskSystem, PinOnDiskObserver> {
+  using SystemHooks::SystemHooks;
+  static constexpr std::size_t speed_index = 0;
+  double breakaway_function(double t, const double *y) const { return system.breakaway_function(t, y); }
+  int breakaway_direction(double t, const double *) const {
+    const int direction = sign_of(system.applied_torque(t));
+    return direction != 0 ? direction : sign_of(system.parameters().applied_torque);  // frictionless, ramp at 0
   }
-  return "unknown";
-}
+};
+}  // namespace
 
 SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, const PinOnDiskObserver &observer) {
   run.validate();
   const double radius = system.parameters().track_radius;
-  const double ramp_end = system.parameters().ramp_time;
-  const double round_off = 64.0 * std::numeric_limits<double>::epsilon() * run.t_end;
+  const bool speed_drive = system.parameters().drive == PinDrive::Speed;
 
   SolveReport report;
   CvodeIntegrator integrator(PinOnDiskSystem::state_size, run.integrator);
-  std::vector<double> y = {run.initial_speed / radius, 0.0, system.friction().initial_state()};
-  ContactState state = run.initial_speed != 0.0 ? ContactState::Slip : ContactState::Stick;
-  int direction = sign_of(run.initial_speed);
-  double t = 0.0;
-
-  auto emit = [&] { observer(system.sample(t, y.data(), state, direction)); };
-  // One CVODE problem per contact phase; its single root function is the phase's exit.
-  const bool speed_drive = system.parameters().drive == PinDrive::Speed;
-  auto start_phase = [&] {
-    if (speed_drive) {  // slides throughout: no events
-      integrator.restart(
-          t, y, [&](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Slip, 1); },
-          [](double, const double *, double *) {}, {});
-    } else if (state == ContactState::Stick) {
-      y[0] = 0.0;
-      integrator.restart(
-          t, y, [&](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Stick, 0); },
-          [&](double tt, const double *yy, double *g) { g[0] = system.breakaway_function(tt, yy); }, {+1});
-    } else {
-      const int dir = direction;
-      integrator.restart(
-          t, y, [&, dir](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Slip, dir); },
-          [dir](double, const double *yy, double *g) { g[0] = dir * yy[0]; }, {-1});
-    }
-  };
-  auto break_away = [&] {
-    report.breakaway_times.push_back(t);
-    state = ContactState::Slip;
-    direction = sign_of(system.applied_torque(t));
-    if (direction == 0) direction = sign_of(system.parameters().applied_torque);  // frictionless, ramp at 0
-    y[0] = 0.0;
-  };
+  StickSlipState start;
+  start.y = {run.initial_speed / radius, 0.0, system.friction().initial_state()};
+  start.state = run.initial_speed != 0.0 ? ContactState::Slip : ContactState::Stick;
+  start.direction = sign_of(run.initial_speed);
+  // The speed drive slides throughout: no events.
+  const StickSlipGrid grid{run.t_end, run.output_interval, system.parameters().ramp_time, run.max_events, !speed_drive};
+  PinOnDiskHooks hooks(system, observer);
+  StickSlipLoop<PinOnDiskHooks> loop(hooks, grid, integrator, std::move(start), report);
 
   // Already past the static limit at the start (step loading), or no static friction at all
   // (CVODE does not report a root function that starts at zero)?
-  const bool frictionless = system.static_torque_limit(y.data()) == 0.0 && system.parameters().applied_torque != 0.0;
+  auto &s = loop.state();
+  const bool frictionless = system.static_torque_limit(s.y.data()) == 0.0 && system.parameters().applied_torque != 0.0;
   if (speed_drive) {  // the drive moves the pin from t = 0: break-away at the static limit at once
-    y[0] = system.parameters().prescribed_speed(0.0) / radius;
+    s.y[0] = system.parameters().prescribed_speed(0.0) / radius;
     report.breakaway_times.push_back(0.0);
-    state = ContactState::Slip;
-    direction = 1;
-  } else if (state == ContactState::Stick && (system.breakaway_function(t, y.data()) > 0.0 || frictionless)) {
-    emit();
-    break_away();
+    s.state = ContactState::Slip;
+    s.direction = 1;
+  } else if (s.state == ContactState::Stick && (system.breakaway_function(s.t, s.y.data()) > 0.0 || frictionless)) {
+    loop.emit();
+    loop.break_away();
   }
-  emit();
-  start_phase();
-
-  long next_grid = 1;
-  int events = 0;
-  while (t < run.t_end - round_off) {
-    const double grid_time = std::min(static_cast<double>(next_grid) * run.output_interval, run.t_end);
-    const bool ramp_end_first = t < ramp_end - round_off && ramp_end < grid_time - round_off;
-    const double target = ramp_end_first ? ramp_end : grid_time;
-
-    const auto step = integrator.advance(target);
-    y = integrator.state();
-    t = step.t;
-    if (step.outcome == CvodeIntegrator::Outcome::Failed) {
-      report.status = SolveStatus::IntegratorFailure;
-      report.message = "CVODE failed at t = " + std::to_string(t) + " s: " + step.message;
-      break;
-    }
-    if (step.outcome == CvodeIntegrator::Outcome::FoundRoot) {
-      emit();  // the event time joins the output, before and after the transition
-      if (++events > run.max_events) {
-        report.status = SolveStatus::TooManyEvents;
-        report.message = "more than " + std::to_string(run.max_events) + " stick/slip events by t = " +
-                         std::to_string(t) + " s";
-        break;
-      }
-      if (state == ContactState::Stick) {
-        break_away();
-      } else if (system.breakaway_function(t, y.data()) <= 0.0) {  // w reached 0 below the static limit
-        report.restick_times.push_back(t);
-        state = ContactState::Stick;
-        direction = 0;
-      } else {  // w reached 0 but the torque exceeds the static limit: slide the other way
-        report.breakaway_times.push_back(t);
-        direction = sign_of(system.applied_torque(t));
-        y[0] = 0.0;
-      }
-      emit();
-      start_phase();
-      continue;
-    }
-    emit();
-    if (ramp_end_first) {
-      start_phase();  // restart at the kink of T_app(t) instead of stepping across it
-    } else {
-      ++next_grid;
-    }
-  }
-  report.end_time = t;
-  report.steps = integrator.total_steps();
+  loop.run();
   return report;
 }
 

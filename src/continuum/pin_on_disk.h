@@ -16,6 +16,7 @@
 
 #include "continuum/cvode_integrator.h"
 #include "continuum/sliding_friction.h"
+#include "continuum/stick_slip_loop.h"  // ContactState, SolveStatus, SolveReport
 
 namespace runin::continuum {
 
@@ -35,8 +36,6 @@ struct PinOnDiskParameters {
   double prescribed_speed(double t) const;         // speed drive: V(t)
   double prescribed_acceleration(double t) const;  // speed drive: dV/dt (left-continuous at the ramp end)
 };
-
-enum class ContactState { Stick = 0, Slip = 1 };
 
 struct PinOnDiskSample {
   double t = 0.0;
@@ -86,20 +85,6 @@ struct PinOnDiskRun {
   int max_events = 1000;          // guards against stick-slip chattering
 
   void validate() const;
-};
-
-enum class SolveStatus { Success, IntegratorFailure, TooManyEvents };
-const char *to_string(SolveStatus status);
-
-struct SolveReport {
-  SolveStatus status = SolveStatus::Success;
-  std::string message;            // empty on success
-  double end_time = 0.0;          // where the integration stopped
-  std::vector<double> breakaway_times;
-  std::vector<double> restick_times;
-  long steps = 0;                 // CVODE internal steps
-
-  bool ok() const { return status == SolveStatus::Success; }
 };
 
 using PinOnDiskObserver = std::function<void(const PinOnDiskSample &)>;

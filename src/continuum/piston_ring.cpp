@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace runin::continuum {
@@ -181,104 +180,38 @@ PistonRingSample PistonRingSystem::sample(double t, const double *y, ContactStat
   return s;
 }
 
+namespace {
+struct PistonRingHooks : SystemHooks<PistonRingSystem, PistonRingObserver> {
+  using SystemHooks::SystemHooks;
+  static constexpr std::size_t speed_index = 1;
+  // The land force with the ring at rest (u = 0).
+  double stick_force(double t, const double *y) const {
+    double stuck[PistonRingSystem::state_size] = {y[0], 0.0, y[2], y[3]};
+    return system.land_force(t, stuck);
+  }
+  double breakaway_function(double t, const double *y) const {
+    return std::abs(stick_force(t, y)) - system.static_limit(t, y);
+  }
+  int breakaway_direction(double t, const double *y) const { return sign_of(stick_force(t, y)); }
+};
+}  // namespace
+
 SolveReport simulate(const PistonRingSystem &system, const PistonRingRun &run, const PistonRingObserver &observer) {
   run.validate();
-  const double kink = system.motion_kink();
-  const double round_off = 64.0 * std::numeric_limits<double>::epsilon() * run.t_end;
-
   SolveReport report;
   CvodeIntegrator integrator(PistonRingSystem::state_size, run.integrator);
-  std::vector<double> y = {0.0, 0.0, 0.0, system.friction().initial_state()};
-  ContactState state = ContactState::Stick;
-  int direction = 0;
-  double t = 0.0;
-
-  auto emit = [&] { observer(system.sample(t, y.data(), state, direction)); };
-  auto stick_force = [&](double tt, const double *yy) {
-    double stuck[PistonRingSystem::state_size] = {yy[0], 0.0, yy[2], yy[3]};
-    return system.land_force(tt, stuck);
-  };
-  auto start_phase = [&] {
-    if (state == ContactState::Stick) {
-      y[1] = 0.0;
-      integrator.restart(
-          t, y, [&](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Stick, 0); },
-          [&](double tt, const double *yy, double *g) {
-            g[0] = std::abs(stick_force(tt, yy)) - system.static_limit(tt, yy);
-          },
-          {+1});
-    } else {
-      const int dir = direction;
-      integrator.restart(
-          t, y, [&, dir](double tt, const double *yy, double *dy) { system.rhs(tt, yy, dy, ContactState::Slip, dir); },
-          [dir](double, const double *yy, double *g) { g[0] = dir * yy[1]; }, {-1});
-    }
-  };
-  auto break_away = [&] {
-    report.breakaway_times.push_back(t);
-    state = ContactState::Slip;
-    direction = sign_of(stick_force(t, y.data()));
-    y[1] = 0.0;
-  };
+  StickSlipState start;
+  start.y = {0.0, 0.0, 0.0, system.friction().initial_state()};
+  StickSlipGrid grid{run.t_end, run.output_interval, system.motion_kink(), run.max_events};
+  grid.reject_non_finite = true;
+  PistonRingHooks hooks(system, observer);
+  StickSlipLoop<PistonRingHooks> loop(hooks, grid, integrator, std::move(start), report);
 
   // Already past the static limit at the start (the land damper sees the piston's start speed)?
   // No stick sample then: its land force would be the damper's response to the speed step.
-  if (std::abs(stick_force(t, y.data())) > system.static_limit(t, y.data())) break_away();
-  emit();
-  start_phase();
-  long next_grid = 1;
-  int events = 0;
-  while (t < run.t_end - round_off) {
-    const double grid_time = std::min(static_cast<double>(next_grid) * run.output_interval, run.t_end);
-    const bool kink_first = kink > 0.0 && t < kink - round_off && kink < grid_time - round_off;
-    const double target = kink_first ? kink : grid_time;
-
-    const auto step = integrator.advance(target);
-    y = integrator.state();
-    t = step.t;
-    if (step.outcome == CvodeIntegrator::Outcome::Failed) {
-      report.status = SolveStatus::IntegratorFailure;
-      report.message = "CVODE failed at t = " + std::to_string(t) + " s: " + step.message;
-      break;
-    }
-    if (!std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); })) {
-      report.status = SolveStatus::IntegratorFailure;
-      report.message = "non-finite state at t = " + std::to_string(t) + " s";
-      break;
-    }
-    if (step.outcome == CvodeIntegrator::Outcome::FoundRoot) {
-      emit();  // before and after the transition
-      if (++events > run.max_events) {
-        report.status = SolveStatus::TooManyEvents;
-        report.message = "more than " + std::to_string(run.max_events) + " stick/slip events by t = " +
-                         std::to_string(t) + " s";
-        break;
-      }
-      if (state == ContactState::Stick) {
-        break_away();
-      } else if (std::abs(stick_force(t, y.data())) <= system.static_limit(t, y.data())) {
-        report.restick_times.push_back(t);
-        state = ContactState::Stick;
-        direction = 0;
-        y[1] = 0.0;
-      } else {  // reversal without sticking: the land force drives the ring the other way
-        report.breakaway_times.push_back(t);
-        direction = sign_of(stick_force(t, y.data()));
-        y[1] = 0.0;
-      }
-      emit();
-      start_phase();
-      continue;
-    }
-    emit();
-    if (kink_first) {
-      start_phase();
-    } else {
-      ++next_grid;
-    }
-  }
-  report.end_time = t;
-  report.steps = integrator.total_steps();
+  const auto &s = loop.state();
+  if (hooks.breakaway_function(s.t, s.y.data()) > 0.0) loop.break_away();
+  loop.run();
   return report;
 }
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "continuum/cvode_integrator.h"
-#include "continuum/pin_on_disk.h"  // ContactState, SolveStatus, SolveReport
+#include "continuum/stick_slip_loop.h"  // ContactState, SolveStatus, SolveReport
 #include "continuum/sliding_friction.h"
 
 namespace runin::continuum {
