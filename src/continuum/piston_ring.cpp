@@ -203,7 +203,6 @@ SolveReport simulate(const PistonRingSystem &system, const PistonRingRun &run, c
   StickSlipState start;
   start.y = {0.0, 0.0, 0.0, system.friction().initial_state()};
   StickSlipGrid grid{run.t_end, run.output_interval, system.motion_kink(), run.max_events};
-  grid.reject_non_finite = true;
   PistonRingHooks hooks(system, observer);
   StickSlipLoop<PistonRingHooks> loop(hooks, grid, integrator, std::move(start), report);
 

@@ -48,7 +48,6 @@ struct StickSlipGrid {
   double kink = -1.0;              // time of a kink in the drive (ramp end), <= 0: none
   int max_events = 0;
   bool events = true;              // false: no stick/slip events (the drive keeps the contact sliding)
-  bool reject_non_finite = false;  // a non-finite state after a step is an integrator failure
 };
 
 // Defaults for the optional hooks: no roots besides the stick/slip ones.
@@ -115,8 +114,8 @@ class StickSlipLoop {
         fail(SolveStatus::IntegratorFailure, "CVODE failed at t = " + std::to_string(s_.t) + " s: " + step.message);
         break;
       }
-      if (grid_.reject_non_finite &&
-          !std::all_of(s_.y.begin(), s_.y.end(), [](double v) { return std::isfinite(v); })) {
+      // a non-finite state is reported, never written to the output
+      if (!std::all_of(s_.y.begin(), s_.y.end(), [](double v) { return std::isfinite(v); })) {
         fail(SolveStatus::IntegratorFailure, "non-finite state at t = " + std::to_string(s_.t) + " s");
         break;
       }
