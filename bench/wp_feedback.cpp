@@ -128,8 +128,9 @@ int main(int argc, char **argv) {
   }
   std::fclose(csv);
 
-  const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_wp_feedback.py " +
-                           csv_path + " " + out + "/wp_feedback.png 'lubricated feedback model (8000 s)'";
+  const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_wp.py " + csv_path +
+                           " " + out + "/wp_feedback.png --title 'lubricated feedback model (8000 s)' --ylabel "
+                           "'max relative error of R vs closed form, 40 s grid' --target-error 1e-8";
   if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "plot failed: %s\n", plot.c_str());
   return 0;
 }

@@ -181,8 +181,10 @@ int main(int argc, char **argv) {
     }
   }
 
-  const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_wp_pin_on_disk.py " + csv_path + " " +
-                           out + "/wp_pin_on_disk.png 'pin-on-disk thesis case (2 s)'";
+  const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_wp.py " + csv_path +
+                           " " + out + "/wp_pin_on_disk.png --title 'pin-on-disk thesis case (2 s)' --ylabel "
+                           "'max relative error of V and s, 10 ms grid after break-away' --target-error 1e-6 "
+                           "--target-ms 20";
   if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "plot failed: %s\n", plot.c_str());
   return 0;
 }
