@@ -17,13 +17,17 @@
 using namespace LAMMPS_NS;
 
 ComputeRuninFriction::ComputeRuninFriction(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), wear(nullptr), body_groupbit{0, 0}, bodies_given(false)
+    Compute(lmp, narg, arg), wear(nullptr), body_groupbit{0, 0}, bodies_given(false), second_body_is_wall(false)
 {
   int iarg = 3;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "bodies") == 0) {
       if (iarg + 3 > narg) error->all(FLERR, "compute runin/friction: keyword bodies needs two group IDs");
       for (int b = 0; b < 2; b++) {
+        if (b == 1 && strcmp(arg[iarg + 2], "wall") == 0) {
+          second_body_is_wall = true;
+          continue;
+        }
         const int igroup = group->find(arg[iarg + 1 + b]);
         if (igroup < 0)
           error->all(FLERR, "compute runin/friction: bodies group {} does not exist", arg[iarg + 1 + b]);
@@ -57,6 +61,8 @@ void ComputeRuninFriction::init()
     error->all(FLERR, "compute runin/friction: requires pair_style runin/asperity or a fix runin/wall");
   for (int i = 0; i < modify->nfix; i++)
     if (auto *state = dynamic_cast<FixRuninWearState *>(modify->fix[i])) wear = state;
+  if (second_body_is_wall && sources.size() == (dynamic_cast<RuninContactSource *>(force->pair) ? 1u : 0u))
+    error->all(FLERR, "compute runin/friction: bodies ... wall requires a fix runin/wall");
 }
 
 void ComputeRuninFriction::compute_vector()
@@ -99,6 +105,10 @@ void ComputeRuninFriction::compute_vector()
   vector[CONTACT_AREA] = sum.contact_area;
   vector[WEAR_VOLUME_BODY1] = global[N + 1];
   vector[WEAR_VOLUME_BODY2] = global[N + 2];
+  if (second_body_is_wall) {
+    vector[WEAR_VOLUME_BODY2] = 0.0;
+    for (const auto *source : sources) vector[WEAR_VOLUME_BODY2] += source->counterface_wear_volume();
+  }
   vector[WEAR_RATE] = update->dt > 0.0 ? sum.wear_volume / update->dt : 0.0;
   vector[FRICTIONAL_POWER] = sum.frictional_power;
 }

@@ -45,6 +45,7 @@ class ComputeRuninFriction : public Compute {
   class FixRuninWearState *wear;
   int body_groupbit[2];
   bool bodies_given;
+  bool second_body_is_wall;    // 'bodies group-ID wall': the counterfaces of the fix runin/wall instances
 };
 
 }    // namespace LAMMPS_NS

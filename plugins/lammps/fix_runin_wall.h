@@ -52,6 +52,7 @@ class FixRuninWall : public Fix, public RuninContactSource {
   double memory_usage() override;
 
   const RuninContactSums &contact_sums() const override { return sums; }
+  double counterface_wear_volume() const override { return wall_wear; }
 
  private:
   enum HistoryIndex { SPRING_X = 0, SPRING_Y, SPRING_Z, SLIP, HISTORY_SIZE };

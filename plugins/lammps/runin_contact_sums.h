@@ -32,6 +32,8 @@ class RuninContactSource {
  public:
   virtual ~RuninContactSource() = default;
   virtual const RuninContactSums &contact_sums() const = 0;
+  // Cumulative volume worn off rigid counterfaces (not atoms) that the host owns, the same on every rank.
+  virtual double counterface_wear_volume() const { return 0.0; }
 };
 
 }    // namespace LAMMPS_NS

@@ -132,6 +132,10 @@ def signature(args):
         fail(f"worn volume / Archard budget = {ratio:.4f}, outside {ARCHARD_RANGE}")
     if abs(share - share_expected) > SPLIT_TOLERANCE:
         fail(f"asperity share of the wear {share!r} vs H_wall / (H_asperity + H_wall) = {share_expected!r}")
+    # compute runin/friction 'bodies all wall': body 1 = every asperity, body 2 = the wall's counterface
+    body1, body2 = sliding[-1]["c_fric[10]"], sliding[-1]["c_fric[11]"]
+    if abs(body1 - asperity) > 1e-12 * asperity or abs(body2 - wall) > 1e-12 * wall:
+        fail(f"per-body wear {body1!r}, {body2!r} vs asperities {asperity!r} and wall {wall!r}")
 
     # 5. dwell: no sliding, no wear; then re-stuck contacts break away at the static level again
     if any(abs(row["c_fric[5]"] - asperity) > 1e-12 * asperity for row in dwell):
