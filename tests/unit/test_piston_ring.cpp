@@ -211,6 +211,32 @@ TEST(RingLinerWear, PressureBalancesTheLoadAndMatchesTheFlatPunch) {
   EXPECT_NEAR(cc.width, 2.0 * a, 2.0 * 0.01 / 64);
 }
 
+// Spatial convergence of the ring-face contact: the peak pressure of the crowned ring (closed form above)
+// converges at second order in the ring-cell width. The cell-centred gap makes the load integral a midpoint
+// rule whose integrand has a kink at the contact edge, and the discrete peak sits half a cell off the axis:
+// both are O(dz^2).
+TEST(RingLinerWear, CrownedPeakPressureConvergesAtSecondOrder) {
+  const double crown = 5e-6, kc = 7.1e12, load = 785.0, q = load / (kPi * 0.1);
+  const double a = std::cbrt(3.0 * q * 0.01 * 0.01 / (16.0 * kc * crown));
+  const double exact = kc * crown * std::pow(2.0 * a / 0.01, 2);
+  std::vector<double> errors;
+  // from 64 cells on (about 10 across the contact) the errors are in the asymptotic range
+  for (int cells : {64, 128, 256, 512}) {
+    auto s = wear_settings(crown);
+    s.ring_cells = cells;
+    const RingLinerWear wear(s, runin::tribo::ArchardWear(1e-4, 2e9));
+    errors.push_back(std::abs(wear.pressure(0.05, load).peak - exact) / exact);
+  }
+  for (std::size_t k = 1; k < errors.size(); ++k) {
+    const double order = std::log2(errors[k - 1] / errors[k]);
+    std::printf("ring cells %d -> %d: peak error %.3e -> %.3e, observed order %.2f\n", 64 << (k - 1), 64 << k,
+                errors[k - 1], errors[k], order);
+    EXPECT_GT(order, 1.8);
+    EXPECT_LT(order, 2.3);
+  }
+  EXPECT_LT(errors.back(), 1.5e-4);
+}
+
 TEST(RingLinerWear, TooLargeFixedStepOscillatesAdaptiveStepDoesNot) {
   // Severe wear (k = 0.1) keeps the stable step (5.6 mm) inside the liner grid.
   const runin::tribo::ArchardWear archard(0.1, 2e9);
