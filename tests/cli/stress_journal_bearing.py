@@ -18,16 +18,9 @@ import re
 import shutil
 import subprocess
 import sys
+
+from case_text import edit
 import time
-
-
-def edit(text, section, key, value):
-    """Replace `key = ...` inside [section] (the key must exist there)."""
-    pattern = re.compile(r"(\[" + re.escape(section) + r"\][^\[]*?^" + re.escape(key) + r"\s*=)[^\n#]*", re.S | re.M)
-    new, n = pattern.subn(lambda m: m.group(1) + " " + value + " ", text)
-    if n != 1:
-        sys.exit(f"stress: cannot set {section}.{key}")
-    return new
 
 
 def cases(base):

@@ -20,19 +20,7 @@ import shutil
 import subprocess
 import sys
 
-
-def edit(text, section, key, value):
-    """Replace `key = ...` inside [section] (the key must exist there)."""
-    pattern = re.compile(r"(\[" + re.escape(section) + r"\][^\[]*?^" + re.escape(key) + r"\s*=)[^\n#]*", re.S | re.M)
-    new, n = pattern.subn(lambda m: m.group(1) + " " + value + " ", text)
-    if n != 1:
-        sys.exit(f"stress: cannot set {section}.{key}")
-    return new
-
-
-def drop_section(text, section):
-    """Remove [section] and its lines up to the next table header."""
-    return re.sub(r"^\[" + re.escape(section) + r"\]\n(?:(?!\[).*\n?)*", "", text, flags=re.M)
+from case_text import drop_section, edit
 
 
 WORN_THROUGH = {"crank_mu0_load1000_k0.1"}
