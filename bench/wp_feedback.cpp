@@ -5,17 +5,16 @@
 // Error: max relative error of R over the 40 s output grid (200 points).
 // Methods: CVODE BDF and Adams (continuum::simulate, rtol 1e-4 ... 1e-12, atol = 1e-3 rtol) against
 // naive fixed-step explicit Euler and classical RK4 on the same right-hand side (FeedbackSystem::rhs).
-// Wall time: median of repeated runs (std::chrono::steady_clock), one thread.
+// Wall time: timed by Google Benchmark (median of 5 repetitions, wall time), one thread.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "continuum/feedback_system.h"
+#include "wp_reporter.h"
 
 using namespace runin;
 using namespace runin::continuum;
@@ -32,17 +31,6 @@ tribo::FeedbackModel lubricated() {
   c.A = 1.0;
   c.B = 1.0;
   return tribo::FeedbackModel(c, tribo::FeedbackKind::lubricated);
-}
-
-double median_seconds(const std::function<void()> &work, int repeats) {
-  std::vector<double> times;
-  for (int i = 0; i < repeats; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
 }
 
 double relative_error(const tribo::FeedbackModel &m, double t, double r) {
@@ -72,24 +60,21 @@ double fixed_step_error(const FeedbackSystem &system, double dt, bool rk4) {
   }
   return worst;
 }
+
+struct Row {
+  std::string name, method;
+  double setting;
+};
 }  // namespace
 
 int main(int argc, char **argv) {
-  const std::string out = argc > 1 ? argv[1] : ".";
-  const tribo::FeedbackModel model = lubricated();
-  const FeedbackSystem system(model);
+  const std::string out = runin::bench::initialize(argc, argv, ".");
+  static const tribo::FeedbackModel model = lubricated();
+  static const FeedbackSystem system(model);
   std::printf("lubricated case: R0 = %g um, R* = %.10g um, relaxation time 1/(2 A K1) = %g s, t_end = %g s\n", kR0,
               model.stationary_roughness(), 1.0 / model.relaxation_rate(), kEnd);
 
-  const std::string csv_path = out + "/wp_feedback.csv";
-  FILE *csv = std::fopen(csv_path.c_str(), "w");
-  if (!csv) {
-    std::perror(csv_path.c_str());
-    return 1;
-  }
-  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
-  std::printf("%-12s %10s %12s %12s %9s\n", "method", "setting", "rel. error", "wall time s", "steps");
-
+  std::vector<Row> rows;
   for (const auto method : {CvodeIntegrator::Method::Bdf, CvodeIntegrator::Method::Adams}) {
     const char *name = method == CvodeIntegrator::Method::Bdf ? "cvode_bdf" : "cvode_adams";
     for (const double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
@@ -100,32 +85,52 @@ int main(int argc, char **argv) {
       run.integrator.method = method;
       run.integrator.rtol = rtol;
       run.integrator.atol = rtol * 1e-3;  // R is O(1) um, W grows to O(10)
-      double error = 0.0;
-      long steps = 0;
-      const double seconds = median_seconds(
-          [&] {
-            error = 0.0;
-            const auto report = simulate(system, run, [&](const FeedbackSample &s) {
-              error = std::max(error, relative_error(model, s.t, s.roughness));
-            });
-            if (!report.ok()) std::fprintf(stderr, "%s rtol %g: %s\n", name, rtol, report.message.c_str());
-            steps = report.steps;
-          },
-          21);
-      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", name, rtol, error, seconds, steps);
-      std::printf("%-12s %10g %12.3e %12.3e %9ld\n", name, rtol, error, seconds, steps);
+      rows.push_back({runin::bench::label(name, rtol), name, rtol});
+      runin::bench::timed(benchmark::RegisterBenchmark(rows.back().name.c_str(), [run, name](benchmark::State &state) {
+        double error = 0.0;
+        long steps = 0;
+        for (auto _ : state) {
+          error = 0.0;  // the max over 200 output points: negligible next to the solve
+          const auto report = simulate(system, run, [&](const FeedbackSample &s) {
+            error = std::max(error, relative_error(model, s.t, s.roughness));
+          });
+          if (!report.ok()) state.SkipWithError((std::string(name) + ": " + report.message).c_str());
+          steps = report.steps;
+        }
+        state.counters["rel_error"] = error;
+        state.counters["steps"] = static_cast<double>(steps);
+      }));
     }
   }
   for (const bool rk4 : {false, true}) {
     const char *name = rk4 ? "rk4_fixed" : "euler_fixed";
     for (const double dt : {40.0, 10.0, 1.0, 0.1, 0.01, 0.001}) {
       if (rk4 && dt < 0.1) continue;  // RK4 is at round-off long before
-      double error = 0.0;
-      const double seconds = median_seconds([&] { error = fixed_step_error(system, dt, rk4); }, dt < 0.01 ? 3 : 7);
-      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", name, dt, error, seconds, std::lround(kEnd / dt));
-      std::printf("%-12s %10g %12.3e %12.3e %9ld\n", name, dt, error, seconds, std::lround(kEnd / dt));
+      rows.push_back({runin::bench::label(name, dt), name, dt});
+      auto *b = benchmark::RegisterBenchmark(rows.back().name.c_str(), [dt, rk4](benchmark::State &state) {
+        double error = 0.0;
+        for (auto _ : state) benchmark::DoNotOptimize(error = fixed_step_error(system, dt, rk4));
+        state.counters["rel_error"] = error;
+        state.counters["steps"] = static_cast<double>(std::lround(kEnd / dt));
+      });
+      if (dt < 0.01) runin::bench::timed_once(b, 3);
+      else runin::bench::timed(b);
     }
   }
+  runin::bench::MedianReporter reporter;
+  runin::bench::run_benchmarks(reporter);
+
+  const std::string csv_path = out + "/wp_feedback.csv";
+  FILE *csv = std::fopen(csv_path.c_str(), "w");
+  if (!csv) {
+    std::perror(csv_path.c_str());
+    return 1;
+  }
+  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
+  for (const Row &row : rows)
+    if (const auto *m = reporter.find(row.name))
+      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", row.method.c_str(), row.setting, m->counter("rel_error"), m->seconds,
+                   std::lround(m->counter("steps")));
   std::fclose(csv);
 
   const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_wp.py " + csv_path +

@@ -4,17 +4,18 @@
 // Error: max over the 1 ms output grid of |s(t) - s_ref(t)| / s_ref(2 s), s the sliding distance.
 // Also times the long wear run-in: 1000 wear updates on a 512-node arc.
 //   build-bench/bench/wp_journal_bearing [OUT.csv]   (default wp_journal_bearing.csv; PNG beside it)
+// Wall time: timed by Google Benchmark (median of 5 repetitions, wall time; Euler h = 1e-6 and wear: 3), one core.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "continuum/journal_bearing.h"
+#include "wp_reporter.h"
 
 using namespace runin::continuum;
 
@@ -33,18 +34,6 @@ JournalBearingParameters thesis(int nodes = 256) {
 }
 
 constexpr double kTEnd = 2.0, kDt = 1e-3;
-
-// Median over `repeats` of the wall time (std::chrono::steady_clock), as in the other wp_* benchmarks.
-double median_seconds(const std::function<void()> &work, int repeats) {
-  std::vector<double> wall;
-  for (int k = 0; k < repeats; ++k) {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(wall.begin(), wall.end());
-  return wall[wall.size() / 2];
-}
 
 // Sliding distance on the output grid (the last sample at each grid time).
 std::vector<double> cvode_distance(const JournalBearingParameters &p, const SlidingFriction &f,
@@ -120,46 +109,88 @@ double error(const std::vector<double> &a, const std::vector<double> &ref) {
   return worst / ref.back();
 }
 
+struct Row {
+  std::string name, method;
+  double mu0, setting;
+};
+
 }  // namespace
 
 int main(int argc, char **argv) {
-  const std::string out_path = argc > 1 ? argv[1] : "wp_journal_bearing.csv";
-  std::ofstream out(out_path + ".tmp");
-  out << "case,mu0,method,tolerance_or_step,error,wall_seconds\n";
-  const auto p = thesis();
+  const std::string out_path = runin::bench::initialize(argc, argv, "wp_journal_bearing.csv");
+  static const auto p = thesis();
+  std::vector<Row> rows;
   for (double mu0 : {0.95, 0.55, 0.15}) {
     const auto f = SlidingFriction::static_kinetic(mu0, 0.8 * mu0);
-    const auto ref = cvode_distance(p, f, CvodeIntegrator::Method::Bdf, 1e-12);
+    // The reference is computed once, before (and outside) every timed run of this mu0.
+    auto ref = std::make_shared<std::vector<double>>();
+    auto reference = [p = p, f, ref] {
+      if (ref->empty()) *ref = cvode_distance(p, f, CvodeIntegrator::Method::Bdf, 1e-12);
+      return *ref;
+    };
+    char mu[32];
+    std::snprintf(mu, sizeof mu, "mu0_%g/", mu0);
     for (auto [method, name] : {std::pair{CvodeIntegrator::Method::Bdf, "cvode_bdf"},
                                 std::pair{CvodeIntegrator::Method::Adams, "cvode_adams"}})
       for (double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-10}) {
-        std::vector<double> d;
-        const double wall = median_seconds([&] { d = cvode_distance(p, f, method, rtol); }, 5);
-        const double e = error(d, ref);
-        out << "thesis_2s," << mu0 << "," << name << "," << rtol << "," << e << "," << wall << "\n";
-        std::printf("mu0 %.2f %-11s rtol %-6g error %.3e  wall %6.2f ms\n", mu0, name, rtol, e, 1e3 * wall);
+        rows.push_back({mu + runin::bench::label(name, rtol), name, mu0, rtol});
+        runin::bench::timed(benchmark::RegisterBenchmark(
+            rows.back().name.c_str(), [f, method = method, rtol, reference](benchmark::State &state) {
+              const auto ref = reference();
+              std::vector<double> d;
+              for (auto _ : state) d = cvode_distance(p, f, method, rtol);
+              state.counters["rel_error"] = error(d, ref);
+            }));
       }
     for (double h : {1e-4, 1e-5, 1e-6}) {
-      std::vector<double> d;
-      const double wall = median_seconds([&] { d = euler_distance(p, f, h); }, 3);
-      const double e = error(d, ref);
-      out << "thesis_2s," << mu0 << ",euler_fixed," << h << "," << e << "," << wall << "\n";
-      std::printf("mu0 %.2f %-11s h    %-6g error %.3e  wall %6.2f ms\n", mu0, "euler_fixed", h, e, 1e3 * wall);
+      rows.push_back({mu + runin::bench::label("euler_fixed", h), "euler_fixed", mu0, h});
+      auto *b = benchmark::RegisterBenchmark(rows.back().name.c_str(), [f, h, reference](benchmark::State &state) {
+        const auto ref = reference();
+        std::vector<double> d;
+        for (auto _ : state) d = euler_distance(p, f, h);
+        state.counters["rel_error"] = error(d, ref);
+      });
+      if (h < 1e-5) runin::bench::timed_once(b, 3);
+      else runin::bench::timed(b);
     }
   }
   // Long wear run-in: 1000 wear updates (adaptive step 0.5 * 2H/(k k_c)) on 512 nodes.
-  auto wide = thesis(512);
+  static auto wide = thesis(512);
   wide.bore.arc_half_angle = 0.5;
-  const JournalBearingSystem system(wide, SlidingFriction::static_kinetic(0.95, 0.76));
-  const double step = 0.5 * system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
-  WearHistory history;
-  const double wear = median_seconds([&] { history = wear_in(system, step, 1000); }, 3);
-  const double setup = median_seconds([&] { ConformalContact c(wide.bore); (void)c; }, 3);
-  out << "wear_1000_updates_512_nodes,,wear_in," << step << ",," << wear << "\n";
-  out << "contact_setup_512_nodes,,ConformalContact,,," << setup << "\n";
-  std::printf("wear run-in: 1000 updates on 512 nodes (ds = %.3g m): wall %.3f s (+ influence matrix wall %.3f s); "
-              "status %s\n",
-              step, wear, setup, to_string(history.status));
+  static const JournalBearingSystem system(wide, SlidingFriction::static_kinetic(0.95, 0.76));
+  static const double step = 0.5 * system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
+  static WearHistory history;
+  runin::bench::timed_once(benchmark::RegisterBenchmark("wear_1000_updates_512_nodes", [](benchmark::State &state) {
+    for (auto _ : state) history = wear_in(system, step, 1000);
+  }), 3);
+  runin::bench::timed(benchmark::RegisterBenchmark("contact_setup_512_nodes", [](benchmark::State &state) {
+    for (auto _ : state) {
+      ConformalContact c(wide.bore);
+      benchmark::DoNotOptimize(c);
+    }
+  }), 3);
+
+  runin::bench::MedianReporter reporter;
+  runin::bench::run_benchmarks(reporter);
+
+  std::ofstream out(out_path + ".tmp");
+  out << "case,mu0,method,tolerance_or_step,error,wall_seconds\n";
+  for (const Row &row : rows)
+    if (const auto *m = reporter.find(row.name)) {
+      out << "thesis_2s," << row.mu0 << "," << row.method << "," << row.setting << "," << m->counter("rel_error") << ","
+          << m->seconds << "\n";
+      std::printf("mu0 %.2f %-11s %s %-6g error %.3e  wall %6.2f ms\n", row.mu0, row.method.c_str(),
+                  row.method == "euler_fixed" ? "h   " : "rtol", row.setting, m->counter("rel_error"),
+                  1e3 * m->seconds);
+    }
+  const auto *wear = reporter.find("wear_1000_updates_512_nodes");
+  const auto *setup = reporter.find("contact_setup_512_nodes");
+  if (wear) out << "wear_1000_updates_512_nodes,,wear_in," << step << ",," << wear->seconds << "\n";
+  if (setup) out << "contact_setup_512_nodes,,ConformalContact,,," << setup->seconds << "\n";
+  if (wear && setup)
+    std::printf("wear run-in: 1000 updates on 512 nodes (ds = %.3g m): wall %.3f s (+ influence matrix wall %.3f s); "
+                "status %s\n",
+                step, wear->seconds, setup->seconds, to_string(history.status));
   out.close();
   std::rename((out_path + ".tmp").c_str(), out_path.c_str());
   // PNG beside the CSV with Debian's matplotlib.

@@ -5,18 +5,17 @@
 // break-away (1.87 s .. 2 s, the first point 3.6 ms = 2.4 inertial time constants into the
 // slip transient) against the closed form of the linear ODE m dV/dt = T(t)/r - mu0 W - alpha W V
 // (ramp T linear in t).
-// Wall time: median of repeated runs on one core (std::chrono::steady_clock).
+// Wall time: timed by Google Benchmark (median of 5 repetitions, wall time; slow runs 3), one core.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "continuum/axisymmetric_contact.h"
 #include "continuum/pin_on_disk.h"
+#include "wp_reporter.h"
 
 using namespace runin::continuum;
 
@@ -48,17 +47,6 @@ Exact exact(const PinOnDiskParameters &p, double t) {
   return {speed, distance};
 }
 
-double median_seconds(const std::function<void()> &work, int repeats) {
-  std::vector<double> times;
-  for (int i = 0; i < repeats; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
-}
-
 constexpr double kGrid = 0.01;
 double breakaway(const PinOnDiskParameters &p) { return kMu0 * kLoad * kRadius * kRamp / p.applied_torque; }
 
@@ -83,24 +71,20 @@ double euler_error(const PinOnDiskParameters &p, double dt) {
   }
   return worst;
 }
+struct Row {
+  std::string name, method;
+  double setting;
+};
 }  // namespace
 
 int main(int argc, char **argv) {
-  const std::string out = argc > 1 ? argv[1] : ".";
-  const auto p = thesis();
+  const std::string out = runin::bench::initialize(argc, argv, ".");
+  static const auto p = thesis();
   const Exact ref = exact(p, kEnd);
   std::printf("thesis case: T_app = %.6g N m, break-away %.8g s, exact V(2 s) = %.10g m/s, s(2 s) = %.10g m\n",
               p.applied_torque, breakaway(p), ref.speed, ref.distance);
 
-  const std::string csv_path = out + "/wp_pin_on_disk.csv";
-  FILE *csv = std::fopen(csv_path.c_str(), "w");
-  if (!csv) {
-    std::perror(csv_path.c_str());
-    return 1;
-  }
-  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
-  std::printf("%-12s %10s %12s %12s %8s\n", "method", "setting", "rel. error", "wall time s", "steps");
-
+  std::vector<Row> rows;
   for (const auto method : {CvodeIntegrator::Method::Bdf, CvodeIntegrator::Method::Adams}) {
     const char *name = method == CvodeIntegrator::Method::Bdf ? "cvode_bdf" : "cvode_adams";
     for (const double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
@@ -110,73 +94,104 @@ int main(int argc, char **argv) {
       run.integrator.method = method;
       run.integrator.rtol = rtol;
       run.integrator.atol = rtol * 1e-3;  // speed and distance are O(0.1) m/s, O(0.01) m
-      const PinOnDiskSystem system(p, SlidingFriction::constant(kMu0, kAlpha));
-      const double tb = breakaway(p);
-      double error = 0.0;
-      long steps = 0;
-      const double seconds = median_seconds(
-          [&] {
-            error = 0.0;
-            const auto report = simulate(system, run, [&](const PinOnDiskSample &s) {
-              const double on_grid = std::round(s.t / kGrid) * kGrid;
-              if (s.t > tb && std::abs(s.t - on_grid) < 1e-12)
-                error = std::max(error, error_of({s.speed, s.distance}, exact(p, s.t)));
-            });
-            steps = report.steps;
-          },
-          21);
-      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", name, rtol, error, seconds, steps);
-      std::printf("%-12s %10g %12.3e %12.3e %8ld\n", name, rtol, error, seconds, steps);
+      rows.push_back({runin::bench::label(name, rtol), name, rtol});
+      runin::bench::timed(benchmark::RegisterBenchmark(rows.back().name.c_str(), [run](benchmark::State &state) {
+        const PinOnDiskSystem system(p, SlidingFriction::constant(kMu0, kAlpha));
+        const double tb = breakaway(p);
+        double error = 0.0;
+        long steps = 0;
+        for (auto _ : state) {
+          error = 0.0;  // a closed form at 13 output points: negligible next to the solve
+          const auto report = simulate(system, run, [&](const PinOnDiskSample &s) {
+            const double on_grid = std::round(s.t / kGrid) * kGrid;
+            if (s.t > tb && std::abs(s.t - on_grid) < 1e-12)
+              error = std::max(error, error_of({s.speed, s.distance}, exact(p, s.t)));
+          });
+          steps = report.steps;
+        }
+        state.counters["rel_error"] = error;
+        state.counters["steps"] = static_cast<double>(steps);
+      }));
     }
   }
   for (const double dt : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
-    double error = 0.0;
-    const double seconds = median_seconds([&] { error = euler_error(p, dt); }, dt < 1e-6 ? 3 : 7);
-    std::fprintf(csv, "euler_fixed,%g,%.6e,%.6e,%ld\n", dt, error, seconds, std::lround(kEnd / dt));
-    std::printf("%-12s %10g %12.3e %12.3e %8ld\n", "euler_fixed", dt, error, seconds, std::lround(kEnd / dt));
+    rows.push_back({runin::bench::label("euler_fixed", dt), "euler_fixed", dt});
+    auto *b = benchmark::RegisterBenchmark(rows.back().name.c_str(), [dt](benchmark::State &state) {
+      double error = 0.0;
+      for (auto _ : state) benchmark::DoNotOptimize(error = euler_error(p, dt));
+      state.counters["rel_error"] = error;
+      state.counters["steps"] = static_cast<double>(std::lround(kEnd / dt));
+    });
+    if (dt < 1e-5) runin::bench::timed_once(b, 3);
+    else runin::bench::timed(b);
   }
-  std::fclose(csv);
 
   // Long wear run-in: 1000 wear updates on a 512-ring contact grid (thesis pin, k = 1e-4, H = 0.9 GPa).
+  static const runin::tribo::ArchardWear archard(1e-4, 0.9e9);
+  static PinWearParameters wp;
+  wp.tip_radius = 5e-3;
+  wp.effective_modulus = runin::tribo::effective_modulus({110e9, 0.37, 0.9e9}, {69e9, 0.33, 0.5e9});
+  wp.rings = 512;
+  static constexpr double distance = 0.1;  // the thesis case slides ~0.1 m by 3 s
+  wp.grid_radius = suggested_grid_radius(wp.tip_radius, wp.effective_modulus, kLoad, &archard, distance);
+  static double step = 0.0;
   {
-    const runin::tribo::ArchardWear archard(1e-4, 0.9e9);
-    PinWearParameters wp;
-    wp.tip_radius = 5e-3;
-    wp.effective_modulus = runin::tribo::effective_modulus({110e9, 0.37, 0.9e9}, {69e9, 0.33, 0.5e9});
-    wp.rings = 512;
-    const double distance = 0.1;  // the thesis case slides ~0.1 m by 3 s
-    wp.grid_radius = suggested_grid_radius(wp.tip_radius, wp.effective_modulus, kLoad, &archard, distance);
+    PinWear pin(wp, archard, kLoad);
+    step = pin.stable_step();  // the adaptive bound at the start (it grows as the flat widens)
+  }
+  runin::bench::timed_once(benchmark::RegisterBenchmark("wear/fixed_1000", [](benchmark::State &state) {
     long steps = 0;
-    double volume = 0.0, step = 0.0;
-    {
+    double volume = 0.0;
+    for (auto _ : state) {
       PinWear pin(wp, archard, kLoad);
-      step = pin.stable_step();  // the adaptive bound at the start (it grows as the flat widens)
+      for (int k = 0; k < 1000; ++k) pin.step(step);
+      steps = pin.steps();
+      volume = pin.wear_volume();
     }
-    const double seconds = median_seconds(
-        [&] {
-          PinWear pin(wp, archard, kLoad);
-          for (int k = 0; k < 1000; ++k) pin.step(step);
-          steps = pin.steps();
-          volume = pin.wear_volume();
-        },
-        5);
-    double adaptive_seconds = 0.0;
-    long adaptive_steps = 0;
-    adaptive_seconds = median_seconds(
-        [&] {
-          PinWear pin(wp, archard, kLoad);
-          pin.advance(distance);
-          adaptive_steps = pin.steps();
-        },
-        3);
-    std::printf("wear: %ld updates of %.3g m on %d rings in %.3f s (median of 5), V = %.6e m^3 (Archard %.6e)\n",
-                steps, step, wp.rings, seconds, volume, archard.volume(kLoad, 1000 * step));
-    std::printf("wear: adaptive run over %.3g m: %ld updates in %.3f s (median of 3)\n", distance, adaptive_steps,
-                adaptive_seconds);
+    state.counters["updates"] = static_cast<double>(steps);
+    state.counters["volume"] = volume;
+  }), 5);
+  runin::bench::timed_once(benchmark::RegisterBenchmark("wear/adaptive", [](benchmark::State &state) {
+    long steps = 0;
+    for (auto _ : state) {
+      PinWear pin(wp, archard, kLoad);
+      pin.advance(distance);
+      steps = pin.steps();
+    }
+    state.counters["updates"] = static_cast<double>(steps);
+  }), 3);
+
+  runin::bench::MedianReporter reporter;
+  runin::bench::run_benchmarks(reporter);
+
+  const std::string csv_path = out + "/wp_pin_on_disk.csv";
+  FILE *csv = std::fopen(csv_path.c_str(), "w");
+  if (!csv) {
+    std::perror(csv_path.c_str());
+    return 1;
+  }
+  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
+  for (const Row &row : rows)
+    if (const auto *m = reporter.find(row.name))
+      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", row.method.c_str(), row.setting, m->counter("rel_error"), m->seconds,
+                   std::lround(m->counter("steps")));
+  std::fclose(csv);
+
+  const auto *fixed = reporter.find("wear/fixed_1000");
+  const auto *adaptive = reporter.find("wear/adaptive");
+  if (fixed)
+    std::printf("wear: %ld updates of %.3g m on %d rings in %.3f s (median of %ld), V = %.6e m^3 (Archard %.6e)\n",
+                std::lround(fixed->counter("updates")), step, wp.rings, fixed->seconds, fixed->repetitions,
+                fixed->counter("volume"), archard.volume(kLoad, 1000 * step));
+  if (adaptive)
+    std::printf("wear: adaptive run over %.3g m: %ld updates in %.3f s (median of %ld)\n", distance,
+                std::lround(adaptive->counter("updates")), adaptive->seconds, adaptive->repetitions);
+  if (fixed && adaptive) {
     FILE *wear = std::fopen((out + "/wear_timing.csv").c_str(), "w");
     if (wear) {
       std::fprintf(wear, "run,rings,updates,wall_time_s\nfixed_1000,%d,%ld,%.6e\nadaptive,%d,%ld,%.6e\n", wp.rings,
-                   steps, seconds, wp.rings, adaptive_steps, adaptive_seconds);
+                   std::lround(fixed->counter("updates")), fixed->seconds, wp.rings,
+                   std::lround(adaptive->counter("updates")), adaptive->seconds);
       std::fclose(wear);
     }
   }

@@ -7,18 +7,18 @@
 //   t_b = (mu_s W - c v_p) / (k v_p),  s = eps - eps(t_b) + v_p (t - t_b),  F_land = -k e - c eps'.
 // Error: max over the 1 ms output grid of |s - s_ex| / s_ex(2 s) and |F_land - F_ex| / (mu_k W),
 // and |t_b - t_b,ex| / t_b,ex.
-// Wall time: median of repeated runs on one core (std::chrono::steady_clock).
+// Wall time: timed by Google Benchmark (median of 5 repetitions, wall time; slow runs 3), one core.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "continuum/piston_ring.h"
 #include "continuum/ring_liner_wear.h"
+#include "wp_reporter.h"
 
 using namespace runin::continuum;
 
@@ -158,22 +158,95 @@ Trace run_fixed(const PistonRingSystem &sys, double h, bool rk4) {
   return tr;
 }
 
-double median_seconds(const std::function<void()> &work, double budget) {
-  std::vector<double> times;
-  const auto begin = std::chrono::steady_clock::now();
-  do {
-    const auto start = std::chrono::steady_clock::now();
-    work();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  } while (times.size() < 3 ||
-           (times.size() < 21 && std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() < budget));
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
-}
+struct Row {
+  std::string name, method;
+  double mu0, setting;
+};
 }  // namespace
 
 int main(int argc, char **argv) {
-  const std::string out = argc > 1 ? argv[1] : ".";
+  const std::string out = runin::bench::initialize(argc, argv, ".");
+  static const auto p = thesis();
+  std::vector<Row> rows;
+  for (double mu0 : {0.95, 0.55, 0.15}) {
+    const auto sys = std::make_shared<const PistonRingSystem>(p, SlidingFriction::static_kinetic(mu0, 0.7 * mu0));
+    const Exact ex(*sys, mu0, 0.7 * mu0);
+    char mu[32];
+    std::snprintf(mu, sizeof mu, "mu0_%g/", mu0);
+    for (auto method : {CvodeIntegrator::Method::Bdf, CvodeIntegrator::Method::Adams}) {
+      const char *name = method == CvodeIntegrator::Method::Bdf ? "cvode_bdf" : "cvode_adams";
+      for (double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
+        const double atol = 1e-5 * rtol;  // states: e ~ 1e-5 m, u ~ 1e-2 m/s, s ~ 1e-2 m
+        rows.push_back({mu + runin::bench::label(name, rtol), name, mu0, rtol});
+        runin::bench::timed(benchmark::RegisterBenchmark(
+            rows.back().name.c_str(), [sys, ex, method, rtol, atol](benchmark::State &state) {
+              Trace tr;
+              for (auto _ : state) tr = run_cvode(*sys, method, rtol, atol);
+              state.counters["rel_error"] = error_of(tr, ex, p);
+            }));
+      }
+    }
+    for (bool rk4 : {false, true})
+      for (double h : {1e-4, 3e-5, 1e-5, 3e-6, 1e-6}) {
+        const char *name = rk4 ? "fixed_rk4" : "fixed_euler";
+        rows.push_back({mu + runin::bench::label(name, h), name, mu0, h});
+        auto *b = benchmark::RegisterBenchmark(rows.back().name.c_str(), [sys, ex, h, rk4](benchmark::State &state) {
+          Trace tr;
+          for (auto _ : state) tr = run_fixed(*sys, h, rk4);
+          state.counters["rel_error"] = error_of(tr, ex, p);
+        });
+        if (h < 1e-5) runin::bench::timed_once(b, 3);
+        else runin::bench::timed(b);
+      }
+  }
+
+  // Long wear run-in (= inputs/piston_ring_long.toml: 1200 rpm, gas table, k = 1e-3): dynamics for
+  // 0.3 s, then wear on a 512-cell liner / 64-cell ring grid along it, timed per 1000 updates.
+  static auto lp = p;
+  lp.motion = PistonMotion::Crank;
+  lp.crank_speed = 1200.0 * 2.0 * kPi / 60.0;
+  lp.gas.crank_angle = {0.0, 10.0, 30.0, 60.0, 120.0, 180.0, 360.0, 540.0, 600.0, 660.0, 700.0};
+  for (auto &a : lp.gas.crank_angle) a *= kPi / 180.0;
+  lp.gas.pressure = {5.0e6, 6.9e6, 5.0e6, 2.5e6, 0.8e6, 0.3e6, 0.1e6, 0.1e6, 0.3e6, 1.5e6, 3.5e6};
+  lp.gas.cycle = 4.0 * kPi;
+  static const PistonRingSystem long_sys(lp, SlidingFriction::static_kinetic(0.95, 0.665));
+  static std::vector<PistonRingSample> samples;
+  static auto dynamics = [] {
+    PistonRingRun run;
+    run.t_end = 5.0;
+    run.output_interval = 2.5e-4;
+    samples.clear();
+    simulate(long_sys, run, [&](const PistonRingSample &s) { samples.push_back(s); });
+  };
+  runin::bench::timed_once(benchmark::RegisterBenchmark("long/dynamics_100_revolutions", [](benchmark::State &state) {
+    for (auto _ : state) dynamics();
+    state.counters["samples"] = static_cast<double>(samples.size());
+  }), 5);
+  static RingLinerWearSettings ws;
+  ws.crown_height = 2e-6;
+  // Liner grid as the CLI builds it: travel + w/2 + 1 mm + 4 mu_s W_max / k.
+  const double margin = 0.5 * lp.ring_width + 1e-3 + 4.0 * 0.95 * (0.2e6 + 6.9e6) * lp.contact_area() / lp.land_stiffness;
+  ws.liner_begin = lp.crank.bottom_dead_centre() - margin;
+  ws.liner_end = lp.crank.top_dead_centre() + margin;
+  ws.foundation_modulus = 66e9 / (1.0 - 0.27 * 0.27) / 0.01;
+  runin::bench::timed_once(benchmark::RegisterBenchmark("long/wear_pass", [](benchmark::State &state) {
+    if (samples.empty()) dynamics();  // untimed when run alone (--benchmark_filter)
+    long updates = 0;
+    for (auto _ : state) {
+      RingLinerWear wear(ws, runin::tribo::ArchardWear(1e-3, 2e9));
+      for (std::size_t i = 1; i < samples.size(); ++i) {
+        wear.slide(samples[i - 1].ring_position, samples[i].ring_position, samples[i - 1].normal_load,
+                   samples[i].normal_load);
+        wear.pressure(samples[i].ring_position, samples[i].normal_load);  // the CSV's pressure columns
+      }
+      updates = wear.updates();
+    }
+    state.counters["updates"] = static_cast<double>(updates);
+  }), 5);
+
+  runin::bench::MedianReporter reporter;
+  runin::bench::run_benchmarks(reporter);
+
   const std::string csv_path = out + "/wp_piston_ring.csv";
   FILE *csv = std::fopen(csv_path.c_str(), "w");
   if (!csv) {
@@ -181,82 +254,31 @@ int main(int argc, char **argv) {
     return 1;
   }
   std::fprintf(csv, "mu0,method,setting,error,seconds\n");
-  const auto p = thesis();
-  for (double mu0 : {0.95, 0.55, 0.15}) {
-    const PistonRingSystem sys(p, SlidingFriction::static_kinetic(mu0, 0.7 * mu0));
-    const Exact ex(sys, mu0, 0.7 * mu0);
-    for (auto method : {CvodeIntegrator::Method::Bdf, CvodeIntegrator::Method::Adams}) {
-      const char *name = method == CvodeIntegrator::Method::Bdf ? "cvode_bdf" : "cvode_adams";
-      for (double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
-        const double atol = 1e-5 * rtol;  // states: e ~ 1e-5 m, u ~ 1e-2 m/s, s ~ 1e-2 m
-        Trace tr;
-        const double sec = median_seconds([&] { tr = run_cvode(sys, method, rtol, atol); }, 1.0);
-        const double err = error_of(tr, ex, p);
-        std::fprintf(csv, "%g,%s,%g,%.6g,%.6g\n", mu0, name, rtol, err, sec);
-        std::printf("mu0 %-5g %-12s rtol %-6g error %-10.3g %8.3f ms\n", mu0, name, rtol, err, 1e3 * sec);
-      }
+  for (const Row &row : rows)
+    if (const auto *m = reporter.find(row.name)) {
+      std::fprintf(csv, "%g,%s,%g,%.6g,%.6g\n", row.mu0, row.method.c_str(), row.setting, m->counter("rel_error"),
+                   m->seconds);
+      std::printf("mu0 %-5g %-12s %s %-6g error %-10.3g %8.3f ms\n", row.mu0, row.method.c_str(),
+                  row.method.rfind("cvode", 0) == 0 ? "rtol" : "h   ", row.setting, m->counter("rel_error"),
+                  1e3 * m->seconds);
     }
-    for (bool rk4 : {false, true})
-      for (double h : {1e-4, 3e-5, 1e-5, 3e-6, 1e-6}) {
-        Trace tr;
-        const double sec = median_seconds([&] { tr = run_fixed(sys, h, rk4); }, 2.0);
-        const double err = error_of(tr, ex, p);
-        std::fprintf(csv, "%g,%s,%g,%.6g,%.6g\n", mu0, rk4 ? "fixed_rk4" : "fixed_euler", h, err, sec);
-        std::printf("mu0 %-5g %-12s h    %-6g error %-10.3g %8.3f ms\n", mu0, rk4 ? "fixed_rk4" : "fixed_euler", h,
-                    err, 1e3 * sec);
-      }
-  }
   std::fclose(csv);
 
-  // Long wear run-in (= inputs/piston_ring_long.toml: 1200 rpm, gas table, k = 1e-3): dynamics for
-  // 0.3 s, then wear on a 512-cell liner / 64-cell ring grid along it, timed per 1000 updates.
-  auto lp = p;
-  lp.motion = PistonMotion::Crank;
-  lp.crank_speed = 1200.0 * 2.0 * kPi / 60.0;
-  lp.gas.crank_angle = {0.0, 10.0, 30.0, 60.0, 120.0, 180.0, 360.0, 540.0, 600.0, 660.0, 700.0};
-  for (auto &a : lp.gas.crank_angle) a *= kPi / 180.0;
-  lp.gas.pressure = {5.0e6, 6.9e6, 5.0e6, 2.5e6, 0.8e6, 0.3e6, 0.1e6, 0.1e6, 0.3e6, 1.5e6, 3.5e6};
-  lp.gas.cycle = 4.0 * kPi;
-  const PistonRingSystem long_sys(lp, SlidingFriction::static_kinetic(0.95, 0.665));
-  PistonRingRun run;
-  run.t_end = 5.0;
-  run.output_interval = 2.5e-4;
-  std::vector<PistonRingSample> samples;
-  const double dyn_sec = median_seconds(
-      [&] {
-        samples.clear();
-        simulate(long_sys, run, [&](const PistonRingSample &s) { samples.push_back(s); });
-      },
-      5.0);
-  RingLinerWearSettings ws;
-  ws.crown_height = 2e-6;
-  // Liner grid as the CLI builds it: travel + w/2 + 1 mm + 4 mu_s W_max / k.
-  const double margin = 0.5 * lp.ring_width + 1e-3 + 4.0 * 0.95 * (0.2e6 + 6.9e6) * lp.contact_area() / lp.land_stiffness;
-  ws.liner_begin = lp.crank.bottom_dead_centre() - margin;
-  ws.liner_end = lp.crank.top_dead_centre() + margin;
-  ws.foundation_modulus = 66e9 / (1.0 - 0.27 * 0.27) / 0.01;
-  long updates = 0;
-  const double wear_sec = median_seconds(
-      [&] {
-        RingLinerWear wear(ws, runin::tribo::ArchardWear(1e-3, 2e9));
-        for (std::size_t i = 1; i < samples.size(); ++i) {
-          wear.slide(samples[i - 1].ring_position, samples[i].ring_position, samples[i - 1].normal_load,
-                     samples[i].normal_load);
-          wear.pressure(samples[i].ring_position, samples[i].normal_load);  // the CSV's pressure columns
-        }
-        updates = wear.updates();
-      },
-      5.0);
-  const std::string timing_path = out + "/wear_timing_piston_ring.csv";
-  FILE *timing = std::fopen(timing_path.c_str(), "w");
-  if (!timing) return 1;
-  std::fprintf(timing, "what,seconds,updates,liner_cells,seconds_per_1000_updates\n");
-  std::fprintf(timing, "dynamics_100_revolutions,%.6g,0,512,0\n", dyn_sec);
-  std::fprintf(timing, "wear_pass,%.6g,%ld,512,%.6g\n", wear_sec, updates, 1e3 * wear_sec / updates);
-  std::fclose(timing);
-  std::printf("long run-in: dynamics (100 revolutions, %zu samples) %.3f s; wear %ld updates on 512 liner cells "
-              "%.3f s = %.4f s per 1000 updates\n",
-              samples.size(), dyn_sec, updates, wear_sec, 1e3 * wear_sec / updates);
+  const auto *dyn = reporter.find("long/dynamics_100_revolutions");
+  const auto *wear = reporter.find("long/wear_pass");
+  if (dyn && wear) {
+    const long updates = std::lround(wear->counter("updates"));
+    const std::string timing_path = out + "/wear_timing_piston_ring.csv";
+    FILE *timing = std::fopen(timing_path.c_str(), "w");
+    if (!timing) return 1;
+    std::fprintf(timing, "what,seconds,updates,liner_cells,seconds_per_1000_updates\n");
+    std::fprintf(timing, "dynamics_100_revolutions,%.6g,0,512,0\n", dyn->seconds);
+    std::fprintf(timing, "wear_pass,%.6g,%ld,512,%.6g\n", wear->seconds, updates, 1e3 * wear->seconds / updates);
+    std::fclose(timing);
+    std::printf("long run-in: dynamics (100 revolutions, %zu samples) %.3f s; wear %ld updates on 512 liner cells "
+                "%.3f s = %.4f s per 1000 updates\n",
+                samples.size(), dyn->seconds, updates, wear->seconds, 1e3 * wear->seconds / updates);
+  }
 
   const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_piston_ring.py wp " +
                            csv_path + " " + out + "/wp_piston_ring.png";

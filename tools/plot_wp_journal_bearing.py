@@ -33,7 +33,7 @@ def main():
         axis.axhline(1e-6, color="0.5", linestyle=":")
         axis.axvline(20, color="0.5", linestyle=":")
         axis.set_title(f"mu0 = {mu0}")
-        axis.set_xlabel("wall time (ms, median of 5; Euler 3)")
+        axis.set_xlabel("wall time (ms, Google Benchmark median)")
         axis.grid(alpha=0.3, which="both")
     np.atleast_1d(axes)[0].set_ylabel("max |s - s_ref| / s_ref(2 s)")
     np.atleast_1d(axes)[0].legend(fontsize=8)
