@@ -61,10 +61,6 @@ double fixed_step_error(const FeedbackSystem &system, double dt, bool rk4) {
   return worst;
 }
 
-struct Row {
-  std::string name, method;
-  double setting;
-};
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -74,7 +70,7 @@ int main(int argc, char **argv) {
   std::printf("lubricated case: R0 = %g um, R* = %.10g um, relaxation time 1/(2 A K1) = %g s, t_end = %g s\n", kR0,
               model.stationary_roughness(), 1.0 / model.relaxation_rate(), kEnd);
 
-  std::vector<Row> rows;
+  std::vector<runin::bench::WorkPrecisionRow> rows;
   for (const auto method : {CvodeIntegrator::Method::Bdf, CvodeIntegrator::Method::Adams}) {
     const char *name = method == CvodeIntegrator::Method::Bdf ? "cvode_bdf" : "cvode_adams";
     for (const double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
@@ -121,17 +117,7 @@ int main(int argc, char **argv) {
   runin::bench::run_benchmarks(reporter);
 
   const std::string csv_path = out + "/wp_feedback.csv";
-  FILE *csv = std::fopen(csv_path.c_str(), "w");
-  if (!csv) {
-    std::perror(csv_path.c_str());
-    return 1;
-  }
-  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
-  for (const Row &row : rows)
-    if (const auto *m = reporter.find(row.name))
-      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", row.method.c_str(), row.setting, m->counter("rel_error"), m->seconds,
-                   std::lround(m->counter("steps")));
-  std::fclose(csv);
+  if (!runin::bench::write_work_precision_csv(csv_path, rows, reporter)) return 1;
 
   const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_wp.py " + csv_path +
                            " " + out + "/wp_feedback.png --title 'lubricated feedback model (8000 s)' --ylabel "

@@ -71,10 +71,6 @@ double euler_error(const PinOnDiskParameters &p, double dt) {
   }
   return worst;
 }
-struct Row {
-  std::string name, method;
-  double setting;
-};
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -84,7 +80,7 @@ int main(int argc, char **argv) {
   std::printf("thesis case: T_app = %.6g N m, break-away %.8g s, exact V(2 s) = %.10g m/s, s(2 s) = %.10g m\n",
               p.applied_torque, breakaway(p), ref.speed, ref.distance);
 
-  std::vector<Row> rows;
+  std::vector<runin::bench::WorkPrecisionRow> rows;
   for (const auto method : {CvodeIntegrator::Method::Bdf, CvodeIntegrator::Method::Adams}) {
     const char *name = method == CvodeIntegrator::Method::Bdf ? "cvode_bdf" : "cvode_adams";
     for (const double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
@@ -165,17 +161,7 @@ int main(int argc, char **argv) {
   runin::bench::run_benchmarks(reporter);
 
   const std::string csv_path = out + "/wp_pin_on_disk.csv";
-  FILE *csv = std::fopen(csv_path.c_str(), "w");
-  if (!csv) {
-    std::perror(csv_path.c_str());
-    return 1;
-  }
-  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
-  for (const Row &row : rows)
-    if (const auto *m = reporter.find(row.name))
-      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", row.method.c_str(), row.setting, m->counter("rel_error"), m->seconds,
-                   std::lround(m->counter("steps")));
-  std::fclose(csv);
+  if (!runin::bench::write_work_precision_csv(csv_path, rows, reporter)) return 1;
 
   const auto *fixed = reporter.find("wear/fixed_1000");
   const auto *adaptive = reporter.find("wear/adaptive");

@@ -5,6 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -80,6 +81,29 @@ inline std::string label(const std::string &method, double setting) {
 inline std::string initialize(int &argc, char **argv, const std::string &default_output) {
   benchmark::Initialize(&argc, argv);
   return argc > 1 ? argv[1] : default_output;
+}
+
+// One configuration of a single-case work-precision diagram (feedback model, pin-on-disk).
+struct WorkPrecisionRow {
+  std::string name, method;  // benchmark name (label(method, setting)) and method
+  double setting;            // tolerance or fixed step
+};
+
+// The CSV read by tools/plot_wp.py: method,setting,rel_error,wall_time_s,steps (configurations that
+// did not run are left out). False, with the reason on stderr, if the file cannot be written.
+inline bool write_work_precision_csv(const std::string &path, const std::vector<WorkPrecisionRow> &rows,
+                                     const MedianReporter &reporter) {
+  FILE *csv = std::fopen(path.c_str(), "w");
+  if (!csv) {
+    std::perror(path.c_str());
+    return false;
+  }
+  std::fprintf(csv, "method,setting,rel_error,wall_time_s,steps\n");
+  for (const WorkPrecisionRow &row : rows)
+    if (const Median *m = reporter.find(row.name))
+      std::fprintf(csv, "%s,%g,%.6e,%.6e,%ld\n", row.method.c_str(), row.setting, m->counter("rel_error"), m->seconds,
+                   std::lround(m->counter("steps")));
+  return std::fclose(csv) == 0;
 }
 
 inline void run_benchmarks(MedianReporter &reporter) {
