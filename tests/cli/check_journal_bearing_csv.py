@@ -5,12 +5,10 @@ usage: check_journal_bearing_csv.py DIR --t-end T [--mu-static MU] [--sweep N] [
                                     [--archard K_OVER_H] [--vtk N] [--png]
 """
 import argparse
-import csv
-import math
 import os
 import sys
 
-from output_checks import close, finish, leftover_problems, png_problems
+from output_checks import close, finish, leftover_problems, png_problems, read_csv, time_series_problems
 
 COLUMNS = ["t_s", "drive_angle_rad", "drive_speed_rad_s", "journal_speed_rad_s", "coupling_torque_N_m",
            "friction_torque_N_m", "friction_force_N", "normal_force_N", "mu", "mu_law", "sliding_speed_m_s",
@@ -18,15 +16,6 @@ COLUMNS = ["t_s", "drive_angle_rad", "drive_speed_rad_s", "journal_speed_rad_s",
            "mean_pressure_Pa", "state_slip", "roughness"]
 SWEEP = ["mu0", "peak_friction_force_N", "peak_time_s", "breakaway_time_s", "steady_time_s", "steady_mu",
          "wear_volume_m3"]
-
-
-def read(path, header):
-    with open(path, newline="") as f:
-        reader = csv.reader(f)
-        got = next(reader)
-        if got != header:
-            sys.exit(f"{path}: header {got} != {header}")
-        return [[float(x) for x in row] for row in reader]
 
 
 def main():
@@ -50,16 +39,8 @@ def main():
     c_t, c_f, c_w = c["t_s"], c["friction_force_N"], c["journal_speed_rad_s"]
 
     problems = []
-    rows = read(os.path.join(args.dir, "journal_bearing.csv"), COLUMNS)
-    t = [r[0] for r in rows]
-    if len(rows) < 100:
-        problems.append(f"only {len(rows)} rows")
-    if t[0] != 0.0 or not close(t[-1], args.t_end, 1e-12):
-        problems.append(f"time runs {t[0]}..{t[-1]}, expected 0..{args.t_end}")
-    if any(b < a for a, b in zip(t, t[1:])):
-        problems.append("time decreases")
-    if not all(math.isfinite(x) for r in rows for x in r):
-        problems.append("non-finite values")
+    rows = read_csv(os.path.join(args.dir, "journal_bearing.csv"), COLUMNS)
+    problems += time_series_problems(rows, args.t_end)
     for r in rows:
         if r[c["state_slip"]] == 0 and (r[c["journal_speed_rad_s"]] != 0 or
                                          not close(r[c["friction_torque_N_m"]], r[c["coupling_torque_N_m"]], 1e-9)):
@@ -98,7 +79,7 @@ def main():
         if not rows[-1][c["peak_pressure_Pa"]] < 0.7 * rows[0][c["peak_pressure_Pa"]]:
             problems.append("peak pressure did not fall with wear")
     if args.sweep:
-        table = sorted(read(os.path.join(args.dir, "journal_bearing_sweep_summary.csv"), SWEEP))
+        table = sorted(read_csv(os.path.join(args.dir, "journal_bearing_sweep_summary.csv"), SWEEP))
         if len(table) != args.sweep:
             problems.append(f"{len(table)} sweep rows, expected {args.sweep}")
         # Higher mu0 -> later break-away (mu0 N R wound up through the coupling).
@@ -109,7 +90,7 @@ def main():
             sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
             from thesis_claims import check_claims
             curves = {}
-            for r in read(os.path.join(args.dir, "journal_bearing_sweep.csv"), ["mu0"] + COLUMNS):
+            for r in read_csv(os.path.join(args.dir, "journal_bearing_sweep.csv"), ["mu0"] + COLUMNS):
                 curve = curves.setdefault(r[0], ([], [], []))
                 curve[0].append(r[1 + c_t]), curve[1].append(r[1 + c_f]), curve[2].append(r[1 + c_w])
             problems += check_claims(curves, *args.claims)

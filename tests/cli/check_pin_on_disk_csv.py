@@ -7,11 +7,10 @@ usage: check_pin_on_disk_csv.py DIR --t-end T [--breakaway T_B] [--final-speed V
 """
 import argparse
 import csv
-import math
 import os
 import sys
 
-from output_checks import close, finish, leftover_problems, png_problems
+from output_checks import close, finish, leftover_problems, png_problems, read_csv, time_series_problems
 
 COLUMNS = ["t_s", "applied_torque_N_m", "friction_force_N", "friction_torque_N_m", "mu",
            "speed_m_s", "sliding_distance_m", "state_slip", "mu_law", "roughness", "wear_volume_m3",
@@ -40,21 +39,8 @@ def main():
     args = parser.parse_args()
 
     problems = []
-    with open(os.path.join(args.dir, "pin_on_disk.csv"), newline="") as f:
-        reader = csv.reader(f)
-        header = next(reader)
-        if header != COLUMNS:
-            sys.exit(f"header {header} != {COLUMNS}")
-        rows = [[float(x) for x in row] for row in reader]
-    t = [r[0] for r in rows]
-    if len(rows) < 100:
-        problems.append(f"only {len(rows)} rows")
-    if t[0] != 0.0 or not close(t[-1], args.t_end, 1e-12):
-        problems.append(f"time runs {t[0]}..{t[-1]}, expected 0..{args.t_end}")
-    if any(b < a for a, b in zip(t, t[1:])):
-        problems.append("time decreases")
-    if not all(math.isfinite(x) for r in rows for x in r):
-        problems.append("non-finite values")
+    rows = read_csv(os.path.join(args.dir, "pin_on_disk.csv"), COLUMNS)
+    problems += time_series_problems(rows, args.t_end)
     for r in rows:
         if r[7] == 0 and (r[5] != 0 or not close(r[3], r[1], 1e-9)):
             problems.append(f"stick row at t={r[0]} has speed {r[5]} or T_f {r[3]} != T_app {r[1]}")

@@ -11,27 +11,15 @@ usage: check_piston_ring_csv.py DIR --t-end T --mu-static MU --k-over-h K_H
   (tests/cli/thesis_claims.py: peak, time to equilibrium in a 2 % band, start-up vs steady friction).
 """
 import argparse
-import csv
-import math
 import os
 import sys
 
-from output_checks import finish, leftover_problems, png_problems
+from output_checks import finish, leftover_problems, png_problems, read_csv, time_series_problems
 
 COLUMNS = ["t_s", "crank_angle_deg", "piston_position_m", "piston_velocity_m_s", "ring_position_m", "speed_m_s",
            "sliding_distance_m", "friction_force_N", "land_force_N", "normal_load_N", "mu", "mu_law", "state_slip",
            "wear_ring_m3", "wear_liner_m3", "wear_volume_m3", "contact_width_m", "peak_pressure_Pa",
            "mean_pressure_Pa", "roughness"]
-
-
-def read(path, columns=None):
-    with open(path, newline="") as f:
-        reader = csv.reader(f)
-        header = next(reader)
-        if columns is not None and header != columns:
-            sys.exit(f"{path}: header {header} != {columns}")
-        rows = [[float(x) for x in row] for row in reader]
-    return header, rows
 
 
 def main():
@@ -50,17 +38,9 @@ def main():
     args = parser.parse_args()
 
     problems = []
-    _, rows = read(os.path.join(args.dir, "piston_ring.csv"), COLUMNS)
+    rows = read_csv(os.path.join(args.dir, "piston_ring.csv"), COLUMNS)
     col = {name: [r[i] for r in rows] for i, name in enumerate(COLUMNS)}
-    t = col["t_s"]
-    if len(rows) < 100:
-        problems.append(f"only {len(rows)} rows")
-    if t[0] != 0.0 or abs(t[-1] - args.t_end) > 1e-12 * args.t_end:
-        problems.append(f"time runs {t[0]}..{t[-1]}, expected 0..{args.t_end}")
-    if any(b < a for a, b in zip(t, t[1:])):
-        problems.append("time decreases")
-    if not all(math.isfinite(x) for r in rows for x in r):
-        problems.append("non-finite values")
+    problems += time_series_problems(rows, args.t_end)
     for r in rows:
         f, w, slip, speed = r[7], r[9], r[12], r[5]
         if slip == 0 and (speed != 0.0 or abs(f) > args.mu_static * w * (1 + 1e-6)):
@@ -89,8 +69,8 @@ def main():
     if abs(s_total - col["sliding_distance_m"][-1]) > 1e-4 * s_total:
         problems.append(f"sliding distance {col['sliding_distance_m'][-1]} != sum |dx_ring| {s_total}")
 
-    _, lrows = read(os.path.join(args.dir, "piston_ring_liner.csv"))
-    _, frows = read(os.path.join(args.dir, "piston_ring_face.csv"))
+    lrows = read_csv(os.path.join(args.dir, "piston_ring_liner.csv"))
+    frows = read_csv(os.path.join(args.dir, "piston_ring_face.csv"))
     if args.liner_peak_within is not None:
         peak = max(lrows, key=lambda r: r[2])
         if not peak[1] * 1e3 <= args.liner_peak_within:
@@ -99,7 +79,7 @@ def main():
         problems.append("negative wear depth")
 
     if args.sweep is not None:
-        _, srows = read(os.path.join(args.dir, "piston_ring_mu0.csv"))
+        srows = read_csv(os.path.join(args.dir, "piston_ring_mu0.csv"))
         curves = {}
         for r in srows:
             curves.setdefault(r[0], []).append(r)

@@ -1,4 +1,6 @@
 """Checks shared by the tests/cli/check_*_csv.py scripts (stdlib only)."""
+import csv
+import math
 import os
 import sys
 
@@ -7,6 +9,31 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 def close(a, b, rel):
     return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)
+
+
+def read_csv(path, header=None):
+    """Rows of a numeric CSV as lists of floats; exits if `header` is given and the file's differs."""
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        got = next(reader)
+        if header is not None and got != header:
+            sys.exit(f"{path}: header {got} != {header}")
+        return [[float(x) for x in row] for row in reader]
+
+
+def time_series_problems(rows, t_end, min_rows=100):
+    """A run's time series (time in the first column): enough rows, 0..t_end, never backwards, finite."""
+    problems = []
+    t = [r[0] for r in rows]
+    if len(rows) < min_rows:
+        problems.append(f"only {len(rows)} rows")
+    if t[0] != 0.0 or not close(t[-1], t_end, 1e-12):
+        problems.append(f"time runs {t[0]}..{t[-1]}, expected 0..{t_end}")
+    if any(b < a for a, b in zip(t, t[1:])):
+        problems.append("time decreases")
+    if not all(math.isfinite(x) for r in rows for x in r):
+        problems.append("non-finite values")
+    return problems
 
 
 def png_problems(directory, names):
