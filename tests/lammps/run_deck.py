@@ -29,9 +29,55 @@ def mpi_env():
     return env
 
 
+def run_lammps(args, deck, variables=None, log="log.lammps", np=1):
+    """Runs args.lmp on `deck` (a path) in args.workdir, under args.mpiexec when np > 1, with
+    -var NAME VALUE... for each entry of `variables` (a list or tuple value gives an index variable).
+    A non-zero exit, or a parallel run that did not use np ranks, fails the test with the output's
+    tail. Returns the log text."""
+    command = [args.lmp, "-in", deck, "-log", log, "-screen", "none"]
+    if np > 1:
+        command = [args.mpiexec, "-np", str(np)] + command
+    for name, value in (variables or {}).items():
+        command += ["-var", name] + [str(v) for v in (value if isinstance(value, (list, tuple)) else [value])]
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+    log_path = os.path.join(args.workdir, log)
+    text = open(log_path).read() if os.path.exists(log_path) else ""
+    if result.returncode != 0:
+        fail(f"{os.path.basename(deck)}: lmp_runin exited with {result.returncode}\n{result.stdout[-2000:]}\n"
+             f"{result.stderr[-2000:]}\n{text[-2000:]}")
+    if np > 1 and f"with {np} MPI tasks" not in text:
+        fail(f"{os.path.basename(deck)}: the run did not use {np} MPI ranks")
+    return text
+
+
 def fresh_dir(path):
     shutil.rmtree(path, ignore_errors=True)
     os.makedirs(path)
+
+
+# Worn-asperity geometry for the checks, independent of the C++ kernels (bisection for the cap height).
+def cap_height(radius, volume):
+    """Root of pi h^2 (3R - h) / 3 = V in [0, 2R], by bisection to the last bit."""
+    if volume <= 0.0:
+        return 0.0
+    lo, hi = 0.0, 2.0 * radius
+    while True:
+        mid = 0.5 * (lo + hi)
+        if mid <= lo or mid >= hi:
+            return mid
+        if math.pi * mid * mid * (3.0 * radius - mid) / 3.0 < volume:
+            lo = mid
+        else:
+            hi = mid
+
+
+def worn(radius, lost, gained):
+    """(summit drop h, flat radius a_w) of a truncated sphere; a net gain raises the summit over pi R^2."""
+    net = lost - gained
+    if net < 0.0:
+        return net / (math.pi * radius * radius), 0.0
+    h = cap_height(radius, net)
+    return h, math.sqrt(h * (2.0 * radius - h))
 
 
 def thermo_blocks(log_text):
@@ -117,15 +163,9 @@ def run_slider(args):
     from it) crosses it by more than skin/2, so with 2 and 4 ranks atoms change rank (checked below).
     """
     fresh_dir(args.workdir)
-    command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck),
-               "-var", "coeffs", os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"),
-               "-var", "nsettle", "200", "-var", "nslide", "6000", "-var", "thermo_every", "50",
-               "-log", "log.lammps", "-screen", "none"]
-    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
-    log = open(os.path.join(args.workdir, "log.lammps")).read() if os.path.exists(
-        os.path.join(args.workdir, "log.lammps")) else ""
-    if result.returncode != 0:
-        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout}\n{result.stderr}\n{log[-2000:]}")
+    log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck),
+                     {"coeffs": os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"), "nsettle": 200, "nslide": 6000,
+                      "thermo_every": 50}, np=args.np)
     blocks = thermo_blocks(log)
     if len(blocks) != 2:
         fail(f"expected the settle and slide thermo tables, found {len(blocks)}")
@@ -169,14 +209,10 @@ def archard_budget(args):
     fresh_dir(args.workdir)
     nslide, speed, dt, load = 4000, 2.0, 1.0e-10, 5.0e-2
     k, hardness_al = 1.0e-3, 0.245e9    # potentials/CuAl.runin: pair Cu Al k, material Al H
-    command = [args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck),
-               "-var", "coeffs", os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"),
-               "-var", "nslide", str(nslide), "-var", "thermo_every", "1000", "-log", "log.lammps",
-               "-screen", "none"]
-    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
-    if result.returncode != 0:
-        fail(f"lmp_runin exited with {result.returncode}: {result.stderr[-2000:]}")
-    sliding = thermo_blocks(open(os.path.join(args.workdir, "log.lammps")).read())[1]
+    log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck),
+                     {"coeffs": os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"), "nslide": nslide,
+                      "thermo_every": 1000})
+    sliding = thermo_blocks(log)[1]
     worn = sliding[-1]["c_fric[5]"] - sliding[0]["c_fric[5]"]
     expected = k * load * nslide * dt * speed / hardness_al
     ratio = worn / expected
@@ -265,14 +301,7 @@ def roughness(args):
     """compute runin/roughness: every global statistic and per-atom height vs the closed form."""
     fresh_dir(args.workdir)
     deck = os.path.join(SOURCE_DIR, args.deck)
-    command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", deck, "-log", "log.lammps", "-screen", "none"]
-    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
-    log_path = os.path.join(args.workdir, "log.lammps")
-    log = open(log_path).read() if os.path.exists(log_path) else ""
-    if result.returncode != 0:
-        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout}\n{result.stderr}\n{log[-2000:]}")
-    if args.np > 1 and f"with {args.np} MPI tasks" not in log:
-        fail(f"the run did not use {args.np} MPI ranks")
+    log = run_lammps(args, deck, np=args.np)
     expected = deck_roughness_closed_form(open(deck).read())
     row = thermo_blocks(log)[-1][-1]
     worst, checked = 0.0, 0
@@ -411,16 +440,8 @@ def run_gw(args):
     area = (GW["n"] * GW["a"]) ** 2
     separations = [-1.0, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5]    # (wall z - mean) / sigma
     walls = [mean + s * sigma for s in separations]
-    command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck),
-               "-var", "data", "gw.data", "-var", "R", repr(GW["R"]), "-var", "Estar", repr(GW["Estar"]),
-               "-var", "zw", *[repr(z) for z in walls], "-log", "log.lammps", "-screen", "none"]
-    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
-    log_path = os.path.join(args.workdir, "log.lammps")
-    log = open(log_path).read() if os.path.exists(log_path) else ""
-    if result.returncode != 0:
-        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout}\n{result.stderr}\n{log[-2000:]}")
-    if args.np > 1 and f"with {args.np} MPI tasks" not in log:
-        fail(f"the run did not use {args.np} MPI ranks")
+    log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck),
+                     {"data": "gw.data", "R": GW["R"], "Estar": GW["Estar"], "zw": walls}, np=args.np)
     rows = [[float(w) for w in line.split()[1:]] for line in log.splitlines() if line.startswith("GW_LOAD")]
     if len(rows) != len(walls):
         fail(f"expected {len(walls)} GW_LOAD lines, got {len(rows)}")
@@ -447,17 +468,9 @@ def run_gw(args):
     print(f"ok: {args.np} rank(s), sample mean {mean:.3e} m, sigma {sigma:.6e} m")
 
 
-def run_lmp(args, deck, extra, log_name):
-    command = [args.mpiexec, "-np", str(args.np), args.lmp, "-in", os.path.join(SOURCE_DIR, deck), *extra,
-               "-log", log_name, "-screen", "none"]
-    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
-    log_path = os.path.join(args.workdir, log_name)
-    log = open(log_path).read() if os.path.exists(log_path) else ""
-    if result.returncode != 0:
-        fail(f"{deck} exited with {result.returncode}\n{result.stdout}\n{result.stderr}\n{log[-2000:]}")
-    if args.np > 1 and f"with {args.np} MPI tasks" not in log:
-        fail(f"the run did not use {args.np} MPI ranks")
-    return thermo_blocks(log)
+def run_lmp(args, deck, variables, log_name):
+    """Thermo tables of a deck (path relative to the source tree) run on args.np ranks."""
+    return thermo_blocks(run_lammps(args, os.path.join(SOURCE_DIR, deck), variables, log_name, np=args.np))
 
 
 def run_gw_servo(args):
@@ -467,7 +480,7 @@ def run_gw_servo(args):
     pressure, speed, dt, nload, nslide = 1.5e8, 1.0, 1.0e-9, 400, 200
     mu_k, k, h_asperity, h_wall = 0.4, 1.0e-3, 1.0e9, 3.0e9    # the deck's friction and wear values
     target = pressure * (GW["n"] * GW["a"]) ** 2
-    load, slide1, slide2 = run_lmp(args, args.deck, ["-var", "data", "gw.data", "-var", "z0", "5.0e-7"], "log.lammps")
+    load, slide1, slide2 = run_lmp(args, args.deck, {"data": "gw.data", "z0": "5.0e-7"}, "log.lammps")
 
     # 1. servo: monotone approach, no overshoot, converged onto the sample's exact Hertz-sum root
     forces = [row["f_wall[3]"] for row in load]
@@ -510,7 +523,7 @@ def run_gw_servo(args):
                                                               "f_wall[7]", "c_fric[5]")) + "\n")
 
     # 3. restart: the continued run repeats the last run of the original
-    (again,) = run_lmp(args, "tests/lammps/decks/in.gw_servo_restart", [], "log.restart")
+    (again,) = run_lmp(args, "tests/lammps/decks/in.gw_servo_restart", {}, "log.restart")
     for original, repeated in zip(slide2, again):
         for name, value in original.items():
             if abs(repeated[name] - value) > 1e-12 * max(abs(value), 1e-30):
@@ -537,7 +550,7 @@ def run_wall_bounce(args):
     for side, sign, coefficients, e_star in cases:
         overlap_max = (15.0 * mass * v0 ** 2 / (16.0 * e_star * math.sqrt(radius))) ** 0.4
         contact_time = 2.0 * integral * overlap_max / v0
-        (rows,) = run_lmp(args, args.deck, ["-var", "side", side, "-var", "file", coefficients],
+        (rows,) = run_lmp(args, args.deck, {"side": side, "file": coefficients},
                           f"log.{side}.{coefficients}")
         touching = [row for row in rows if row["f_wall[8]"] == 1.0]
         duration = len(touching) * dt
@@ -565,9 +578,8 @@ def run_wall_worn(args):
     for reshape in ("yes", "no"):
         drop = h if reshape == "yes" else 0.0
         walls = [drop + d for d in overlaps]    # the asperity's centre is at z = R
-        args_lmp = ["-var", "lost", repr(lost), "-var", "reshape", reshape, "-var", "ztouch", repr(drop),
-                    "-var", "zw", *[repr(z) for z in walls]]
-        blocks = run_lmp(args, args.deck, args_lmp, f"log.{reshape}")
+        blocks = run_lmp(args, args.deck, {"lost": lost, "reshape": reshape, "ztouch": drop, "zw": walls},
+                         f"log.{reshape}")
         log = open(os.path.join(args.workdir, f"log.{reshape}")).read()
         rows = [[float(w) for w in line.split()[1:]] for line in log.splitlines() if line.startswith("WALL_WORN")]
         if len(rows) != len(walls):

@@ -20,11 +20,10 @@ import argparse
 import math
 import os
 import re
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_deck import SOURCE_DIR, fail, fresh_dir, mpi_env, thermo_blocks  # noqa: E402
+from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps, thermo_blocks, worn  # noqa: E402
 
 # Values of inputs/in.runin_wall (its defaults and its fix runin/wall line).
 LOAD = 1.0                              # N
@@ -44,27 +43,12 @@ SPLIT_TOLERANCE = 1e-9       # asperity share of the worn volume vs H_wall / (H_
 RESTICK_PEAK = 0.5           # peak after the dwell >= mu before it + 0.5 (mu_s - mu_k)
 
 
-def run_lmp(args, deck, variables, np=1):
-    command = [args.lmp, "-in", deck, "-log", "log.lammps", "-screen", "none"]
-    if np > 1:
-        command = [args.mpiexec, "-np", str(np)] + command
-    for name, value in variables.items():
-        command += ["-var", name, str(value)]
-    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
-    log_path = os.path.join(args.workdir, "log.lammps")
-    log = open(log_path).read() if os.path.exists(log_path) else ""
-    if result.returncode != 0:
-        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout[-2000:]}\n{result.stderr[-2000:]}\n"
-             f"{log[-2000:]}")
-    return log
-
-
 def signature(args):
     fresh_dir(args.workdir)
     nhold, nresume = 200, 800
-    log = run_lmp(args, os.path.join(SOURCE_DIR, args.deck),
-                  {"nslide": args.nslide, "nhold": nhold, "nresume": nresume, "thermo_every": 10,
-                   "load": LOAD, "k": WEAR_K})
+    log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck),
+                     {"nslide": args.nslide, "nhold": nhold, "nresume": nresume, "thermo_every": 10,
+                      "load": LOAD, "k": WEAR_K})
     blocks = thermo_blocks(log)
     if len(blocks) != 4:
         fail(f"expected the load, slide, dwell and resume thermo tables, found {len(blocks)}")
@@ -150,21 +134,10 @@ def signature(args):
     print("ok: run-in signature")
 
 
-def cap_height(radius, volume):
-    """Root of pi h^2 (3R - h) / 3 = V in [0, 2R] (bisection to round-off)."""
-    lo, hi = 0.0, 2.0 * radius
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        (lo, hi) = (mid, hi) if math.pi * mid * mid * (3.0 * radius - mid) / 3.0 < volume else (lo, mid)
-    return 0.5 * (lo + hi)
-
-
 def worn_heights(args):
     fresh_dir(args.workdir)
     deck = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.roughness_worn")
-    log = run_lmp(args, deck, {}, args.np)
-    if args.np > 1 and f"with {args.np} MPI tasks" not in log:
-        fail(f"the run did not use {args.np} MPI ranks")
+    log = run_lammps(args, deck, {}, np=args.np)
 
     atoms, volumes, computes, groups = {}, {"lost": {}, "gained": {}}, [], {}
     for line in open(deck):
@@ -185,9 +158,7 @@ def worn_heights(args):
             computes.append((words[1], groups[words[2]], sign, depths))
 
     def wear_depth(atom_id):
-        radius = atoms[atom_id]["radius"]
-        net = volumes["lost"].get(atom_id, 0.0) - volumes["gained"].get(atom_id, 0.0)
-        return cap_height(radius, net) if net >= 0.0 else net / (math.pi * radius * radius)
+        return worn(atoms[atom_id]["radius"], volumes["lost"].get(atom_id, 0.0), volumes["gained"].get(atom_id, 0.0))[0]
 
     row = thermo_blocks(log)[-1][-1]
     lines = open(os.path.join(args.workdir, "heights.dump")).read().splitlines()

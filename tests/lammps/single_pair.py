@@ -11,28 +11,17 @@ the Mindlin spring k_t = 8 G* a with the static -> kinetic Coulomb limit. See do
 import argparse
 import math
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_deck import SOURCE_DIR, fail, fresh_dir, mpi_env, thermo_blocks  # noqa: E402
+from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps, thermo_blocks, worn  # noqa: E402
 
 DECKS = os.path.join(SOURCE_DIR, "tests", "lammps", "decks")
 COEFFS = os.path.join(SOURCE_DIR, "potentials", "CuAl.runin")
 
 
 def run_lmp(args, deck, variables, log="log.lammps"):
-    command = [args.lmp, "-in", os.path.join(DECKS, deck), "-log", log, "-screen", "none"]
-    if getattr(args, "np", 1) > 1:
-        command = [args.mpiexec, "-np", str(args.np)] + command
-    for name, value in variables.items():
-        command += ["-var", name, str(value)]
-    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
-    path = os.path.join(args.workdir, log)
-    text = open(path).read() if os.path.exists(path) else ""
-    if result.returncode != 0:
-        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout[-2000:]}\n{result.stderr[-2000:]}")
-    return thermo_blocks(text)
+    return thermo_blocks(run_lammps(args, os.path.join(DECKS, deck), variables, log, np=getattr(args, "np", 1)))
 
 
 def check(name, got, want, tolerance, scale=None):
@@ -43,31 +32,7 @@ def check(name, got, want, tolerance, scale=None):
     return error
 
 
-# --- closed forms (independent of the C++ kernels: bisection for the cap height) ---
-def cap_height(radius, volume):
-    """Root of pi h^2 (3R - h) / 3 = V in [0, 2R], by bisection to the last bit."""
-    if volume <= 0.0:
-        return 0.0
-    lo, hi = 0.0, 2.0 * radius
-    while True:
-        mid = 0.5 * (lo + hi)
-        if mid <= lo or mid >= hi:
-            return mid
-        if math.pi * mid * mid * (3.0 * radius - mid) / 3.0 < volume:
-            lo = mid
-        else:
-            hi = mid
-
-
-def worn(radius, lost, gained):
-    """(summit drop h, flat radius a_w) of a truncated sphere; a net gain raises the summit over pi R^2."""
-    net = lost - gained
-    if net < 0.0:
-        return net / (math.pi * radius * radius), 0.0
-    h = cap_height(radius, net)
-    return h, math.sqrt(h * (2.0 * radius - h))
-
-
+# --- closed forms (run_deck.cap_height / worn: bisection, independent of the C++ kernels) ---
 def sneddon(e_star, r_star, flat, overlap):
     """(F, a, U) of a truncated paraboloid (flat radius b) pressed by delta: flat punch + Hertz."""
     if overlap <= 0.0:
@@ -105,8 +70,6 @@ def press(args):
     r1, r2, e_star = 1.0e-6, 0.8e-6, 4.8e10
     v1, v2 = args.worn
     blocks = run_lmp(args, "in.single_pair_press", {"R1": r1, "R2": r2, "V1": v1, "V2": v2, "Estar": e_star})
-    if args.np > 1 and f"with {args.np} MPI tasks" not in open(os.path.join(args.workdir, "log.lammps")).read():
-        fail(f"the run did not use {args.np} MPI ranks")
     h1, b1 = worn(r1, v1, 0.0)
     h2, b2 = worn(r2, v2, 0.0)
     r_star = r1 * r2 / (r1 + r2)

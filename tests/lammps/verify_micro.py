@@ -11,29 +11,17 @@ Decks: tests/lammps/decks/in.impact_pair, in.slider_verify, in.slider_verify_res
 import argparse
 import math
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_deck import SOURCE_DIR, fail, fresh_dir, mpi_env, thermo_blocks  # noqa: E402
+from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps, thermo_blocks  # noqa: E402
 
 DECKS = os.path.join(SOURCE_DIR, "tests", "lammps", "decks")
 COEFFS = os.path.join(SOURCE_DIR, "potentials", "CuAl.runin")
 
 
 def run_lmp(args, deck, variables, log, np=1):
-    command = [args.lmp, "-in", os.path.join(DECKS, deck), "-log", log, "-screen", "none"]
-    if np > 1:
-        command = [args.mpiexec, "-np", str(np)] + command
-    for name, value in variables.items():
-        command += ["-var", name, str(value)]
-    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
-    path = os.path.join(args.workdir, log)
-    text = open(path).read() if os.path.exists(path) else ""
-    if result.returncode != 0:
-        fail(f"lmp_runin exited with {result.returncode}\n{result.stdout[-2000:]}\n{result.stderr[-2000:]}\n"
-             f"{text[-2000:]}")
-    return thermo_blocks(text)
+    return thermo_blocks(run_lammps(args, os.path.join(DECKS, deck), variables, log, np))
 
 
 # --- 2. head-on impact ---------------------------------------------------------------------------
