@@ -209,9 +209,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   }
   if (reader.has("output.vtk_times")) {
     if (!c.contact) reader.fail("output.vtk_times", "needs a [contact] table");
-    c.vtk_times = reader.numbers("output.vtk_times");
-    for (double t : c.vtk_times)
-      if (t < 0.0 || t > run.t_end) reader.fail("output.vtk_times", "time " + CaseReader::format(t) + " is outside [0, run.t_end]");
+    c.vtk_times = reader.times_within("output.vtk_times", run.t_end);
     if (c.vtk_times.size() > 100) reader.fail("output.vtk_times", "more than 100 frames");
   }
   if (reader.has("sweep")) {

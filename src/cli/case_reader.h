@@ -114,6 +114,14 @@ class CaseReader {
     }
     return values;
   }
+  // Output times (VTK frames): numbers(key), each in [0, t_end].
+  std::vector<double> times_within(const std::string &key, double t_end) const {
+    const std::vector<double> times = numbers(key);
+    for (std::size_t i = 0; i < times.size(); ++i)
+      if (times[i] < 0.0 || times[i] > t_end)
+        fail(key, "element " + std::to_string(i) + ": must be in [0, run.t_end], got " + format(times[i]));
+    return times;
+  }
   std::string text(const std::string &key, const std::string &fallback) const {
     const toml::node *node = root_.at_path(key).node();
     if (!node) return fallback;

@@ -84,11 +84,7 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   run.output_interval = reader.positive("run.output_interval", 1e-3);
   if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
   if (reader.has("run.frame_times")) {
-    run.frame_times = reader.numbers("run.frame_times");
-    for (std::size_t i = 0; i < run.frame_times.size(); ++i)
-      if (run.frame_times[i] < 0.0 || run.frame_times[i] > run.t_end)
-        reader.fail("run.frame_times", "element " + std::to_string(i) + ": must be in [0, run.t_end], got " +
-                                           CaseReader::format(run.frame_times[i]));
+    run.frame_times = reader.times_within("run.frame_times", run.t_end);
   } else {
     run.frame_times = {0.0, run.t_end};
   }

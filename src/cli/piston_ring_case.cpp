@@ -150,10 +150,7 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
 
   // Output and sweep.
   if (reader.has("output.vtk_times")) {
-    c.vtk_times = reader.numbers("output.vtk_times");
-    for (std::size_t i = 0; i < c.vtk_times.size(); ++i)
-      if (c.vtk_times[i] < 0.0 || c.vtk_times[i] > run.t_end)
-        reader.fail("output.vtk_times", "element " + std::to_string(i) + ": must lie in [0, run.t_end]");
+    c.vtk_times = reader.times_within("output.vtk_times", run.t_end);
   } else {
     for (int i = 0; i <= 4; ++i) c.vtk_times.push_back(run.t_end * i / 4.0);
   }
