@@ -59,8 +59,7 @@ void ComputeRuninFriction::init()
     if (auto *host = dynamic_cast<RuninContactSource *>(modify->fix[i])) sources.push_back(host);
   if (sources.empty())
     error->all(FLERR, "compute runin/friction: requires pair_style runin/asperity or a fix runin/wall");
-  for (int i = 0; i < modify->nfix; i++)
-    if (auto *state = dynamic_cast<FixRuninWearState *>(modify->fix[i])) wear = state;
+  wear = FixRuninWearState::find(modify);
   if (second_body_is_wall && sources.size() == (dynamic_cast<RuninContactSource *>(force->pair) ? 1u : 0u))
     error->all(FLERR, "compute runin/friction: bodies ... wall requires a fix runin/wall");
 }

@@ -80,8 +80,7 @@ void ComputeRuninRoughness::init()
   if (!atom->radius_flag)
     error->all(FLERR, "compute runin/roughness: requires atom attribute radius (atom_style sphere)");
   // the wear state is created by pair runin/asperity or fix runin/wall, possibly after this compute
-  const int ifix = modify->find_fix(FixRuninWearState::default_id);
-  fix_wear = ifix >= 0 ? dynamic_cast<FixRuninWearState *>(modify->fix[ifix]) : nullptr;
+  fix_wear = FixRuninWearState::find(modify);
 }
 
 double ComputeRuninRoughness::wear_depth(int i) const

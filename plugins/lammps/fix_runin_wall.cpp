@@ -218,17 +218,7 @@ int FixRuninWall::setmask()
 // Adding a fix from the constructor would corrupt the fix list; here it is safe.
 void FixRuninWall::post_constructor()
 {
-  attach_wear_state();
-}
-
-void FixRuninWall::attach_wear_state()
-{
-  const int ifix = modify->find_fix(FixRuninWearState::default_id);
-  if (ifix >= 0)
-    fix_wear = dynamic_cast<FixRuninWearState *>(modify->fix[ifix]);
-  else
-    fix_wear = dynamic_cast<FixRuninWearState *>(
-        modify->add_fix(fmt::format("{} all RUNIN/WEAR_STATE", FixRuninWearState::default_id)));
+  fix_wear = FixRuninWearState::find_or_create(modify);
 }
 
 void FixRuninWall::parse_setting(Setting &s, const char *arg, const char *keyword)
@@ -264,8 +254,7 @@ void FixRuninWall::init()
   resolve(vz, "vz");
   dt = update->dt;
   // the wear-state fix may have been redefined since this fix was created: look it up again
-  const int ifix = modify->find_fix(FixRuninWearState::default_id);
-  fix_wear = ifix >= 0 ? dynamic_cast<FixRuninWearState *>(modify->fix[ifix]) : nullptr;
+  fix_wear = FixRuninWearState::find(modify);
   if (!fix_wear) error->all(FLERR, "fix runin/wall: the per-atom wear state fix is missing");
   guard_timestep();
 }

@@ -105,7 +105,6 @@ class FixRuninWall : public Fix, public RuninContactSource {
   void resolve(Setting &s, const char *keyword);
   double current(const Setting &s) const;
   void read_coefficients_file(const std::string &file, const std::string &asperity, const std::string &wall);
-  void attach_wear_state();
   void update_wall_velocity();
   void move_wall();
   void compute_contacts(bool advance);

@@ -9,6 +9,7 @@
 #include "error.h"
 #include "input.h"
 #include "memory.h"
+#include "modify.h"
 #include "variable.h"
 
 #include <cstring>
@@ -45,6 +46,18 @@ FixRuninWearState::FixRuninWearState(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix RUNIN/WEAR_STATE: unknown keyword '{}' (expected lost or gained)", arg[iarg]);
   }
   if (narg > 3) refresh_geometry_all();
+}
+
+FixRuninWearState *FixRuninWearState::find(Modify *modify)
+{
+  const int ifix = modify->find_fix(default_id);
+  return ifix >= 0 ? dynamic_cast<FixRuninWearState *>(modify->fix[ifix]) : nullptr;
+}
+
+FixRuninWearState *FixRuninWearState::find_or_create(Modify *modify)
+{
+  if (FixRuninWearState *existing = find(modify)) return existing;
+  return dynamic_cast<FixRuninWearState *>(modify->add_fix(fmt::format("{} all RUNIN/WEAR_STATE", default_id)));
 }
 
 FixRuninWearState::~FixRuninWearState()

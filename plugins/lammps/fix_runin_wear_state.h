@@ -25,6 +25,10 @@ class FixRuninWearState : public Fix {
   // WEAR_DEPTH h (summit drop) and FLAT_RADIUS a_w follow from them and the radius (truncated sphere).
   enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, NCOLUMNS };
   static constexpr const char *default_id = "RUNIN_WEAR_STATE";
+  // The wear-state fix of this LAMMPS instance (by its ID), or nullptr; the second form creates it
+  // for group all when it does not exist yet. Look it up again at init: it may have been redefined.
+  static FixRuninWearState *find(class Modify *modify);
+  static FixRuninWearState *find_or_create(class Modify *modify);
 
   FixRuninWearState(class LAMMPS *, int, char **);
   ~FixRuninWearState() override;

@@ -191,13 +191,7 @@ void PairRuninAsperity::settings(int narg, char **arg)
 // The per-atom wear state exists from pair_style on, so dumps and computes can name it before a run.
 void PairRuninAsperity::attach_wear_state()
 {
-  if (fix_wear) return;
-  const int ifix = modify->find_fix(FixRuninWearState::default_id);
-  if (ifix >= 0)
-    fix_wear = dynamic_cast<FixRuninWearState *>(modify->fix[ifix]);
-  else
-    fix_wear = dynamic_cast<FixRuninWearState *>(
-        modify->add_fix(fmt::format("{} all RUNIN/WEAR_STATE", FixRuninWearState::default_id)));
+  if (!fix_wear) fix_wear = FixRuninWearState::find_or_create(modify);
 }
 
 void PairRuninAsperity::validate(const Coefficients &c, const char *origin)
