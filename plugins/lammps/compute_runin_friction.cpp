@@ -55,12 +55,16 @@ void ComputeRuninFriction::init()
   sources.clear();
   wear = nullptr;
   if (auto *pair = dynamic_cast<RuninContactSource *>(force->pair)) sources.push_back(pair);
+  bool have_wall = false;    // contact hosts among the fixes are the fix runin/wall instances
   for (int i = 0; i < modify->nfix; i++)
-    if (auto *host = dynamic_cast<RuninContactSource *>(modify->fix[i])) sources.push_back(host);
+    if (auto *host = dynamic_cast<RuninContactSource *>(modify->fix[i])) {
+      sources.push_back(host);
+      have_wall = true;
+    }
   if (sources.empty())
     error->all(FLERR, "compute runin/friction: requires pair_style runin/asperity or a fix runin/wall");
   wear = FixRuninWearState::find(modify);
-  if (second_body_is_wall && sources.size() == (dynamic_cast<RuninContactSource *>(force->pair) ? 1u : 0u))
+  if (second_body_is_wall && !have_wall)
     error->all(FLERR, "compute runin/friction: bodies ... wall requires a fix runin/wall");
 }
 
