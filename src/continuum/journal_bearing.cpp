@@ -214,8 +214,7 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
   start.y = {0.0, 0.0, 0.0, system.friction().initial_state()};
   const StickSlipGrid grid{run.t_end, run.output_interval, p.ramp_time, run.max_events};
   JournalBearingHooks hooks(system, surface, report, wear_step, wearing, observer, frames, run);
-  SolveReport events;
-  StickSlipLoop<JournalBearingHooks> loop(hooks, grid, integrator, std::move(start), events);
+  StickSlipLoop<JournalBearingHooks> loop(hooks, grid, integrator, std::move(start), report);
 
   const auto &s = loop.state();
   if (hooks.breakaway_function(s.t, s.y.data()) > 0.0) {
@@ -223,12 +222,6 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
     loop.break_away();
   }
   loop.run();
-  report.status = events.status;
-  report.message = std::move(events.message);
-  report.end_time = events.end_time;
-  report.breakaway_times = std::move(events.breakaway_times);
-  report.restick_times = std::move(events.restick_times);
-  report.steps = events.steps;
   return report;
 }
 

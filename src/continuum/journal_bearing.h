@@ -77,15 +77,10 @@ struct JournalBearingRun {
   void validate() const;
 };
 
-struct JournalBearingReport {
-  SolveStatus status = SolveStatus::Success;
-  std::string message;
-  double end_time = 0.0;
-  std::vector<double> breakaway_times, restick_times;
-  long steps = 0;                 // CVODE internal steps
+// The stick/slip loop's report plus the wear updates.
+struct JournalBearingReport : SolveReport {
   long wear_updates = 0;
   double stable_wear_step = 0.0;  // m, 2H/(k k_c)
-  bool ok() const { return status == SolveStatus::Success; }
 };
 
 class JournalBearingSystem {
