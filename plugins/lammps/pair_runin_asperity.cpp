@@ -65,9 +65,8 @@ inline void cross(const double *a, const double *b, double *out)
 PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
     Pair(lmp), dt(0.0), wear_on(true), reshape(true), archard_form(tribo::ArchardForm::plain),
     friction_model(FrictionModel::coulomb), transfer_fraction(0.0), restick_speed(0.0), sums_requested(false),
-    wear_increment(nullptr), gain_increment(nullptr), nmax_increment(0), worn_owned(nullptr), worn_ghost(nullptr),
-    nworn_owned(0), nworn_ghost(0), worn_listed(nullptr), maxrad(nullptr), fix_history(nullptr),
-    fix_wear(nullptr)
+    increment(nullptr), nmax_increment(0), worn_owned(nullptr), worn_ghost(nullptr), nworn_owned(0),
+    nworn_ghost(0), maxrad(nullptr), fix_history(nullptr), fix_wear(nullptr)
 {
   single_enable = 0;
   no_virial_fdotr_compute = 1;
@@ -94,11 +93,9 @@ PairRuninAsperity::~PairRuninAsperity()
     memory->destroy(cutsq);
     delete[] maxrad;
   }
-  memory->destroy(wear_increment);
-  memory->destroy(gain_increment);
+  memory->destroy(increment);
   memory->destroy(worn_owned);
   memory->destroy(worn_ghost);
-  memory->destroy(worn_listed);
 }
 
 void PairRuninAsperity::allocate()
@@ -309,16 +306,13 @@ void PairRuninAsperity::init_style()
 
   models.assign(coeffs.size(), std::nullopt);
 
-  // the transfer array exists only with transfer > 0: reallocate both at the first step
+  // transferred volume is communicated only with transfer > 0; reallocate at the first step
   comm_reverse = transfer_fraction > 0.0 ? 2 : 1;
-  memory->destroy(wear_increment);
-  memory->destroy(gain_increment);
+  memory->destroy(increment);
   memory->destroy(worn_owned);
   memory->destroy(worn_ghost);
-  memory->destroy(worn_listed);
-  wear_increment = gain_increment = nullptr;
+  increment = nullptr;
   worn_owned = worn_ghost = nullptr;
-  worn_listed = nullptr;
   nmax_increment = nworn_owned = nworn_ghost = 0;
 
   // contact sums cost a few operations per contact: only when a compute can read them
@@ -358,22 +352,14 @@ void PairRuninAsperity::grow_increments()
 {
   if (atom->nmax <= nmax_increment) return;
   nmax_increment = atom->nmax;
-  memory->destroy(wear_increment);
-  memory->destroy(gain_increment);
+  memory->destroy(increment);
   memory->destroy(worn_owned);
   memory->destroy(worn_ghost);
-  memory->destroy(worn_listed);
-  memory->create(wear_increment, nmax_increment, "pair:wear_increment");
-  std::fill(wear_increment, wear_increment + nmax_increment, 0.0);
-  if (transfer_fraction > 0.0) {
-    memory->create(gain_increment, nmax_increment, "pair:gain_increment");
-    std::fill(gain_increment, gain_increment + nmax_increment, 0.0);
-  }
-  // one slot per atom, plus the one list_worn writes past the end
+  memory->create(increment, 2 * nmax_increment, "pair:increment");
+  std::fill(increment, increment + 2 * nmax_increment, 0.0);
+  // one slot per atom, plus the one add_wear writes past the end
   memory->create(worn_owned, nmax_increment + 1, "pair:worn_owned");
   memory->create(worn_ghost, nmax_increment + 1, "pair:worn_ghost");
-  memory->create(worn_listed, nmax_increment, "pair:worn_listed");
-  std::fill(worn_listed, worn_listed + nmax_increment, 0);
   nworn_owned = nworn_ghost = 0;
 }
 
@@ -402,20 +388,14 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     const double *radius = atom->radius;
     for (int k = 0; k < nworn_owned; k++) {
       const int i = worn_owned[k];
-      state[i][FixRuninWearState::VOLUME_LOST] += wear_increment[i];
-      wear_increment[i] = 0.0;
-      if (gain_increment) {
-        state[i][FixRuninWearState::VOLUME_GAINED] += gain_increment[i];
-        gain_increment[i] = 0.0;
-      }
-      worn_listed[i] = 0;
+      state[i][FixRuninWearState::VOLUME_LOST] += increment[2 * i];
+      state[i][FixRuninWearState::VOLUME_GAINED] += increment[2 * i + 1];
+      increment[2 * i] = increment[2 * i + 1] = 0.0;
       fix_wear->refresh_geometry(i, radius[i]);
     }
     for (int k = 0; k < nworn_ghost; k++) {
       const int i = worn_ghost[k];
-      wear_increment[i] = 0.0;
-      if (gain_increment) gain_increment[i] = 0.0;
-      worn_listed[i] = 0;
+      increment[2 * i] = increment[2 * i + 1] = 0.0;
     }
     nworn_owned = nworn_ghost = 0;
   }
@@ -495,7 +475,11 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
       const double rinv = 1.0 / r;
       const double overlap = reach - r;
       const double normal[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
-      const double meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      // m* = m_i m_j / (m_i + m_j) and R* = r_i r_j / (r_i + r_j) from one division
+      const double mass_sum = rmass[i] + rmass[j], radius_product = radi * radj;
+      const double inv_sums = 1.0 / (mass_sum * radsum);
+      const double meff = rmass[i] * rmass[j] * radsum * inv_sums;
+      const double r_eff = radius_product * mass_sum * inv_sums;
 
       // relative velocity of i w.r.t. j at the contact point
       const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
@@ -509,7 +493,6 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
 
       const double flat =
           RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
-      const double r_eff = radi * radj / radsum;
       const tribo::FlatHertzContact contact =
           tribo::flat_hertz_contact(model.effective_modulus, r_eff, flat, overlap);
       double fn = contact.force + model.damping.force(contact.stiffness, meff, vn);
@@ -596,8 +579,8 @@ int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int k = 0; k < n; k++) {
-    buf[m++] = wear_increment[first + k];
-    if (gain_increment) buf[m++] = gain_increment[first + k];
+    buf[m++] = increment[2 * (first + k)];
+    if (comm_reverse == 2) buf[m++] = increment[2 * (first + k) + 1];
   }
   return m;
 }
@@ -607,7 +590,7 @@ void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
   int m = 0;
   for (int k = 0; k < n; k++) {
     const double lost = buf[m++];
-    const double gained = gain_increment ? buf[m++] : 0.0;
+    const double gained = comm_reverse == 2 ? buf[m++] : 0.0;
     if (lost != 0.0 || gained != 0.0) add_wear(list[k], lost, gained, atom->nlocal);
   }
 }
@@ -674,8 +657,7 @@ void PairRuninAsperity::reset_dt()
 
 double PairRuninAsperity::memory_usage()
 {
-  return (gain_increment ? 2.0 : 1.0) * static_cast<double>(nmax_increment) * sizeof(double) +
-         static_cast<double>(nmax_increment) * (2.0 * sizeof(int) + sizeof(char));
+  return static_cast<double>(nmax_increment) * (2.0 * sizeof(double) + 2.0 * sizeof(int));
 }
 
 double PairRuninAsperity::atom2cut(int i)

@@ -98,26 +98,26 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   RuninContactSums sums;
   bool sums_requested;             // a compute runin/friction exists (set at init): fill 'sums'
 
-  // Wear and transfer increments of one step, owned + ghost, reverse-communicated. All zero between
-  // steps: an atom that receives an increment is listed once per step, and only the listed entries are
+  // Wear and transfer increments of one step, owned + ghost, reverse-communicated: {lost, gained} per atom
+  // side by side (one cache line per contact side). All zero between steps: an atom is listed when its
+  // first nonzero increment arrives (sums of volumes >= 0 stay nonzero), and only the listed entries are
   // applied (owned atoms) and cleared, instead of passes over all owned and ghost atoms.
-  double *wear_increment;
-  double *gain_increment;          // volume deposited by transfer; allocated only with transfer > 0
+  double *increment;               // 2 per atom
   int nmax_increment;
   int *worn_owned, *worn_ghost;    // the listed atoms, owned and ghost (nmax_increment + 1 each)
   int nworn_owned, nworn_ghost;
-  char *worn_listed;               // 1 while an atom is listed
   void add_wear(int i, double lost, double gained, int nlocal)
   {
-    // branch-free: the slot is always written and kept only for an atom not listed yet
-    const bool first = !worn_listed[i], owned = i < nlocal;
+    // branch-free: the slot is always written and kept only for an atom listed now
+    double *slot = &increment[2 * i];
+    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0;
+    slot[0] += lost;
+    slot[1] += gained;
+    const bool first = was_zero && (slot[0] != 0.0 || slot[1] != 0.0), owned = i < nlocal;
     worn_owned[nworn_owned] = i;
     worn_ghost[nworn_ghost] = i;
     nworn_owned += first && owned;
     nworn_ghost += first && !owned;
-    worn_listed[i] = 1;
-    wear_increment[i] += lost;
-    if (gain_increment) gain_increment[i] += gained;
   }
   double *maxrad;            // per type
 

@@ -129,18 +129,18 @@ inline TangentialUpdate mindlin_spring(double kt, double limit, const double n[3
 
   double ft[3];
   for (int k = 0; k < 3; ++k) ft[k] = -kt * trial[k];
-  double ft_mag = std::sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
+  const double trial_mag = std::sqrt(trial[0] * trial[0] + trial[1] * trial[1] + trial[2] * trial[2]);
+  double ft_mag = kt * trial_mag;    // k_t >= 0
 
   if (ft_mag > limit) {
-    // the spring shrinks along itself to the limit: it slips by |trial| - limit / k_t = (|F_t| - limit) / k_t
-    // (ft_mag > limit >= 0 implies k_t > 0)
+    // the spring shrinks along itself to the limit: it slips by |trial| - limit / k_t = |trial| (1 - scale)
     out.slipping = true;
     const double scale = limit / ft_mag;
     for (int k = 0; k < 3; ++k) {
       ft[k] *= scale;
       trial[k] *= scale;
     }
-    out.slip_increment = (ft_mag - limit) / kt;
+    out.slip_increment = trial_mag * (1.0 - scale);
     ft_mag = limit;
   }
   for (int k = 0; k < 3; ++k) out.force[k] = ft[k];

@@ -173,7 +173,7 @@ TEST(FlatHertzNormal, EvaluateAgreesWithMembersToRoundOff)
   EXPECT_LT(worst, 4e-15);
 }
 
-// cap_height(V, h_near), the per-step path (Halley from the previous height), returns the closed-form root
+// cap_height(V, h_near), the per-step path (fifth-order steps from the previous height), returns the closed-form root
 // to round-off: from heights a part per million to a few percent off, and from unusable starts (fallback).
 TEST(TruncatedSphere, CapHeightFromNearbyHeightMatchesClosedForm)
 {
@@ -190,7 +190,7 @@ TEST(TruncatedSphere, CapHeightFromNearbyHeightMatchesClosedForm)
     }
     for (double unusable : {0.0, -1e-9, 2.0 * R, 5.0 * R})
       EXPECT_NEAR(sphere.cap_height(volume, unusable), exact, tolerance) << fraction << " " << unusable;
-    EXPECT_NEAR(sphere.cap_height(volume, 1.4 * R), exact, tolerance) << fraction;    // far: Halley or fallback
+    EXPECT_NEAR(sphere.cap_height(volume, 1.4 * R), exact, tolerance) << fraction;    // far: several steps or fallback
   }
   EXPECT_EQ(sphere.cap_height(0.0, 1e-7), 0.0);
   EXPECT_EQ(sphere.cap_height(2.0 * sphere.sphere_volume(), 1e-7), 2.0 * R);
