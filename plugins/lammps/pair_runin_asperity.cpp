@@ -435,42 +435,52 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
   int **firsttouch = fix_history->firstflag;
   double **firsthistory = fix_history->firstvalue;
 
+  // Pass 1: the touching pairs of the neighbor list, compacted without a branch per pair (whether a
+  // neighbor touches is close to random); pairs that separated lose their history.
+  int ntouching = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int jnum = numneigh[i];
     if (jnum == 0) continue;
-    const int itype = type[i];
+    if (ntouching + jnum > static_cast<int>(touching.size())) touching.resize(2 * (ntouching + jnum));
+    TouchingPair *out = touching.data();
     const double xi[3] = {x[i][0], x[i][1], x[i][2]};
     const double radi = radius[i];
     const double drop_i = RESHAPE ? state[NCOL * i + DEPTH] : 0.0;
     int *touch = firsttouch[i];
     double *allhistory = firsthistory[i];
     const int *jlist = firstneigh[i];
-    const std::optional<TypePairModel> *model_row = model_table + itype * ntypes1;
-
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
       const double rsq = dot(del, del);
-      const double radj = radius[j];
-      const double radsum = radi + radj;
       // worn summits sit lower by their wear depth (higher if material was deposited)
-      const double reach = RESHAPE ? radsum - (drop_i + state[NCOL * j + DEPTH]) : radsum;
+      const double reach = RESHAPE ? radi + radius[j] - (drop_i + state[NCOL * j + DEPTH]) : radi + radius[j];
+      const bool in_contact = (!RESHAPE || reach > 0.0) && rsq < reach * reach;
+      out[ntouching] = {i, j, &allhistory[HISTORY_SIZE * jj]};
+      ntouching += in_contact;
+      // a pair that was not touching has a zero history already (fix NEIGH_HISTORY zeroes new pairs)
+      if (touch[jj] && !in_contact)
+        for (int k = 0; k < HISTORY_SIZE; k++) allhistory[HISTORY_SIZE * jj + k] = 0.0;
+      touch[jj] = in_contact;
+    }
+  }
 
-      if ((RESHAPE && reach <= 0.0) || rsq >= reach * reach) {
-        // a pair that was not touching has a zero history already (fix NEIGH_HISTORY zeroes new pairs)
-        if (touch[jj]) {
-          touch[jj] = 0;
-          double *history = &allhistory[HISTORY_SIZE * jj];
-          for (int k = 0; k < HISTORY_SIZE; k++) history[k] = 0.0;
-        }
-        continue;
-      }
-      touch[jj] = 1;
-      double *history = &allhistory[HISTORY_SIZE * jj];
-
+  // Pass 2: the contact forces.
+  for (int c = 0; c < ntouching; c++) {
+    const int i = touching[c].i, j = touching[c].j;
+    double *history = touching[c].history;
+    const int itype = type[i];
+    const double radi = radius[i], radj = radius[j];
+    const double radsum = radi + radj;
+    const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+    const double rsq = dot(del, del);
+    // as in pass 1, bit for bit
+    const double reach =
+        RESHAPE ? radi + radj - (state[NCOL * i + DEPTH] + state[NCOL * j + DEPTH]) : radi + radj;
+    {
       const int jtype = type[j];
-      const TypePairModel &model = *model_row[jtype];
+      const TypePairModel &model = *model_table[itype * ntypes1 + jtype];
       const double r = std::sqrt(rsq);
       const double rinv = 1.0 / r;
       const double overlap = reach - r;

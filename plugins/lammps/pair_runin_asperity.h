@@ -119,6 +119,11 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
     nworn_owned += first && owned;
     nworn_ghost += first && !owned;
   }
+  struct TouchingPair {
+    int i, j;
+    double *history;
+  };
+  std::vector<TouchingPair> touching;    // the touching pairs of one step (grows, never shrinks)
   double *maxrad;            // per type
 
   class FixDummy *fix_dummy;

@@ -87,8 +87,11 @@ WornAsperity worn_asperity(double radius, double volume_lost, double volume_gain
 inline WornAsperity worn_asperity(double radius, double volume_lost, double volume_gained,
                                   double previous_summit_drop)
 {
+  constexpr double kPi = 3.14159265358979323846;
   const double net_removed = volume_lost - volume_gained;
-  if (!(net_removed >= 0.0 && previous_summit_drop > 0.0)) return worn_asperity(radius, volume_lost, volume_gained);
+  // a net gain: as worn_asperity(radius, lost, gained), inline (half the asperities of a transfer run)
+  if (net_removed < 0.0) return {net_removed / (kPi * radius * radius), 0.0};
+  if (!(previous_summit_drop > 0.0)) return worn_asperity(radius, volume_lost, volume_gained);
   const TruncatedSphere sphere(radius);
   WornAsperity out;
   out.summit_drop = sphere.cap_height(net_removed, previous_summit_drop);
