@@ -302,15 +302,19 @@ def write_atomically(path, text):
 PROFILE_NOTES = [
     ("PairRuninAsperity::eval<",
      "`PairRuninAsperity::eval<WEAR, RESHAPE, STRENGTH, SUMS, EVFLAG>` is the whole force loop, compiled once per "
-     "combination of features and picked once per step (OPT-package style): the contact law of `src/tribo` is "
-     "header-inline there (`flat_hertz_contact`: Sneddon's a, c, F, k with the square roots taken once, a Hertz "
-     "branch for unworn pairs; `mindlin_spring`; the damping; adhesion + ploughing), contact sums are filled only "
-     "when a `compute runin/friction` exists, and the finite-force check is one sum per contact (no pass over "
-     "all atoms, no per-step MPI_Allreduce)."),
+     "combination of features and picked once per step (OPT-package style). It runs in two passes: the touching "
+     "pairs of the neighbor list are compacted without a branch per pair (whether a neighbor touches is close to "
+     "random), then the contact forces run over them. The contact law of `src/tribo` is header-inline there "
+     "(`flat_hertz_contact`: Sneddon's a, c, F, k with the square roots taken once, a Hertz branch for unworn "
+     "pairs; `mindlin_spring`, whose slip increment needs no division; the damping; adhesion + ploughing); m* "
+     "and R* come from one division; wear and transfer increments sit side by side per atom; contact sums are "
+     "filled only when a `compute runin/friction` exists, and the finite-force check is one sum per contact "
+     "(no pass over all atoms, no per-step MPI_Allreduce)."),
     ("PairRuninAsperity::compute",
      "`PairRuninAsperity::compute` adds each worn atom's increments to its state and refreshes its geometry "
-     "(`TruncatedSphere::cap_height(V, h_previous)`: Halley from the previous height, the root to round-off "
-     "without acos/cos, inlined). Only atoms that wore in the step are visited and cleared (no pass over all "
+     "(`TruncatedSphere::cap_height(V, h_previous)`: a fifth-order series-reversion step from the previous "
+     "height and one Newton step, the root to round-off without acos/cos, inlined; a net gain is one division). "
+     "Only atoms that wore in the step are visited and cleared (no pass over all "
      "owned + ghost atoms); the transfer array and its communication exist only with transfer > 0, and the "
      "geometry goes to the ghosts only with reshape yes."),
     ("memset",
