@@ -478,100 +478,98 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
     // as in pass 1, bit for bit
     const double reach =
         RESHAPE ? radi + radj - (state[NCOL * i + DEPTH] + state[NCOL * j + DEPTH]) : radi + radj;
-    {
-      const int jtype = type[j];
-      const TypePairModel &model = *model_table[itype * ntypes1 + jtype];
-      const double r = std::sqrt(rsq);
-      const double rinv = 1.0 / r;
-      const double overlap = reach - r;
-      const double normal[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
-      // m* = m_i m_j / (m_i + m_j) and R* = r_i r_j / (r_i + r_j) from one division
-      const double mass_sum = rmass[i] + rmass[j], radius_product = radi * radj;
-      const double inv_sums = 1.0 / (mass_sum * radsum);
-      const double meff = rmass[i] * rmass[j] * radsum * inv_sums;
-      const double r_eff = radius_product * mass_sum * inv_sums;
+    const int jtype = type[j];
+    const TypePairModel &model = *model_table[itype * ntypes1 + jtype];
+    const double r = std::sqrt(rsq);
+    const double rinv = 1.0 / r;
+    const double overlap = reach - r;
+    const double normal[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
+    // m* = m_i m_j / (m_i + m_j) and R* = r_i r_j / (r_i + r_j) from one division
+    const double mass_sum = rmass[i] + rmass[j], radius_product = radi * radj;
+    const double inv_sums = 1.0 / (mass_sum * radsum);
+    const double meff = rmass[i] * rmass[j] * radsum * inv_sums;
+    const double r_eff = radius_product * mass_sum * inv_sums;
 
-      // relative velocity of i w.r.t. j at the contact point
-      const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-      const double vn = dot(vr, normal);
-      const double spin[3] = {radi * omega[i][0] + radj * omega[j][0], radi * omega[i][1] + radj * omega[j][1],
-                              radi * omega[i][2] + radj * omega[j][2]};
-      double spin_velocity[3];
-      cross(normal, spin, spin_velocity);
-      double vt[3];
-      for (int k = 0; k < 3; k++) vt[k] = vr[k] - vn * normal[k] + spin_velocity[k];
+    // relative velocity of i w.r.t. j at the contact point
+    const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+    const double vn = dot(vr, normal);
+    const double spin[3] = {radi * omega[i][0] + radj * omega[j][0], radi * omega[i][1] + radj * omega[j][1],
+                            radi * omega[i][2] + radj * omega[j][2]};
+    double spin_velocity[3];
+    cross(normal, spin, spin_velocity);
+    double vt[3];
+    for (int k = 0; k < 3; k++) vt[k] = vr[k] - vn * normal[k] + spin_velocity[k];
 
-      const double flat =
-          RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
-      const tribo::FlatHertzContact contact =
-          tribo::flat_hertz_contact(model.effective_modulus, r_eff, flat, overlap);
-      double fn = contact.force + model.damping.force(contact.stiffness, meff, vn);
-      if (fn < 0.0) fn = 0.0;    // damping must not glue asperities together
+    const double flat =
+        RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
+    const tribo::FlatHertzContact contact =
+        tribo::flat_hertz_contact(model.effective_modulus, r_eff, flat, overlap);
+    double fn = contact.force + model.damping.force(contact.stiffness, meff, vn);
+    if (fn < 0.0) fn = 0.0;    // damping must not glue asperities together
 
-      const double kt = tribo::mindlin_stiffness(model.effective_shear_modulus, contact.contact_radius);
-      double &slip = history[SLIP];
-      tribo::FrictionStrengthParts strength;
-      double limit;
-      if (STRENGTH) {
-        // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
-        if (fn > 0.0) {
-          strength = model.strength.strength(fn, contact.contact_radius, overlap);
-          limit = model.friction.limit_force(slip, fn, strength.total());
-        } else {
-          limit = 0.0;
-        }
+    const double kt = tribo::mindlin_stiffness(model.effective_shear_modulus, contact.contact_radius);
+    double &slip = history[SLIP];
+    tribo::FrictionStrengthParts strength;
+    double limit;
+    if (STRENGTH) {
+      // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
+      if (fn > 0.0) {
+        strength = model.strength.strength(fn, contact.contact_radius, overlap);
+        limit = model.friction.limit_force(slip, fn, strength.total());
       } else {
-        limit = model.friction.coefficient(slip) * fn;
+        limit = 0.0;
       }
-      const tribo::TangentialUpdate tangential =
-          tribo::mindlin_spring(kt, limit, normal, vt, step_dt, &history[SPRING_X], slip, advance);
-      if (advance && tribo::resticks_squared(tangential, dot(vt, vt), restick))
-        slip = 0.0;    // re-stuck: the contact heals to its static limit
-      const double *ft = tangential.force;
+    } else {
+      limit = model.friction.coefficient(slip) * fn;
+    }
+    const tribo::TangentialUpdate tangential =
+        tribo::mindlin_spring(kt, limit, normal, vt, step_dt, &history[SPRING_X], slip, advance);
+    if (advance && tribo::resticks_squared(tangential, dot(vt, vt), restick))
+      slip = 0.0;    // re-stuck: the contact heals to its static limit
+    const double *ft = tangential.force;
 
-      const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
-      force_sum += fpair[0] + fpair[1] + fpair[2];
-      double tor[3];
-      cross(normal, ft, tor);
-      const bool j_here = newton_pair || j < nlocal;
+    const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
+    force_sum += fpair[0] + fpair[1] + fpair[2];
+    double tor[3];
+    cross(normal, ft, tor);
+    const bool j_here = newton_pair || j < nlocal;
+    for (int k = 0; k < 3; k++) {
+      f[i][k] += fpair[k];
+      torque[i][k] -= radi * tor[k];
+    }
+    if (j_here)
       for (int k = 0; k < 3; k++) {
-        f[i][k] += fpair[k];
-        torque[i][k] -= radi * tor[k];
-      }
-      if (j_here)
-        for (int k = 0; k < 3; k++) {
-          f[j][k] -= fpair[k];
-          torque[j][k] -= radj * tor[k];
-        }
-
-      // with newton off a contact with a ghost is computed on both ranks: count half on each
-      const double weight = SUMS && !j_here ? 0.5 : 1.0;
-      if (SUMS) {
-        const bool j_is_counter = jtype > itype || (jtype == itype && tag[j] > tag[i]);
-        const double orient = j_is_counter ? -weight : weight;
-        local_sums.normal_force += weight * fn;
-        for (int k = 0; k < 3; k++) local_sums.tangential_force[k] += orient * ft[k];
-        local_sums.contacts += weight;
-        if (!tangential.slipping) local_sums.sticking_contacts += weight;
-        local_sums.contact_area += weight * MY_PI * contact.contact_radius * contact.contact_radius;
-        local_sums.adhesion_force += weight * strength.adhesion;
-        local_sums.ploughing_force += weight * strength.ploughing;
-        local_sums.frictional_power += weight * tangential.force_magnitude * tangential.slip_increment * inv_dt;
+        f[j][k] -= fpair[k];
+        torque[j][k] -= radj * tor[k];
       }
 
-      if (WEAR && tangential.slip_increment > 0.0) {
-        const double worn = model.wear.volume(fn, tangential.slip_increment);
-        const tribo::WearExchange exchange = model.exchange.split(worn);
-        add_wear(i, exchange.lost_a, exchange.gained_a, nlocal);
-        if (j_here) add_wear(j, exchange.lost_b, exchange.gained_b, nlocal);
-        if (SUMS) local_sums.wear_volume += weight * worn;
-      }
+    // with newton off a contact with a ghost is computed on both ranks: count half on each
+    const double weight = SUMS && !j_here ? 0.5 : 1.0;
+    if (SUMS) {
+      const bool j_is_counter = jtype > itype || (jtype == itype && tag[j] > tag[i]);
+      const double orient = j_is_counter ? -weight : weight;
+      local_sums.normal_force += weight * fn;
+      for (int k = 0; k < 3; k++) local_sums.tangential_force[k] += orient * ft[k];
+      local_sums.contacts += weight;
+      if (!tangential.slipping) local_sums.sticking_contacts += weight;
+      local_sums.contact_area += weight * MY_PI * contact.contact_radius * contact.contact_radius;
+      local_sums.adhesion_force += weight * strength.adhesion;
+      local_sums.ploughing_force += weight * strength.ploughing;
+      local_sums.frictional_power += weight * tangential.force_magnitude * tangential.slip_increment * inv_dt;
+    }
 
-      if (EVFLAG) {
-        const double energy =
-            eflag ? tribo::FlatHertzNormal(model.effective_modulus, r_eff, flat).elastic_energy(overlap) : 0.0;
-        ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
-      }
+    if (WEAR && tangential.slip_increment > 0.0) {
+      const double worn = model.wear.volume(fn, tangential.slip_increment);
+      const tribo::WearExchange exchange = model.exchange.split(worn);
+      add_wear(i, exchange.lost_a, exchange.gained_a, nlocal);
+      if (j_here) add_wear(j, exchange.lost_b, exchange.gained_b, nlocal);
+      if (SUMS) local_sums.wear_volume += weight * worn;
+    }
+
+    if (EVFLAG) {
+      const double energy =
+          eflag ? tribo::FlatHertzNormal(model.effective_modulus, r_eff, flat).elastic_energy(overlap) : 0.0;
+      ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
     }
   }
 
@@ -667,7 +665,8 @@ void PairRuninAsperity::reset_dt()
 
 double PairRuninAsperity::memory_usage()
 {
-  return static_cast<double>(nmax_increment) * (2.0 * sizeof(double) + 2.0 * sizeof(int));
+  return static_cast<double>(nmax_increment) * (2.0 * sizeof(double) + 2.0 * sizeof(int)) +
+         static_cast<double>(touching.capacity()) * sizeof(TouchingPair);
 }
 
 double PairRuninAsperity::atom2cut(int i)

@@ -33,7 +33,8 @@ class TruncatedSphere {
   // a fifth-order step and a Newton step instead of the acos/cos: exact to the same round-off. A
   // near_height that is already the root is returned unchanged (a refresh of an unchanged volume, e.g.
   // after a restart, is bit for bit). Falls back to cap_height(V) for near_height outside (0, 1.5 R)
-  // (h(V) is ill-conditioned towards 2R) or when a few steps do not settle. Header-inline: it runs for every worn asperity and step.
+  // (h(V) is ill-conditioned towards 2R) or when a few steps do not settle. Header-inline: it runs for
+  // every worn asperity and step.
   double cap_height(double removed_volume, double near_height) const;
   double sphere_volume() const;
   double radius() const { return radius_; }
