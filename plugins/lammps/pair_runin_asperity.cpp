@@ -435,6 +435,13 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
   int **firsttouch = fix_history->firstflag;
   double **firsthistory = fix_history->firstvalue;
 
+  // Centre distance at which two summits touch: worn summits sit lower by their wear depth (higher if material
+  // was deposited). Both passes use it, so they agree bit for bit on which pairs touch.
+  auto wear_depth = [state](int k) { return RESHAPE ? state[NCOL * k + DEPTH] : 0.0; };
+  auto summit_reach = [](double radi, double radj, double depth_i, double depth_j) {
+    return radi + radj - (depth_i + depth_j);
+  };
+
   // Pass 1: the touching pairs of the neighbor list, compacted without a branch per pair (whether a
   // neighbor touches is close to random); pairs that separated lose their history.
   int ntouching = 0;
@@ -446,7 +453,7 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
     TouchingPair *out = touching.data();
     const double xi[3] = {x[i][0], x[i][1], x[i][2]};
     const double radi = radius[i];
-    const double drop_i = RESHAPE ? state[NCOL * i + DEPTH] : 0.0;
+    const double depth_i = wear_depth(i);
     int *touch = firsttouch[i];
     double *allhistory = firsthistory[i];
     const int *jlist = firstneigh[i];
@@ -454,8 +461,7 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
       const int j = jlist[jj] & NEIGHMASK;
       const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
       const double rsq = dot(del, del);
-      // worn summits sit lower by their wear depth (higher if material was deposited)
-      const double reach = RESHAPE ? radi + radius[j] - (drop_i + state[NCOL * j + DEPTH]) : radi + radius[j];
+      const double reach = summit_reach(radi, radius[j], depth_i, wear_depth(j));
       const bool in_contact = (!RESHAPE || reach > 0.0) && rsq < reach * reach;
       out[ntouching] = {i, j, &allhistory[HISTORY_SIZE * jj]};
       ntouching += in_contact;
@@ -475,9 +481,7 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
     const double radsum = radi + radj;
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
     const double rsq = dot(del, del);
-    // as in pass 1, bit for bit
-    const double reach =
-        RESHAPE ? radi + radj - (state[NCOL * i + DEPTH] + state[NCOL * j + DEPTH]) : radi + radj;
+    const double reach = summit_reach(radi, radj, wear_depth(i), wear_depth(j));
     const int jtype = type[j];
     const TypePairModel &model = *model_table[itype * ntypes1 + jtype];
     const double r = std::sqrt(rsq);
