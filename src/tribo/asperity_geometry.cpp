@@ -48,13 +48,10 @@ WornAsperity worn_asperity(double radius, double volume_lost, double volume_gain
 {
   const TruncatedSphere sphere(radius);
   const double net_removed = volume_lost - volume_gained;
+  if (!(net_removed >= 0.0)) return raised_by_deposit(radius, net_removed);
   WornAsperity out;
-  if (net_removed >= 0.0) {
-    out.summit_drop = sphere.cap_height(net_removed);
-    out.flat_radius = sphere.flat_radius(out.summit_drop);
-  } else {
-    out.summit_drop = net_removed / (kPi * radius * radius);
-  }
+  out.summit_drop = sphere.cap_height(net_removed);
+  out.flat_radius = sphere.flat_radius(out.summit_drop);
   return out;
 }
 

@@ -83,15 +83,20 @@ struct WornAsperity {
   double flat_radius = 0.0;    // a_w [m]
 };
 WornAsperity worn_asperity(double radius, double volume_lost, double volume_gained);
+// The net-gain branch of worn_asperity (net_removed = lost - gained < 0): the layer raises the summit.
+inline WornAsperity raised_by_deposit(double radius, double net_removed)
+{
+  constexpr double kPi = 3.14159265358979323846;
+  return {net_removed / (kPi * radius * radius), 0.0};
+}
 // The same, starting the cap-height root from the asperity's previous summit drop (see cap_height): the
 // per-step refresh of an asperity whose volumes changed a little.
 inline WornAsperity worn_asperity(double radius, double volume_lost, double volume_gained,
                                   double previous_summit_drop)
 {
-  constexpr double kPi = 3.14159265358979323846;
   const double net_removed = volume_lost - volume_gained;
-  // a net gain: as worn_asperity(radius, lost, gained), inline (half the asperities of a transfer run)
-  if (net_removed < 0.0) return {net_removed / (kPi * radius * radius), 0.0};
+  // inline: half the asperities of a transfer run gain
+  if (net_removed < 0.0) return raised_by_deposit(radius, net_removed);
   if (!(previous_summit_drop > 0.0)) return worn_asperity(radius, volume_lost, volume_gained);
   const TruncatedSphere sphere(radius);
   WornAsperity out;
