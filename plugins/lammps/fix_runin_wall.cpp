@@ -47,16 +47,14 @@ const std::map<std::string, int> kKeywordValues = {
     {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
     {"strength", 2}, {"restick", 1}, {"transfer", 1}};
 
-// Leads the global restart record that carries the counterface gain (older records start with z_wall).
-const double kRestartFormatMark = std::numeric_limits<double>::quiet_NaN();
+// Leads the global restart record that carries the contact model. Older records start with NaN (with the
+// counterface gain) or with z_wall.
+const double kRestartFormatMark = -7.0e77;
 
 }    // namespace
 
 FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), e_star(-1.0), g_star(-1.0), restitution(1.0), mu_s(-1.0), mu_k(-1.0),
-    slip_weakening(0.0), wear_k(-1.0), hardness_asperity(-1.0), hardness_wall(-1.0), thesis_archard(false),
-    reshape(true), strength_model(false), shear_strength(0.0), ploughing_factor(1.0), restick_speed(0.0),
-    transfer_fraction(0.0), side_sign(0.0), wall_z(0.0), wall_dx(0.0), wall_dy(0.0), wall_wear(0.0), wall_gain(0.0),
+    Fix(lmp, narg, arg), reshape(true), body_groupbit(0), side_sign(0.0), wall_z(0.0), wall_dx(0.0), wall_dy(0.0), wall_wear(0.0), wall_gain(0.0),
     control(Control::displacement),
     load_target(0.0), servo_gain(-1.0), servo_vmax(-1.0), last_normal_force(0.0), last_stiffness(0.0),
     wall_velocity{0.0, 0.0, 0.0}, vz_given(false), dt(0.0), history(nullptr),
@@ -95,28 +93,29 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       else
         error->all(FLERR, "fix runin/wall: side must be 'lo' or 'hi', got '{}'", values[0]);
     } else if (keyword == "file") {
-      read_coefficients_file(values[0], values[1], values[2]);
+      parameters = contact_parameters(
+          read_runin_material_pair(lmp, values[0], values[1], values[2], "fix runin/wall: file"));
       have_file = true;
     } else if (keyword == "elastic") {
-      e_star = number(0, "E*");
-      g_star = number(1, "G*");
-      restitution = number(2, "e");
+      parameters.effective_modulus = number(0, "E*");
+      parameters.effective_shear_modulus = number(1, "G*");
+      parameters.restitution = number(2, "e");
       have_elastic = true;
     } else if (keyword == "friction") {
-      mu_s = number(0, "mu_s");
-      mu_k = number(1, "mu_k");
-      slip_weakening = number(2, "d_c");
+      parameters.mu_static = number(0, "mu_s");
+      parameters.mu_kinetic = number(1, "mu_k");
+      parameters.slip_weakening_distance = number(2, "d_c");
       have_friction = true;
     } else if (keyword == "wear") {
-      wear_k = number(0, "k");
-      hardness_asperity = number(1, "H_asperity");
-      hardness_wall = number(2, "H_wall");
+      parameters.wear_coefficient = number(0, "k");
+      parameters.hardness_i = number(1, "H_asperity");
+      parameters.hardness_j = number(2, "H_wall");
       have_wear = true;
     } else if (keyword == "archard") {
       if (strcmp(values[0], "plain") == 0)
-        thesis_archard = false;
+        contact_settings.archard_form = tribo::ArchardForm::plain;
       else if (strcmp(values[0], "thesis") == 0)
-        thesis_archard = true;
+        contact_settings.archard_form = tribo::ArchardForm::thesis;
       else
         error->all(FLERR, "fix runin/wall: archard must be 'plain' or 'thesis', got '{}'", values[0]);
     } else if (keyword == "reshape") {
@@ -143,17 +142,19 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "fix runin/wall: servo gain must be in (0, 1], got {}", servo_gain);
       if (!(servo_vmax > 0.0)) error->all(FLERR, "fix runin/wall: servo vmax must be > 0, got {}", servo_vmax);
     } else if (keyword == "strength") {
-      shear_strength = number(0, "tau_s");
-      ploughing_factor = number(1, "plough");
-      strength_model = true;
+      parameters.shear_strength = number(0, "tau_s");
+      parameters.ploughing_factor = number(1, "plough");
+      choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
+          tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
     } else if (keyword == "restick") {
-      restick_speed = number(0, "v");
-      if (!(restick_speed >= 0.0))
-        error->all(FLERR, "fix runin/wall: restick speed must be >= 0 m/s, got {}", restick_speed);
+      contact_settings.restick_speed = number(0, "v");
+      if (!(contact_settings.restick_speed >= 0.0) || !std::isfinite(contact_settings.restick_speed))
+        error->all(FLERR, "fix runin/wall: restick speed must be >= 0 m/s, got {}", contact_settings.restick_speed);
     } else if (keyword == "transfer") {
-      transfer_fraction = number(0, "f");
-      if (!(transfer_fraction >= 0.0 && transfer_fraction <= 1.0))
-        error->all(FLERR, "fix runin/wall: transfer fraction must be in [0, 1], got {}", transfer_fraction);
+      contact_settings.transfer_fraction = number(0, "f");
+      if (!(contact_settings.transfer_fraction >= 0.0 && contact_settings.transfer_fraction <= 1.0))
+        error->all(FLERR, "fix runin/wall: transfer fraction must be in [0, 1], got {}",
+                   contact_settings.transfer_fraction);
     }
     iarg += nvalues + 1;
   }
@@ -170,20 +171,13 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
   if (control != Control::displacement && vz_given)
     error->all(FLERR, "fix runin/wall: 'vz' and 'load'/'pressure' exclude each other");
 
-  // the kernels validate their coefficients; the message names the offending one
+  // the contact model validates its coefficients; the message names the offending one
   try {
-    tribo::HertzNormal(e_star, 1.0);
-    if (!(g_star > 0.0)) throw tribo::InvalidCoefficient("G*: effective shear modulus must be > 0");
-    if (!(hardness_asperity > 0.0))
-      throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", hardness_asperity));
-    if (!(hardness_wall > 0.0))
-      throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", hardness_wall));
-    model.emplace(ContactModel{
-        tribo::RestitutionDamping(restitution), tribo::StaticKineticFriction(mu_s, mu_k, slip_weakening),
-        tribo::AdhesionPloughing(shear_strength, ploughing_factor),
-        tribo::ArchardWear(wear_k, std::min(hardness_asperity, hardness_wall),
-                           thesis_archard ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain),
-        tribo::wear_share(hardness_asperity, hardness_wall)});
+    if (!(parameters.hardness_i > 0.0))
+      throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", parameters.hardness_i));
+    if (!(parameters.hardness_j > 0.0))
+      throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", parameters.hardness_j));
+    model.emplace(choice, tribo::contact_coefficients(choice, parameters), contact_settings);
   } catch (const tribo::InvalidCoefficient &e) {
     error->all(FLERR, "fix runin/wall: {}", e.what());
   }
@@ -270,7 +264,9 @@ void FixRuninWall::guard_timestep()
     if (atom->mask[i] & groupbit) local[atom->type[i]] = 1;
   MPI_Allreduce(local.data(), in_group.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
   runin_lammps::guard_timestep(lmp, "fix runin/wall", [&](int i, int j) {
-    return i == j && in_group[i] ? runin_lammps::PairModuli{e_star, g_star} : runin_lammps::PairModuli{};
+    return i == j && in_group[i]
+               ? runin_lammps::PairModuli{model->effective_modulus(), model->effective_shear_modulus()}
+               : runin_lammps::PairModuli{};
   });
 }
 
@@ -321,13 +317,15 @@ void FixRuninWall::move_wall()
 
 void FixRuninWall::compute_contacts(bool advance)
 {
+  tribo::with_sub_models(choice, [&](auto normal, auto friction) {
+    compute_contacts<decltype(normal)::value, decltype(friction)::value>(advance);
+  });
+}
+
+template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool advance)
+{
   sums = RuninContactSums();
-  const tribo::RestitutionDamping &damping = model->damping;
-  const tribo::StaticKineticFriction &friction = model->friction;
-  const tribo::AdhesionPloughing &adhesion_ploughing = model->adhesion_ploughing;
-  const tribo::ArchardWear &wear = model->wear;
-  const double share_asperity = model->share_asperity;
-  const bool track_wear = advance && wear_k > 0.0;
+  const bool track_wear = advance && parameters.wear_coefficient > 0.0;
 
   double **x = atom->x, **v = atom->v, **f = atom->f;
   double **omega = atom->omega, **torque = atom->torque;
@@ -350,73 +348,55 @@ void FixRuninWall::compute_contacts(bool advance)
     const double r = radius[i];
     // a worn summit sits lower by its wear depth and carries a flat (pair runin/asperity reshape)
     const double summit_drop = worn_geometry ? wear_state[i][FixRuninWearState::WEAR_DEPTH] : 0.0;
-    const double flat = worn_geometry ? wear_state[i][FixRuninWearState::FLAT_RADIUS] : 0.0;
-    const double overlap = r - summit_drop - side_sign * (x[i][2] - wall_z);
-    if (overlap <= 0.0) {
+    tribo::ContactGeometry g;
+    g.overlap = r - summit_drop - side_sign * (x[i][2] - wall_z);
+    if (g.overlap <= 0.0) {
       for (int k = 0; k < HISTORY_SIZE; k++) history[i][k] = 0.0;
       continue;
     }
+    g.flat_radius = worn_geometry ? wear_state[i][FixRuninWearState::FLAT_RADIUS] : 0.0;
+    g.effective_radius = r;    // a flat wall: the asperity's own radius
+    g.effective_mass = rmass[i];
+    for (int k = 0; k < 3; k++) g.normal[k] = normal[k];
     const double vr[3] = {v[i][0] - wall_velocity[0], v[i][1] - wall_velocity[1], v[i][2] - wall_velocity[2]};
-    const double vn = dot(vr, normal);
+    g.normal_velocity = dot(vr, normal);
     const double spin[3] = {r * omega[i][0], r * omega[i][1], r * omega[i][2]};
     double spin_velocity[3];
     cross(normal, spin, spin_velocity);
-    double vt[3];
-    for (int k = 0; k < 3; k++) vt[k] = vr[k] - vn * normal[k] + spin_velocity[k];
+    for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * normal[k] + spin_velocity[k];
 
-    // a flat wall: the asperity's own radius is the effective radius
-    const tribo::FlatHertzContact contact = tribo::flat_hertz_contact(e_star, r, flat, overlap);
-    double fn = contact.force + damping.force(contact.stiffness, rmass[i], vn);
-    if (fn < 0.0) fn = 0.0;    // damping must not glue the asperity to the wall
-    const double elastic = contact.force, stiffness = contact.stiffness;
-    const double contact_radius = contact.contact_radius;
-    const double kt = tribo::mindlin_stiffness(g_star, contact_radius);
-    double &slip = history[i][SLIP];
-    tribo::FrictionStrengthParts strength;
-    double limit;
-    if (strength_model) {
-      // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
-      if (fn > 0.0) {
-        strength = adhesion_ploughing.strength(fn, contact_radius, overlap);
-        limit = friction.limit_force(slip, fn, strength.total());
-      } else {
-        limit = 0.0;
-      }
-    } else {
-      limit = friction.coefficient(slip) * fn;
-    }
-    const tribo::TangentialUpdate tangential =
-        tribo::mindlin_spring(kt, limit, normal, vt, dt, &history[i][SPRING_X], slip, advance);
-    if (advance && tribo::resticks_squared(tangential, dot(vt, vt), restick_speed))
-      slip = 0.0;    // re-stuck: the contact heals to its static limit
-    const double *ft = tangential.force;
+    const tribo::ContactResult contact = model->evaluate<NORMAL, FRICTION, 1>(g, history[i], dt, advance);
+    const double fn = contact.normal_force;
+    const double *ft = contact.tangential.force;
     if (!std::isfinite(fn + ft[0] + ft[1] + ft[2])) first_bad = std::min(first_bad, tag[i]);
 
     double tor[3];
     cross(normal, ft, tor);
+    const bool in_body = (mask[i] & body_groupbit) != 0;
     for (int k = 0; k < 3; k++) {
       const double fk = fn * normal[k] + ft[k];
       f[i][k] += fk;
       torque[i][k] -= r * tor[k];
       local[LOCAL_FX + k] -= fk;
+      if (in_body) sums.body_force[k] += fk;
     }
     local[LOCAL_CONTACTS] += 1.0;
     // the servo regulates the elastic load: with the damping term its own wall speed would feed back
     // into the force it measures and, for e < 1, make it ring with period 2 steps
-    local[LOCAL_FN] += elastic;
-    local[LOCAL_STIFFNESS] += stiffness;
+    local[LOCAL_FN] += contact.normal.force;
+    local[LOCAL_STIFFNESS] += contact.normal.stiffness;
 
     sums.normal_force += fn;
     for (int k = 0; k < 3; k++) sums.tangential_force[k] -= ft[k];
     sums.contacts += 1.0;
-    if (!tangential.slipping) sums.sticking_contacts += 1.0;
-    sums.contact_area += pi * contact_radius * contact_radius;
-    sums.adhesion_force += strength.adhesion;
-    sums.ploughing_force += strength.ploughing;
-    if (advance && dt > 0.0) sums.frictional_power += std::sqrt(dot(ft, ft)) * tangential.slip_increment / dt;
-    if (track_wear && tangential.slip_increment > 0.0) {
-      const double worn = wear.volume(fn, tangential.slip_increment);
-      const tribo::WearExchange exchange = tribo::exchange_wear(worn, share_asperity, transfer_fraction);
+    if (!contact.tangential.slipping) sums.sticking_contacts += 1.0;
+    sums.contact_area += pi * contact.normal.contact_radius * contact.normal.contact_radius;
+    sums.adhesion_force += contact.strength.adhesion;
+    sums.ploughing_force += contact.strength.ploughing;
+    if (advance && dt > 0.0)
+      sums.frictional_power += contact.tangential.force_magnitude * contact.tangential.slip_increment / dt;
+    if (track_wear && contact.tangential.slip_increment > 0.0) {
+      const tribo::WearExchange &exchange = contact.wear;
       if (wear_state) {
         wear_state[i][FixRuninWearState::VOLUME_LOST] += exchange.lost_a;
         wear_state[i][FixRuninWearState::VOLUME_GAINED] += exchange.gained_a;
@@ -424,9 +404,10 @@ void FixRuninWall::compute_contacts(bool advance)
       }
       local[LOCAL_LOST] += exchange.lost_b;
       local[LOCAL_GAINED] += exchange.gained_b;
-      sums.wear_volume += worn;
+      sums.wear_volume += contact.worn_volume;
     }
   }
+  for (int k = 0; k < 3; k++) sums.counterface_force[k] = local[LOCAL_FX + k];
 
   double global[NLOCAL];
   MPI_Allreduce(local, global, NLOCAL, MPI_DOUBLE, MPI_SUM, world);
@@ -462,38 +443,27 @@ double FixRuninWall::compute_vector(int n)
   }
 }
 
-// Coefficient file (potentials/*.runin, the pair_coeff file form); see runin_material_file.h.
-void FixRuninWall::read_coefficients_file(const std::string &file, const std::string &asperity,
-                                          const std::string &wall)
-{
-  const RuninMaterialPair entry = read_runin_material_pair(lmp, file, asperity, wall, "fix runin/wall: file");
-  e_star = tribo::effective_modulus(entry.a, entry.b);
-  g_star = tribo::effective_shear_modulus(entry.a, entry.b);
-  restitution = entry.restitution;
-  mu_s = entry.mu_static;
-  mu_k = entry.mu_kinetic;
-  slip_weakening = entry.slip_weakening_distance;
-  wear_k = entry.wear_coefficient;
-  hardness_asperity = entry.a.hardness;
-  hardness_wall = entry.b.hardness;
-}
-
 // Global restart state: the wall position, its in-plane travel, the counterface wear and gain and the
-// servo's last force and stiffness, so a restarted load-controlled run continues smoothly.
+// servo's last force and stiffness, so a restarted load-controlled run continues smoothly; then the contact
+// model record (sub-model names, coefficient counts and values), checked against the input's on reading.
 void FixRuninWall::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double state[8] = {kRestartFormatMark, wall_z,    wall_dx,           wall_dy,
-                           wall_wear,          wall_gain, last_normal_force, last_stiffness};
-  const int size = sizeof(state);
+  std::vector<double> state = {kRestartFormatMark, wall_z,    wall_dx,           wall_dy,
+                               wall_wear,          wall_gain, last_normal_force, last_stiffness};
+  const std::vector<double> record = tribo::serialize(choice, tribo::contact_coefficients(choice, parameters));
+  state.push_back(static_cast<double>(record.size()));
+  state.insert(state.end(), record.begin(), record.end());
+  const int size = static_cast<int>(state.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(state, sizeof(state), 1, fp);
+  fwrite(state.data(), sizeof(double), state.size(), fp);
 }
 
 void FixRuninWall::restart(char *buf)
 {
   const auto *record = reinterpret_cast<const double *>(buf);
-  const bool with_gain = std::isnan(record[0]);    // else written before the counterface gain existed
+  const bool with_model = record[0] == kRestartFormatMark;
+  const bool with_gain = with_model || std::isnan(record[0]);    // else written before the counterface gain existed
   const double *state = with_gain ? record + 1 : record;
   wall_z = state[0];
   wall_dx = state[1];
@@ -503,6 +473,15 @@ void FixRuninWall::restart(char *buf)
   wall_gain = with_gain ? state[3] : 0.0;
   last_normal_force = state[4];
   last_stiffness = state[5];
+  if (!with_model) return;
+  const int size = static_cast<int>(state[6]);
+  try {
+    const auto stored = tribo::deserialize(state + 7, size);
+    if (!(stored.first == choice))
+      error->all(FLERR, "fix runin/wall: restart file: {}", tribo::describe_difference(stored.first, choice));
+  } catch (const tribo::InvalidCoefficient &e) {
+    error->all(FLERR, "fix runin/wall: restart file: {}", e.what());
+  }
 }
 
 void FixRuninWall::grow_arrays(int nmax)

@@ -14,9 +14,7 @@ FixStyle(runin/wall,FixRuninWall);
 
 #include "fix.h"
 #include "runin_contact_sums.h"
-#include "tribo/contact.h"
-#include "tribo/friction_strength.h"
-#include "tribo/wear.h"
+#include "tribo/contact_model.h"
 
 #include <optional>
 #include <string>
@@ -53,9 +51,11 @@ class FixRuninWall : public Fix, public RuninContactSource {
 
   const RuninContactSums &contact_sums() const override { return sums; }
   double counterface_wear_volume() const override { return wall_wear; }
+  void measure_body(int groupbit) override { body_groupbit = groupbit; }
+  bool has_counterface() const override { return true; }
 
  private:
-  enum HistoryIndex { SPRING_X = 0, SPRING_Y, SPRING_Z, SLIP, HISTORY_SIZE };
+  static constexpr int HISTORY_SIZE = runin::tribo::CONTACT_HISTORY_SIZE;
   enum class Control { displacement, force, pressure };
 
   // A constant or an equal-style variable (v_name), evaluated every step.
@@ -65,25 +65,14 @@ class FixRuninWall : public Fix, public RuninContactSource {
     int ivar = -1;
   };
 
-  // Coefficients in SI units (the same set as a pair_coeff line of pair runin/asperity).
-  double e_star, g_star, restitution, mu_s, mu_k, slip_weakening, wear_k, hardness_asperity, hardness_wall;
-  bool thesis_archard;
+  // The contact model: the sub-models chosen by keywords, their coefficients (the same named set as a
+  // pair_coeff line of pair runin/asperity) and the kernel objects built from them (validated).
+  runin::tribo::ContactParameters parameters;
+  runin::tribo::ContactModelChoice choice;
+  runin::tribo::ContactSettings contact_settings;
+  std::optional<runin::tribo::ContactModel> model;
   bool reshape;    // worn geometry (summit drop, flat) of the wear state enters the normal force
-  bool strength_model;        // kinetic limit from adhesion + ploughing (pair: friction strength)
-  double shear_strength;      // tau_s [Pa]
-  double ploughing_factor;    // scales Rabinowicz's mu_p [-]
-  double restick_speed;       // below this tangential speed a non-slipping contact heals to mu_s (0: never)
-  double transfer_fraction;   // part of the removed volume deposited on the other body
-
-  // Kernel objects built once from the coefficients; their constructors validate them.
-  struct ContactModel {
-    runin::tribo::RestitutionDamping damping;
-    runin::tribo::StaticKineticFriction friction;
-    runin::tribo::AdhesionPloughing adhesion_ploughing;
-    runin::tribo::ArchardWear wear;
-    double share_asperity;    // part of a contact's wear volume taken by the asperity
-  };
-  std::optional<ContactModel> model;
+  int body_groupbit;    // group whose contact reaction the sums carry (0: none)
 
   double side_sign;    // +1 side lo (wall below the atoms), -1 side hi (wall above)
   double wall_z, wall_dx, wall_dy, wall_wear, wall_gain;
@@ -104,10 +93,10 @@ class FixRuninWall : public Fix, public RuninContactSource {
   void parse_setting(Setting &s, const char *arg, const char *keyword);
   void resolve(Setting &s, const char *keyword);
   double current(const Setting &s) const;
-  void read_coefficients_file(const std::string &file, const std::string &asperity, const std::string &wall);
   void update_wall_velocity();
   void move_wall();
   void compute_contacts(bool advance);
+  template <int NORMAL, int FRICTION> void compute_contacts(bool advance);
   void guard_timestep();
 };
 

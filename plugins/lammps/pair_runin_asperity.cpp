@@ -33,24 +33,7 @@ namespace {
 
 const char *const kDummyId = "NEIGH_HISTORY_RUNIN_DUMMY";
 const char *const kHistoryId = "NEIGH_HISTORY_RUNIN";
-
-using TypePairModel = PairRuninAsperity::TypePairModel;
-
-TypePairModel make_model(const PairRuninAsperity::Coefficients &c, tribo::ArchardForm form, double transfer)
-{
-  tribo::HertzNormal(c.effective_modulus, 1.0);    // validates E*
-  if (!(c.effective_shear_modulus > 0.0))
-    throw tribo::InvalidCoefficient("G*: effective shear modulus must be > 0");
-  if (!(c.hardness_j > 0.0)) throw tribo::InvalidCoefficient("H: hardness must be > 0");
-  const double softer = std::min(c.hardness_i, c.hardness_j);
-  return TypePairModel{c.effective_modulus,
-                       c.effective_shear_modulus,
-                       tribo::RestitutionDamping(c.restitution),
-                       tribo::StaticKineticFriction(c.mu_static, c.mu_kinetic, c.slip_weakening_distance),
-                       tribo::ArchardWear(c.wear_coefficient, softer, form),
-                       tribo::AdhesionPloughing(c.shear_strength, c.ploughing_factor),
-                       tribo::WearExchangeRule(tribo::wear_share(c.hardness_i, c.hardness_j), transfer)};
-}
+using tribo::SubModelKind;
 
 inline double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline void cross(const double *a, const double *b, double *out)
@@ -63,17 +46,19 @@ inline void cross(const double *a, const double *b, double *out)
 }    // namespace
 
 PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
-    Pair(lmp), dt(0.0), wear_on(true), reshape(true), archard_form(tribo::ArchardForm::plain),
-    friction_model(FrictionModel::coulomb), transfer_fraction(0.0), restick_speed(0.0), sums_requested(false),
-    increment(nullptr), nmax_increment(0), worn_owned(nullptr), worn_ghost(nullptr), nworn_owned(0),
-    nworn_ghost(0), maxrad(nullptr), fix_history(nullptr), fix_wear(nullptr)
+    Pair(lmp), dt(0.0), wear_on(true), reshape(true), from_restart(false), sums_requested(false),
+    body_groupbit(0), increment(nullptr), nmax_increment(0), worn_owned(nullptr), worn_ghost(nullptr),
+    nworn_owned(0), nworn_ghost(0), maxrad(nullptr), fix_history(nullptr), fix_wear(nullptr)
 {
-  single_enable = 0;
+  single_enable = 1;
+  // single(): normal force (fforce * del), then the tangential force on i, the contact radius and overlap
+  single_extra = 5;
+  svector = new double[single_extra];
   no_virial_fdotr_compute = 1;
   finitecutflag = 1;
   restartinfo = 1;
   comm_reverse = 2;    // wear and transfer increments (1 without transfer, set at init)
-  // slip distance is a scalar: do not negate it when LAMMPS swaps i and j
+  // slip distance and largest overlap are scalars: do not negate them when LAMMPS swaps i and j
   nondefault_history_transfer = 1;
   beyond_contact = 0;
 
@@ -93,6 +78,7 @@ PairRuninAsperity::~PairRuninAsperity()
     memory->destroy(cutsq);
     delete[] maxrad;
   }
+  delete[] svector;
   memory->destroy(increment);
   memory->destroy(worn_owned);
   memory->destroy(worn_ghost);
@@ -107,27 +93,28 @@ void PairRuninAsperity::allocate()
     for (int j = i; j <= n; j++) setflag[i][j] = 0;
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   maxrad = new double[n + 1];
-  coeffs.assign((n + 1) * (n + 1), Coefficients());
+  coeffs.assign((n + 1) * (n + 1), tribo::ContactCoefficients());
 }
 
-PairRuninAsperity::Coefficients PairRuninAsperity::Coefficients::unpack(const double *v)
-{
-  Coefficients c;
-  c.effective_modulus = v[0];
-  c.effective_shear_modulus = v[1];
-  c.restitution = v[2];
-  c.mu_static = v[3];
-  c.mu_kinetic = v[4];
-  c.slip_weakening_distance = v[5];
-  c.wear_coefficient = v[6];
-  c.hardness_i = v[7];
-  c.hardness_j = v[8];
-  return c;
-}
-
-PairRuninAsperity::Coefficients &PairRuninAsperity::coeff_of(int itype, int jtype)
+tribo::ContactCoefficients &PairRuninAsperity::coeff_of(int itype, int jtype)
 {
   return coeffs[itype * (atom->ntypes + 1) + jtype];
+}
+
+void PairRuninAsperity::set_sub_model(SubModelKind kind, const std::string &name)
+{
+  int index = 0;
+  try {
+    index = tribo::find_sub_model(kind, name);
+  } catch (const tribo::InvalidCoefficient &e) {
+    error->all(FLERR, "pair_style runin/asperity: {}", e.what());
+  }
+  if (from_restart && index != choice.of(kind))
+    error->all(FLERR,
+               "pair_style runin/asperity: the restart file's {} model is '{}', the input asks for '{}'; "
+               "the restart's coefficients belong to its models",
+               tribo::sub_model_kind_name(kind), tribo::registered_sub_models(kind)[choice.of(kind)].name, name);
+  choice.index[static_cast<int>(kind)] = index;
 }
 
 void PairRuninAsperity::settings(int narg, char **arg)
@@ -137,48 +124,40 @@ void PairRuninAsperity::settings(int narg, char **arg)
     if (iarg + 1 >= narg)
       error->all(FLERR, "pair_style runin/asperity: keyword '{}' needs a value", keyword);
     const std::string value = arg[iarg + 1];
+    auto yes_no = [&](const char *what) {
+      return runin_compat::logical(lmp, value, fmt::format("pair_style runin/asperity: {}", what).c_str());
+    };
     if (keyword == "wear") {
-      if (value == "yes" || value == "on")
-        wear_on = true;
-      else if (value == "no" || value == "off")
-        wear_on = false;
-      else
-        error->all(FLERR, "pair_style runin/asperity: wear must be 'yes' or 'no', got '{}'", value);
+      wear_on = yes_no("wear");
     } else if (keyword == "archard") {
       if (value == "plain")
-        archard_form = tribo::ArchardForm::plain;
+        contact_settings.archard_form = tribo::ArchardForm::plain;
       else if (value == "thesis")
-        archard_form = tribo::ArchardForm::thesis;
+        contact_settings.archard_form = tribo::ArchardForm::thesis;
       else
         error->all(FLERR, "pair_style runin/asperity: archard must be 'plain' or 'thesis', got '{}'", value);
     } else if (keyword == "reshape") {
-      if (value == "yes" || value == "on")
-        reshape = true;
-      else if (value == "no" || value == "off")
-        reshape = false;
-      else
-        error->all(FLERR, "pair_style runin/asperity: reshape must be 'yes' or 'no', got '{}'", value);
+      reshape = yes_no("reshape");
+    } else if (keyword == "normal") {
+      set_sub_model(SubModelKind::normal, value);
     } else if (keyword == "friction") {
-      if (value == "coulomb")
-        friction_model = FrictionModel::coulomb;
-      else if (value == "strength")
-        friction_model = FrictionModel::strength;
-      else
+      if (value != "coulomb" && value != "strength")
         error->all(FLERR, "pair_style runin/asperity: friction must be 'coulomb' or 'strength', got '{}'", value);
+      set_sub_model(SubModelKind::friction, value);
     } else if (keyword == "transfer") {
       const double fraction = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;
       if (!(fraction >= 0.0 && fraction <= 1.0))
         error->all(FLERR, "pair_style runin/asperity: transfer fraction must be in [0, 1], got '{}'", value);
-      transfer_fraction = fraction;
+      contact_settings.transfer_fraction = fraction;
     } else if (keyword == "restick") {
       const double speed = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;
-      if (!(speed >= 0.0))
+      if (!(speed >= 0.0) || !std::isfinite(speed))
         error->all(FLERR, "pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value);
-      restick_speed = speed;
+      contact_settings.restick_speed = speed;
     } else {
       error->all(FLERR,
-                 "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, friction, "
-                 "transfer or restick)",
+                 "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, normal, "
+                 "friction, transfer or restick)",
                  keyword);
     }
   }
@@ -191,46 +170,56 @@ void PairRuninAsperity::attach_wear_state()
   if (!fix_wear) fix_wear = FixRuninWearState::find_or_create(modify);
 }
 
-void PairRuninAsperity::validate(const Coefficients &c, const char *origin)
-{
-  try {
-    make_model(c, archard_form, transfer_fraction);
-  } catch (const tribo::InvalidCoefficient &e) {
-    error->all(FLERR, "pair_coeff runin/asperity ({}): {}", origin, e.what());
-  }
-}
-
 void PairRuninAsperity::coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
   if (narg < 2) error->all(FLERR, "pair_coeff runin/asperity: expected type I and type J");
 
-  Coefficients c;
+  tribo::ContactCoefficients c;
   const char *origin = "explicit";
-  int optional_first = narg;
-  if (narg >= 6 && strcmp(arg[2], "file") == 0) {
-    c = read_coefficients_file(arg[3], arg[4], arg[5]);
-    origin = "file";
-    optional_first = 6;
-  } else if (narg == 10 || (narg > 10 && !utils::is_double(arg[10]))) {
-    const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
-    double v[Coefficients::NPACKED];
-    for (int k = 0; k < 8; k++) {
-      if (!utils::is_double(arg[2 + k]))
-        error->all(FLERR, "pair_coeff runin/asperity: {} must be a number, got '{}'", names[k], arg[2 + k]);
-      v[k] = utils::numeric(FLERR, arg[2 + k], false, lmp);
-    }
-    v[8] = v[7];    // one hardness for both types
-    c = Coefficients::unpack(v);
-    optional_first = 10;
+  if (narg >= 3 && tribo::registered_sub_models(SubModelKind::normal).size() > 0 && !utils::is_double(arg[2]) &&
+      strcmp(arg[2], "file") != 0) {
+    origin = "keywords";
+    c = read_keyword_coefficients(narg, arg);
   } else {
-    error->all(FLERR,
-               "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values) or "
-               "'I J file <path> <material-I> <material-J>', then optional 'tau_s X' 'plough X'; got {} arguments",
-               narg);
+    tribo::ContactParameters p;
+    int optional_first = narg;
+    if (narg >= 6 && strcmp(arg[2], "file") == 0) {
+      p = read_coefficients_file(arg[3], arg[4], arg[5]);
+      origin = "file";
+      optional_first = 6;
+    } else if (narg == 10 || (narg > 10 && !utils::is_double(arg[10]))) {
+      const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
+      double v[8];
+      for (int k = 0; k < 8; k++) {
+        if (!utils::is_double(arg[2 + k]))
+          error->all(FLERR, "pair_coeff runin/asperity: {} must be a number, got '{}'", names[k], arg[2 + k]);
+        v[k] = utils::numeric(FLERR, arg[2 + k], false, lmp);
+      }
+      p.effective_modulus = v[0];
+      p.effective_shear_modulus = v[1];
+      p.restitution = v[2];
+      p.mu_static = v[3];
+      p.mu_kinetic = v[4];
+      p.slip_weakening_distance = v[5];
+      p.wear_coefficient = v[6];
+      p.hardness_i = p.hardness_j = v[7];    // one hardness for both types
+      optional_first = 10;
+    } else {
+      error->all(FLERR,
+                 "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values), "
+                 "'I J file <path> <material-I> <material-J>', then optional 'tau_s X' 'plough X', or "
+                 "'I J normal NAME values ... damping ... tangential ... friction ... wear ...'; got {} arguments",
+                 narg);
+    }
+    read_optional_coefficients(p, narg, arg, optional_first);
+    c = tribo::contact_coefficients(choice, p);
   }
-  read_optional_coefficients(c, narg, arg, optional_first);
-  validate(c, origin);
+  try {
+    tribo::ContactModel(choice, c, contact_settings);    // validates every sub-model's coefficients
+  } catch (const tribo::InvalidCoefficient &e) {
+    error->all(FLERR, "pair_coeff runin/asperity ({}): {}", origin, e.what());
+  }
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -239,16 +228,64 @@ void PairRuninAsperity::coeff(int narg, char **arg)
   for (int i = ilo; i <= ihi; i++)
     for (int j = std::max(jlo, i); j <= jhi; j++) {
       coeff_of(i, j) = c;
-      Coefficients swapped = c;
-      std::swap(swapped.hardness_i, swapped.hardness_j);
-      coeff_of(j, i) = swapped;
+      coeff_of(j, i) = tribo::swap_bodies(choice, c);
       setflag[i][j] = 1;
       count++;
     }
   if (count == 0) error->all(FLERR, "pair_coeff runin/asperity: no type pair in range {} {}", arg[0], arg[1]);
 }
 
-void PairRuninAsperity::read_optional_coefficients(Coefficients &c, int narg, char **arg, int first)
+// GRANULAR-style blocks, one per kind: 'normal hertz E*' 'damping restitution e' 'tangential mindlin G*'
+// 'friction coulomb mu_s mu_k d_c' 'wear archard k H_I H_J'. Each block names the sub-model the pair_style
+// chose for its kind; its coefficient count comes from the registry.
+tribo::ContactCoefficients PairRuninAsperity::read_keyword_coefficients(int narg, char **arg)
+{
+  tribo::ContactCoefficients c;
+  std::array<bool, tribo::kSubModelKinds> given{};
+  int iarg = 2;
+  while (iarg < narg) {
+    int kind_index = -1;
+    for (int k = 0; k < tribo::kSubModelKinds; k++)
+      if (strcmp(arg[iarg], tribo::sub_model_kind_name(static_cast<SubModelKind>(k))) == 0) kind_index = k;
+    if (kind_index < 0)
+      error->all(FLERR,
+                 "pair_coeff runin/asperity: unknown keyword '{}' (expected normal, damping, tangential, friction "
+                 "or wear)",
+                 arg[iarg]);
+    const auto kind = static_cast<SubModelKind>(kind_index);
+    if (iarg + 1 >= narg) error->all(FLERR, "pair_coeff runin/asperity: {} needs a model name", arg[iarg]);
+    int model = 0;
+    try {
+      model = tribo::find_sub_model(kind, arg[iarg + 1]);
+    } catch (const tribo::InvalidCoefficient &e) {
+      error->all(FLERR, "pair_coeff runin/asperity: {}", e.what());
+    }
+    if (model != choice.of(kind))
+      error->all(FLERR, "pair_coeff runin/asperity: {} model '{}' differs from pair_style's '{}'", arg[iarg],
+                 arg[iarg + 1], tribo::registered_sub_models(kind)[choice.of(kind)].name);
+    const tribo::SubModelInfo &info = tribo::registered_sub_models(kind)[model];
+    const int n = info.coefficient_count();
+    std::string names;
+    for (const char *name : info.coefficient_names) names += fmt::format("{}{}", names.empty() ? "" : " ", name);
+    int got = 0;
+    while (iarg + 2 + got < narg && utils::is_double(arg[iarg + 2 + got])) got++;
+    if (got != n)
+      error->all(FLERR, "pair_coeff runin/asperity: {} model '{}' takes {} coefficient(s) ({}), got {}", arg[iarg],
+                 info.name, n, names, got);
+    for (int k = 0; k < n; k++) c.values[kind_index].push_back(utils::numeric(FLERR, arg[iarg + 2 + k], false, lmp));
+    given[kind_index] = true;
+    iarg += 2 + n;
+  }
+  for (int k = 0; k < tribo::kSubModelKinds; k++)
+    if (!given[k])
+      error->all(FLERR, "pair_coeff runin/asperity: the {} block is missing (e.g. '{} {} ...')",
+                 tribo::sub_model_kind_name(static_cast<SubModelKind>(k)),
+                 tribo::sub_model_kind_name(static_cast<SubModelKind>(k)),
+                 tribo::registered_sub_models(static_cast<SubModelKind>(k))[choice.index[k]].name);
+  return c;
+}
+
+void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, int narg, char **arg, int first)
 {
   for (int iarg = first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
@@ -258,26 +295,18 @@ void PairRuninAsperity::read_optional_coefficients(Coefficients &c, int narg, ch
       error->all(FLERR, "pair_coeff runin/asperity: {} needs a number, got '{}'", keyword,
                  iarg + 1 < narg ? arg[iarg + 1] : "");
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    (keyword == "tau_s" ? c.shear_strength : c.ploughing_factor) = value;
+    (keyword == "tau_s" ? p.shear_strength : p.ploughing_factor) = value;
   }
 }
 
 // Coefficient file (potentials/*.runin); format and checks in runin_material_file.h.
-PairRuninAsperity::Coefficients PairRuninAsperity::read_coefficients_file(
-    const std::string &file, const std::string &material_i, const std::string &material_j)
+tribo::ContactParameters PairRuninAsperity::read_coefficients_file(const std::string &file,
+                                                                  const std::string &material_i,
+                                                                  const std::string &material_j)
 {
   const RuninMaterialPair entry =
       read_runin_material_pair(lmp, file, material_i, material_j, "pair_coeff runin/asperity");
-  const double values[Coefficients::NPACKED] = {tribo::effective_modulus(entry.a, entry.b),
-                                                tribo::effective_shear_modulus(entry.a, entry.b),
-                                                entry.restitution,
-                                                entry.mu_static,
-                                                entry.mu_kinetic,
-                                                entry.slip_weakening_distance,
-                                                entry.wear_coefficient,
-                                                entry.a.hardness,
-                                                entry.b.hardness};
-  return Coefficients::unpack(values);
+  return contact_parameters(entry);
 }
 
 void PairRuninAsperity::init_style()
@@ -307,7 +336,7 @@ void PairRuninAsperity::init_style()
   models.assign(coeffs.size(), std::nullopt);
 
   // transferred volume is communicated only with transfer > 0; reallocate at the first step
-  comm_reverse = transfer_fraction > 0.0 ? 2 : 1;
+  comm_reverse = contact_settings.transfer_fraction > 0.0 ? 2 : 1;
   memory->destroy(increment);
   memory->destroy(worn_owned);
   memory->destroy(worn_ghost);
@@ -323,20 +352,37 @@ void PairRuninAsperity::init_style()
 
   // --- timestep guard hook (runin_timestep_guard.h): WARNING/ERROR on dt vs the Rayleigh time ---
   runin_lammps::guard_timestep(lmp, "pair runin/asperity", [this](int i, int j) {
-    return setflag[i][j] ? runin_lammps::PairModuli{coeff_of(i, j).effective_modulus,
-                                                    coeff_of(i, j).effective_shear_modulus}
-                         : runin_lammps::PairModuli{};
+    if (!setflag[i][j]) return runin_lammps::PairModuli{};
+    const tribo::ContactModel model(choice, coeff_of(i, j), contact_settings);
+    return runin_lammps::PairModuli{model.effective_modulus(), model.effective_shear_modulus()};
   });
   // --- end timestep guard hook ---
 }
 
 double PairRuninAsperity::init_one(int i, int j)
 {
-  if (!setflag[i][j])
-    error->all(FLERR, "pair runin/asperity: coefficients for types {} {} are not set (pair_coeff)", i, j);
+  if (!setflag[i][j]) {
+    // an unset I,J pair is mixed from I,I and J,J (sub-model by sub-model: exact for E* and G*, the
+    // geometric mean of LAMMPS GRANULAR for interface values, each body keeping its own hardness)
+    if (!setflag[i][i] || !setflag[j][j])
+      error->all(FLERR,
+                 "pair runin/asperity: coefficients for types {} {} are not set and cannot be mixed (pair_coeff "
+                 "{} {} and {} {} are needed)",
+                 i, j, i, i, j, j);
+    try {
+      coeff_of(i, j) = tribo::mix_coefficients(choice, coeff_of(i, i), coeff_of(j, j));
+      coeff_of(j, i) = tribo::swap_bodies(choice, coeff_of(i, j));
+    } catch (const tribo::InvalidCoefficient &e) {
+      error->all(FLERR, "pair runin/asperity: mixing types {} {}: {}", i, j, e.what());
+    }
+  }
   const int n = atom->ntypes + 1;
-  models[i * n + j].emplace(make_model(coeff_of(i, j), archard_form, transfer_fraction));
-  models[j * n + i].emplace(make_model(coeff_of(j, i), archard_form, transfer_fraction));
+  try {
+    models[i * n + j].emplace(choice, coeff_of(i, j), contact_settings);
+    models[j * n + i].emplace(choice, coeff_of(j, i), contact_settings);
+  } catch (const tribo::InvalidCoefficient &e) {
+    error->all(FLERR, "pair runin/asperity: types {} {}: {}", i, j, e.what());
+  }
   return maxrad[i] + maxrad[j];
 }
 
@@ -344,8 +390,10 @@ template <int... Index>
 std::array<PairRuninAsperity::EvalFunction, sizeof...(Index)> PairRuninAsperity::eval_table(
     std::integer_sequence<int, Index...>)
 {
-  return {{&PairRuninAsperity::eval<(Index >> 4) & 1, (Index >> 3) & 1, (Index >> 2) & 1, (Index >> 1) & 1,
-                                    Index & 1>...}};
+  constexpr int NFRICTION = std::tuple_size_v<tribo::FrictionModels>;
+  // Index = ((normal * NFRICTION + friction) << NFLAGS) | flags
+  return {{&PairRuninAsperity::eval<(Index >> NFLAGS) / NFRICTION, (Index >> NFLAGS) % NFRICTION, (Index >> 3) & 1,
+                                    (Index >> 2) & 1, (Index >> 1) & 1, Index & 1>...}};
 }
 
 void PairRuninAsperity::grow_increments()
@@ -375,10 +423,12 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   if (worn_geometry) fix_wear->forward_geometry();
   if (track_wear) grow_increments();
 
-  static const auto table = eval_table(std::make_integer_sequence<int, 32>());
-  const int index = (track_wear ? 16 : 0) | (worn_geometry ? 8 : 0) |
-                    (friction_model == FrictionModel::strength ? 4 : 0) | (sums_requested ? 2 : 0) |
-                    (evflag ? 1 : 0);
+  constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
+  static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
+  const int models_index = choice.of(tribo::SubModelKind::normal) * std::tuple_size_v<tribo::FrictionModels> +
+                           choice.of(tribo::SubModelKind::friction);
+  const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
+                    (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
   (this->*table[index])(eflag);
 
   if (track_wear) {
@@ -401,10 +451,39 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   }
 }
 
-// One force evaluation. WEAR: advance the wear increments; RESHAPE: worn geometry enters the contact;
-// STRENGTH: friction strength (adhesion + ploughing); SUMS: fill the contact sums; EVFLAG: tally energy
+// The geometry of the contact of i and j (centre distance 1/rinv, overlap from the worn summits).
+tribo::ContactGeometry PairRuninAsperity::contact_geometry(int i, int j, double overlap, double rinv,
+                                                           const double *del, double flat) const
+{
+  double **v = atom->v, **omega = atom->omega;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  tribo::ContactGeometry g;
+  const double radi = radius[i], radj = radius[j];
+  const double radsum = radi + radj;
+  g.overlap = overlap;
+  g.flat_radius = flat;
+  for (int k = 0; k < 3; k++) g.normal[k] = del[k] * rinv;
+  // m* = m_i m_j / (m_i + m_j) and R* = r_i r_j / (r_i + r_j) from one division
+  const double mass_sum = rmass[i] + rmass[j];
+  const double inv_sums = 1.0 / (mass_sum * radsum);
+  g.effective_mass = rmass[i] * rmass[j] * radsum * inv_sums;
+  g.effective_radius = radi * radj * mass_sum * inv_sums;
+  // relative velocity of i w.r.t. j at the contact point
+  const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+  g.normal_velocity = dot(vr, g.normal);
+  const double spin[3] = {radi * omega[i][0] + radj * omega[j][0], radi * omega[i][1] + radj * omega[j][1],
+                          radi * omega[i][2] + radj * omega[j][2]};
+  double spin_velocity[3];
+  cross(g.normal, spin, spin_velocity);
+  for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * g.normal[k] + spin_velocity[k];
+  return g;
+}
+
+// One force evaluation. NORMAL, FRICTION: the sub-models (registry indices); WEAR: advance the wear
+// increments; RESHAPE: worn geometry enters the contact; SUMS: fill the contact sums; EVFLAG: tally energy
 // and virial.
-template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRuninAsperity::eval(int eflag)
+template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG>
+void PairRuninAsperity::eval(int eflag)
 {
   const bool advance = update->setupflag == 0;
   // the wear state is one contiguous block (memory->grow), NCOLUMNS per atom: index it without the row pointers
@@ -412,18 +491,18 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
   const double *state = state_rows && atom->nmax > 0 ? state_rows[0] : nullptr;
   constexpr int NCOL = FixRuninWearState::NCOLUMNS;
   constexpr int DEPTH = FixRuninWearState::WEAR_DEPTH, FLAT = FixRuninWearState::FLAT_RADIUS;
-  double **x = atom->x, **v = atom->v, **f = atom->f;
-  double **omega = atom->omega, **torque = atom->torque;
-  const double *radius = atom->radius, *rmass = atom->rmass;
-  const int *type = atom->type;
+  double **x = atom->x, **f = atom->f;
+  double **torque = atom->torque;
+  const double *radius = atom->radius;
+  const int *type = atom->type, *mask = atom->mask;
+  const int body_bit = body_groupbit;
   const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const int ntypes1 = atom->ntypes + 1;
   const double step_dt = dt;    // a local: the force stores could alias the member
   const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
-  const double restick = restick_speed;
-  const std::optional<TypePairModel> *const model_table = models.data();
+  const std::optional<tribo::ContactModel> *const model_table = models.data();
   RuninContactSums local_sums;
   // NaN and inf propagate through the sum of all pair forces: one add per contact replaces a pass over
   // every atom's force (FixRuninFiniteCheck skips its pass for this pair)
@@ -478,59 +557,20 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
     double *history = touching[c].history;
     const int itype = type[i];
     const double radi = radius[i], radj = radius[j];
-    const double radsum = radi + radj;
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
     const double rsq = dot(del, del);
     const double reach = summit_reach(radi, radj, wear_depth(i), wear_depth(j));
     const int jtype = type[j];
-    const TypePairModel &model = *model_table[itype * ntypes1 + jtype];
+    const tribo::ContactModel &model = *model_table[itype * ntypes1 + jtype];
     const double r = std::sqrt(rsq);
     const double rinv = 1.0 / r;
-    const double overlap = reach - r;
-    const double normal[3] = {del[0] * rinv, del[1] * rinv, del[2] * rinv};
-    // m* = m_i m_j / (m_i + m_j) and R* = r_i r_j / (r_i + r_j) from one division
-    const double mass_sum = rmass[i] + rmass[j], radius_product = radi * radj;
-    const double inv_sums = 1.0 / (mass_sum * radsum);
-    const double meff = rmass[i] * rmass[j] * radsum * inv_sums;
-    const double r_eff = radius_product * mass_sum * inv_sums;
-
-    // relative velocity of i w.r.t. j at the contact point
-    const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-    const double vn = dot(vr, normal);
-    const double spin[3] = {radi * omega[i][0] + radj * omega[j][0], radi * omega[i][1] + radj * omega[j][1],
-                            radi * omega[i][2] + radj * omega[j][2]};
-    double spin_velocity[3];
-    cross(normal, spin, spin_velocity);
-    double vt[3];
-    for (int k = 0; k < 3; k++) vt[k] = vr[k] - vn * normal[k] + spin_velocity[k];
-
     const double flat =
         RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
-    const tribo::FlatHertzContact contact =
-        tribo::flat_hertz_contact(model.effective_modulus, r_eff, flat, overlap);
-    double fn = contact.force + model.damping.force(contact.stiffness, meff, vn);
-    if (fn < 0.0) fn = 0.0;    // damping must not glue asperities together
-
-    const double kt = tribo::mindlin_stiffness(model.effective_shear_modulus, contact.contact_radius);
-    double &slip = history[SLIP];
-    tribo::FrictionStrengthParts strength;
-    double limit;
-    if (STRENGTH) {
-      // the micro strength sets the kinetic level; mu_s - mu_k stays the static excess over d_c
-      if (fn > 0.0) {
-        strength = model.strength.strength(fn, contact.contact_radius, overlap);
-        limit = model.friction.limit_force(slip, fn, strength.total());
-      } else {
-        limit = 0.0;
-      }
-    } else {
-      limit = model.friction.coefficient(slip) * fn;
-    }
-    const tribo::TangentialUpdate tangential =
-        tribo::mindlin_spring(kt, limit, normal, vt, step_dt, &history[SPRING_X], slip, advance);
-    if (advance && tribo::resticks_squared(tangential, dot(vt, vt), restick))
-      slip = 0.0;    // re-stuck: the contact heals to its static limit
-    const double *ft = tangential.force;
+    const tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
+    const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
+    const double fn = contact.normal_force;
+    const double *ft = contact.tangential.force;
+    const double *normal = g.normal;
 
     const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
     force_sum += fpair[0] + fpair[1] + fpair[2];
@@ -555,24 +595,27 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
       local_sums.normal_force += weight * fn;
       for (int k = 0; k < 3; k++) local_sums.tangential_force[k] += orient * ft[k];
       local_sums.contacts += weight;
-      if (!tangential.slipping) local_sums.sticking_contacts += weight;
-      local_sums.contact_area += weight * MY_PI * contact.contact_radius * contact.contact_radius;
-      local_sums.adhesion_force += weight * strength.adhesion;
-      local_sums.ploughing_force += weight * strength.ploughing;
-      local_sums.frictional_power += weight * tangential.force_magnitude * tangential.slip_increment * inv_dt;
+      if (!contact.tangential.slipping) local_sums.sticking_contacts += weight;
+      const double a = contact.normal.contact_radius;
+      local_sums.contact_area += weight * MY_PI * a * a;
+      local_sums.adhesion_force += weight * contact.strength.adhesion;
+      local_sums.ploughing_force += weight * contact.strength.ploughing;
+      local_sums.frictional_power +=
+          weight * contact.tangential.force_magnitude * contact.tangential.slip_increment * inv_dt;
+      // the reaction on the measured body: contacts that cross its boundary (+ on i, - on j)
+      const int side = ((mask[i] & body_bit) != 0) - ((mask[j] & body_bit) != 0);
+      for (int k = 0; k < 3; k++) local_sums.body_force[k] += side * weight * fpair[k];
     }
 
-    if (WEAR && tangential.slip_increment > 0.0) {
-      const double worn = model.wear.volume(fn, tangential.slip_increment);
-      const tribo::WearExchange exchange = model.exchange.split(worn);
+    if (WEAR && contact.tangential.slip_increment > 0.0) {
+      const tribo::WearExchange &exchange = contact.wear;
       add_wear(i, exchange.lost_a, exchange.gained_a, nlocal);
       if (j_here) add_wear(j, exchange.lost_b, exchange.gained_b, nlocal);
-      if (SUMS) local_sums.wear_volume += weight * worn;
+      if (SUMS) local_sums.wear_volume += weight * contact.worn_volume;
     }
 
     if (EVFLAG) {
-      const double energy =
-          eflag ? tribo::FlatHertzNormal(model.effective_modulus, r_eff, flat).elastic_energy(overlap) : 0.0;
+      const double energy = eflag ? model.elastic_energy<NORMAL>(g, history) : 0.0;
       ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
     }
   }
@@ -583,8 +626,57 @@ template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void PairRu
 
 void PairRuninAsperity::transfer_history(double *source, double *target)
 {
-  for (int k = SPRING_X; k <= SPRING_Z; k++) target[k] = -source[k];
-  target[SLIP] = source[SLIP];
+  for (int k = tribo::HISTORY_SPRING_X; k <= tribo::HISTORY_SPRING_Z; k++) target[k] = -source[k];
+  for (int k = tribo::HISTORY_SLIP; k < HISTORY_SIZE; k++) target[k] = source[k];
+}
+
+// The force of the contact of i and j as the force loop computes it, without changing its history: for
+// compute pair/local. fforce * del is the normal force on i; svector: tangential force on i (3), contact
+// radius, overlap.
+double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq, double, double, double &fforce)
+{
+  fforce = 0.0;
+  for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
+  if (!models[itype * (atom->ntypes + 1) + jtype])
+    error->one(FLERR, "pair runin/asperity: single() before the pair was initialised");
+  double **state = fix_wear && reshape ? fix_wear->state() : nullptr;
+  const double depth_i = state ? state[i][FixRuninWearState::WEAR_DEPTH] : 0.0;
+  const double depth_j = state ? state[j][FixRuninWearState::WEAR_DEPTH] : 0.0;
+  const double flat =
+      state ? tribo::combined_flat_radius(state[i][FixRuninWearState::FLAT_RADIUS],
+                                          state[j][FixRuninWearState::FLAT_RADIUS])
+            : 0.0;
+  const double reach = atom->radius[i] + atom->radius[j] - (depth_i + depth_j);
+  if (!(reach > 0.0) || rsq >= reach * reach) return 0.0;
+
+  // this contact's history in i's neighbor list (a copy: single() must not advance it)
+  if (!fix_history || !fix_history->firstvalue)
+    error->one(FLERR, "pair runin/asperity: single() needs the contact history (run setup first)");
+  double history[HISTORY_SIZE] = {0.0};
+  const int jnum = list->numneigh[i];
+  const int *jlist = list->firstneigh[i];
+  for (int jj = 0; jj < jnum; jj++)
+    if ((jlist[jj] & NEIGHMASK) == j) {
+      std::copy_n(&fix_history->firstvalue[i][HISTORY_SIZE * jj], HISTORY_SIZE, history);
+      break;
+    }
+
+  double **x = atom->x;
+  const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+  const double r = std::sqrt(rsq);
+  const tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, flat);
+  const tribo::ContactModel &model = *models[itype * (atom->ntypes + 1) + jtype];
+  double energy = 0.0;
+  tribo::ContactResult contact;
+  tribo::with_sub_models(choice, [&](auto normal, auto friction) {
+    contact = model.evaluate<decltype(normal)::value, decltype(friction)::value, 0>(g, history, dt, false);
+    energy = model.elastic_energy<decltype(normal)::value>(g, history);
+  });
+  fforce = contact.normal_force / r;
+  for (int k = 0; k < 3; k++) svector[k] = contact.tangential.force[k];
+  svector[3] = contact.normal.contact_radius;
+  svector[4] = g.overlap;
+  return energy;
 }
 
 int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
@@ -607,13 +699,19 @@ void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
   }
 }
 
+// Restart: the settings and the sub-model choice, then per set type pair a self-describing record (sub-model
+// names, coefficient counts and values), so a file written with other sub-models is recognised on reading.
 void PairRuninAsperity::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      if (setflag[i][j]) fwrite(&coeff_of(i, j), sizeof(Coefficients), 1, fp);
+      if (!setflag[i][j]) continue;
+      const std::vector<double> record = tribo::serialize(choice, coeff_of(i, j));
+      const int size = static_cast<int>(record.size());
+      fwrite(&size, sizeof(int), 1, fp);
+      fwrite(record.data(), sizeof(double), size, fp);
     }
 }
 
@@ -626,40 +724,61 @@ void PairRuninAsperity::read_restart(FILE *fp)
       if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
-      Coefficients &c = coeff_of(i, j);
-      if (comm->me == 0) utils::sfread(FLERR, &c, sizeof(Coefficients), 1, fp, nullptr, error);
-      MPI_Bcast(&c, sizeof(Coefficients), MPI_BYTE, 0, world);
-      Coefficients swapped = c;
-      std::swap(swapped.hardness_i, swapped.hardness_j);
-      coeff_of(j, i) = swapped;
+      int size = 0;
+      if (comm->me == 0) utils::sfread(FLERR, &size, sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&size, 1, MPI_INT, 0, world);
+      if (size <= 0 || size > 4096)
+        error->all(FLERR, "pair runin/asperity: restart file: damaged coefficient record for types {} {}", i, j);
+      std::vector<double> record(size);
+      if (comm->me == 0) utils::sfread(FLERR, record.data(), sizeof(double), size, fp, nullptr, error);
+      MPI_Bcast(record.data(), size, MPI_DOUBLE, 0, world);
+      try {
+        const auto stored = tribo::deserialize(record.data(), size);
+        if (!(stored.first == choice))
+          error->all(FLERR, "pair runin/asperity: restart file: types {} {}: {}", i, j,
+                     tribo::describe_difference(stored.first, choice));
+        coeff_of(i, j) = stored.second;
+        coeff_of(j, i) = tribo::swap_bodies(choice, stored.second);
+      } catch (const tribo::InvalidCoefficient &e) {
+        error->all(FLERR, "pair runin/asperity: restart file: types {} {}: {}", i, j, e.what());
+      }
     }
+  from_restart = true;
 }
 
 void PairRuninAsperity::write_restart_settings(FILE *fp)
 {
-  const int flags[4] = {wear_on ? 1 : 0, archard_form == tribo::ArchardForm::thesis ? 1 : 0, reshape ? 1 : 0,
-                        friction_model == FrictionModel::strength ? 1 : 0};
-  fwrite(flags, sizeof(int), 4, fp);
-  const double values[2] = {transfer_fraction, restick_speed};
+  const int flags[3] = {wear_on ? 1 : 0, contact_settings.archard_form == tribo::ArchardForm::thesis ? 1 : 0,
+                        reshape ? 1 : 0};
+  fwrite(flags, sizeof(int), 3, fp);
+  fwrite(choice.index.data(), sizeof(int), tribo::kSubModelKinds, fp);
+  const double values[2] = {contact_settings.transfer_fraction, contact_settings.restick_speed};
   fwrite(values, sizeof(double), 2, fp);
 }
 
 void PairRuninAsperity::read_restart_settings(FILE *fp)
 {
-  int flags[4] = {1, 0, 1, 0};
+  int flags[3] = {1, 0, 1};
   double values[2] = {0.0, 0.0};
   if (comm->me == 0) {
-    utils::sfread(FLERR, flags, sizeof(int), 4, fp, nullptr, error);
+    utils::sfread(FLERR, flags, sizeof(int), 3, fp, nullptr, error);
+    utils::sfread(FLERR, choice.index.data(), sizeof(int), tribo::kSubModelKinds, fp, nullptr, error);
     utils::sfread(FLERR, values, sizeof(double), 2, fp, nullptr, error);
   }
-  MPI_Bcast(flags, 4, MPI_INT, 0, world);
+  MPI_Bcast(flags, 3, MPI_INT, 0, world);
+  MPI_Bcast(choice.index.data(), tribo::kSubModelKinds, MPI_INT, 0, world);
   MPI_Bcast(values, 2, MPI_DOUBLE, 0, world);
+  for (int k = 0; k < tribo::kSubModelKinds; k++) {
+    const int n = static_cast<int>(tribo::registered_sub_models(static_cast<SubModelKind>(k)).size());
+    if (choice.index[k] < 0 || choice.index[k] >= n)
+      error->all(FLERR, "pair runin/asperity: restart file: unknown {} model (written by another version?)",
+                 tribo::sub_model_kind_name(static_cast<SubModelKind>(k)));
+  }
   wear_on = flags[0] == 1;
-  archard_form = flags[1] == 1 ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain;
+  contact_settings.archard_form = flags[1] == 1 ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain;
   reshape = flags[2] == 1;
-  friction_model = flags[3] == 1 ? FrictionModel::strength : FrictionModel::coulomb;
-  transfer_fraction = values[0];
-  restick_speed = values[1];
+  contact_settings.transfer_fraction = values[0];
+  contact_settings.restick_speed = values[1];
 }
 
 void PairRuninAsperity::reset_dt()

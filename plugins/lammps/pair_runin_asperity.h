@@ -15,9 +15,7 @@ PairStyle(runin/asperity,PairRuninAsperity);
 #include "pair.h"
 #include "runin_contact_sums.h"
 #include "runin_timestep_guard.h"
-#include "tribo/contact.h"
-#include "tribo/friction_strength.h"
-#include "tribo/wear.h"
+#include "tribo/contact_model.h"
 
 #include <array>
 #include <optional>
@@ -29,35 +27,6 @@ namespace LAMMPS_NS {
 
 class PairRuninAsperity : public Pair, public RuninContactSource, public runin_lammps::FiniteForcePair {
  public:
-  // Per type-pair coefficients (SI units), validated where they are parsed.
-  struct Coefficients {
-    double effective_modulus = 0.0;        // E* [Pa]
-    double effective_shear_modulus = 0.0;  // G* [Pa]
-    double restitution = 1.0;              // e [-]
-    double mu_static = 0.0, mu_kinetic = 0.0, slip_weakening_distance = 0.0;
-    double wear_coefficient = 0.0;         // k [-]
-    double hardness_i = 0.0, hardness_j = 0.0;  // H of the type-I and type-J asperity [Pa]
-    // optional (trailing pair_coeff keywords), used with 'friction strength'
-    double shear_strength = 0.0;           // tau_s [Pa]
-    double ploughing_factor = 1.0;         // scales Rabinowicz's mu_p [-]
-
-    // From {E*, G*, e, mu_s, mu_k, d_c, k, H_I, H_J}, the order of the explicit pair_coeff form.
-    static constexpr int NPACKED = 9;
-    static Coefficients unpack(const double *values);
-  };
-
-  // Kernel objects for one type pair, rebuilt (validated) from the coefficients at every init; all the
-  // force loop reads for a contact, in one place.
-  struct TypePairModel {
-    double effective_modulus;          // E* [Pa]
-    double effective_shear_modulus;    // G* [Pa]
-    runin::tribo::RestitutionDamping damping;
-    runin::tribo::StaticKineticFriction friction;
-    runin::tribo::ArchardWear wear;
-    runin::tribo::AdhesionPloughing strength;
-    runin::tribo::WearExchangeRule exchange;    // type-I atom's share of the wear volume, transfer fraction
-  };
-
   PairRuninAsperity(class LAMMPS *);
   ~PairRuninAsperity() override;
   void compute(int, int) override;
@@ -65,6 +34,7 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
+  double single(int, int, int, int, double, double, double, double &) override;
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
   void write_restart_settings(FILE *) override;
@@ -79,24 +49,24 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
 
   // Sums over this rank's contacts in the last force evaluation (read by compute runin/friction).
   const RuninContactSums &contact_sums() const override { return sums; }
+  void measure_body(int groupbit) override { body_groupbit = groupbit; }
   class FixRuninWearState *wear_state() const { return fix_wear; }
   bool wear_enabled() const { return wear_on; }
 
  protected:
-  enum HistoryIndex { SPRING_X = 0, SPRING_Y, SPRING_Z, SLIP, HISTORY_SIZE };
-  enum class FrictionModel { coulomb, strength };
+  static constexpr int HISTORY_SIZE = runin::tribo::CONTACT_HISTORY_SIZE;
 
   double dt;
   bool wear_on;
   bool reshape;                    // worn geometry (summit drop, flat) enters the normal force
-  runin::tribo::ArchardForm archard_form;
-  FrictionModel friction_model;
-  double transfer_fraction;        // part of the removed volume deposited on the counter-asperity
-  double restick_speed;            // below this tangential speed a contact heals to mu_s (0: never)
-  std::vector<Coefficients> coeffs;    // (ntypes+1)^2; [J][I] has the hardnesses swapped
-  std::vector<std::optional<TypePairModel>> models;    // same layout, built in init_one
+  runin::tribo::ContactSettings contact_settings;    // Archard form, transfer, re-stick
+  runin::tribo::ContactModelChoice choice;           // the sub-models, one per kind (pair_style keywords)
+  bool from_restart;               // coefficients came from a restart file (pair_style must not change models)
+  std::vector<runin::tribo::ContactCoefficients> coeffs;    // (ntypes+1)^2; [J][I] is seen from type J
+  std::vector<std::optional<runin::tribo::ContactModel>> models;    // same layout, built in init_one
   RuninContactSums sums;
   bool sums_requested;             // a compute runin/friction exists (set at init): fill 'sums'
+  int body_groupbit;               // group whose contact reaction the sums carry (0: none)
 
   // Wear and transfer increments of one step, owned + ghost, reverse-communicated: {lost, gained} per atom
   // side by side (one cache line per contact side). All zero between steps: an atom is listed when its
@@ -133,16 +103,21 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   void allocate();
   void attach_wear_state();
   void grow_increments();
-  // The force loop, specialised at compile time on the features in use (OPT-package style).
-  template <int WEAR, int RESHAPE, int STRENGTH, int SUMS, int EVFLAG> void eval(int eflag);
+  // The force loop, specialised at compile time on the sub-models and features in use (OPT-package style).
+  template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG> void eval(int eflag);
   using EvalFunction = void (PairRuninAsperity::*)(int);
+  static constexpr int NFLAGS = 4;    // WEAR, RESHAPE, SUMS, EVFLAG
   template <int... Index>
   static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
-  Coefficients &coeff_of(int itype, int jtype);
-  Coefficients read_coefficients_file(const std::string &file, const std::string &material_i,
-                                      const std::string &material_j);
-  void validate(const Coefficients &c, const char *origin);
-  void read_optional_coefficients(Coefficients &c, int narg, char **arg, int first);
+  // One contact's geometry from positions, velocities, radii, masses and the worn state (eval and single).
+  runin::tribo::ContactGeometry contact_geometry(int i, int j, double overlap, double rinv, const double *del,
+                                                 double flat) const;
+  runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);
+  runin::tribo::ContactParameters read_coefficients_file(const std::string &file, const std::string &material_i,
+                                                         const std::string &material_j);
+  runin::tribo::ContactCoefficients read_keyword_coefficients(int narg, char **arg);
+  void read_optional_coefficients(runin::tribo::ContactParameters &p, int narg, char **arg, int first);
+  void set_sub_model(runin::tribo::SubModelKind kind, const std::string &name);
 };
 
 }    // namespace LAMMPS_NS

@@ -3,6 +3,8 @@
 #pragma once
 
 #include "comm.h"
+#include "error.h"
+#include "utils.h"
 #include "neighbor.h"
 #include "pair.h"
 
@@ -40,6 +42,20 @@ inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
   comm->forward_comm(fix);
 #else
   comm->forward_comm_fix(fix);
+#endif
+}
+
+// utils::logical (LAMMPS 2022 on): yes/no/on/off/true/false/1/0; anything else is an ERROR naming it.
+inline bool logical(LAMMPS_NS::LAMMPS *lmp, const std::string &value, const char *what)
+{
+#if RUNIN_LAMMPS_VERSION >= 20220324
+  (void) what;
+  return LAMMPS_NS::utils::logical(FLERR, value, false, lmp) == 1;
+#else
+  if (value == "yes" || value == "on" || value == "true" || value == "1") return true;
+  if (value == "no" || value == "off" || value == "false" || value == "0") return false;
+  lmp->error->all(FLERR, "{} must be 'yes' or 'no', got '{}'", what, value);
+  return false;
 #endif
 }
 

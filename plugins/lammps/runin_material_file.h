@@ -5,6 +5,7 @@
 #pragma once
 
 #include "tribo/contact.h"
+#include "tribo/contact_model.h"
 
 #include <string>
 
@@ -22,5 +23,12 @@ struct RuninMaterialPair {
 // unknown material or pair, malformed line, impossible value) is one ERROR prefixed by 'style'.
 RuninMaterialPair read_runin_material_pair(LAMMPS *lmp, const std::string &file, const std::string &material_a,
                                            const std::string &material_b, const std::string &style);
+
+// The contact parameters of that pair (E*, G* from the two materials, their hardnesses, the pair entry).
+inline runin::tribo::ContactParameters contact_parameters(const RuninMaterialPair &entry)
+{
+  return runin::tribo::contact_parameters(entry.a, entry.b, entry.restitution, entry.mu_static, entry.mu_kinetic,
+                                          entry.slip_weakening_distance, entry.wear_coefficient);
+}
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,404 @@
+// One asperity contact model for every host (pair runin/asperity, fix runin/wall, later hosts), after
+// LAMMPS's GranularModel: the host supplies the geometry of a contact and its history; the model returns
+// the normal and tangential forces, updates the history, and gives the friction-strength parts and the
+// worn volumes of both bodies. Hosts keep only geometry and bookkeeping.
+//
+// The contact is a set of sub-models, one per kind: normal, damping, tangential, friction and wear. Each
+// sub-model is a small class with a name, its coefficient names (their count), a validating constructor
+// (throws InvalidCoefficient naming the coefficient) and a mixing rule for unset I,J type pairs. The
+// registry below (one std::tuple per kind) is the one place to add a law: write the class, add it to its
+// tuple. Hosts dispatch on the tuple index at compile time, so a switched-off feature costs nothing.
+#pragma once
+
+#include "tribo/asperity_geometry.h"
+#include "tribo/contact.h"
+#include "tribo/friction_strength.h"
+#include "tribo/wear.h"
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <optional>
+#include <vector>
+
+namespace runin::tribo {
+
+// What a host knows about one contact.
+struct ContactGeometry {
+  double overlap = 0.0;             // delta, measured from the current (worn) summits [m]
+  double effective_radius = 0.0;    // R* [m]
+  double effective_mass = 0.0;      // m* [kg]
+  double flat_radius = 0.0;         // b, flat of a worn summit (0: intact sphere) [m]
+  double normal[3] = {0.0, 0.0, 0.0};    // unit normal, from the counter-body towards body i
+  double normal_velocity = 0.0;     // v_n of i relative to the counter-body (< 0: approach) [m/s]
+  double tangential_velocity[3] = {0.0, 0.0, 0.0};    // v_t at the contact point, rolling included [m/s]
+};
+
+// Per-contact history, CONTACT_HISTORY_SIZE values stored by the host (zero for a new contact).
+enum ContactHistorySlot {
+  HISTORY_SPRING_X = 0,
+  HISTORY_SPRING_Y,
+  HISTORY_SPRING_Z,
+  HISTORY_SLIP,           // accumulated slip distance (static -> kinetic weakening)
+  HISTORY_MAX_OVERLAP,    // largest overlap of this contact (elastic-plastic unloading)
+  CONTACT_HISTORY_SIZE
+};
+
+// Output of a normal sub-model.
+struct NormalContact {
+  double force = 0.0;             // elastic (or elastic-plastic) force, no damping [N]
+  double stiffness = 0.0;         // dF/d(delta) [N/m]
+  double contact_radius = 0.0;    // a [m]
+  double plastic_depth = 0.0;     // depth of the permanent (plastic) indentation, 0 below yield [m]
+};
+
+// ---------------------------------------------------------------------------------------------------
+// Sub-models. Each: `name`, `coefficient_names` (their count is the coefficient count), a constructor
+// from the values that validates them, `values()` giving them back, and `mix(ii, jj)`.
+// ---------------------------------------------------------------------------------------------------
+
+using Coefficients = std::vector<double>;
+
+// Harmonic mean of 1/X: exact for E* and G* of unlike materials from the like-pair values
+// (1/E*_ij = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j = (1/E*_ii + 1/E*_jj) / 2; the same for G*).
+inline double mix_compliance(double a, double b) { return 2.0 / (1.0 / a + 1.0 / b); }
+// LAMMPS GRANULAR's rule for interface properties that no material fixes (friction, restitution).
+inline double mix_geometric(double a, double b) { return std::sqrt(a * b); }
+
+// Normal: Hertz, or Sneddon's flat punch + Hertz on a worn flat (asperity_geometry.h).
+class HertzNormalModel {
+ public:
+  static constexpr const char *name = "hertz";
+  static constexpr std::array<const char *, 1> coefficient_names{"E*"};
+  explicit HertzNormalModel(const double *c) : e_eff_(c[0])
+  {
+    HertzNormal(c[0], 1.0);    // validates E*
+    if (!std::isfinite(c[0])) throw InvalidCoefficient("E*: effective modulus must be finite");
+  }
+  Coefficients values() const { return {e_eff_}; }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    return {mix_compliance(ii[0], jj[0])};
+  }
+
+  NormalContact evaluate(const ContactGeometry &g, double *, bool) const
+  {
+    const FlatHertzContact c = flat_hertz_contact(e_eff_, g.effective_radius, g.flat_radius, g.overlap);
+    NormalContact out;
+    out.force = c.force;
+    out.stiffness = c.stiffness;
+    out.contact_radius = c.contact_radius;
+    return out;
+  }
+  double elastic_energy(const ContactGeometry &g, const double *) const
+  {
+    return FlatHertzNormal(e_eff_, g.effective_radius, g.flat_radius).elastic_energy(g.overlap);
+  }
+  double effective_modulus() const { return e_eff_; }
+
+ private:
+  double e_eff_;
+};
+
+// Damping: restitution-calibrated viscoelastic damping (contact.h).
+class RestitutionDampingModel {
+ public:
+  static constexpr const char *name = "restitution";
+  static constexpr std::array<const char *, 1> coefficient_names{"e"};
+  explicit RestitutionDampingModel(const double *c) : damping_(c[0]) {}
+  Coefficients values() const { return {damping_.restitution()}; }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj) { return {mix_geometric(ii[0], jj[0])}; }
+  double force(double normal_stiffness, double effective_mass, double normal_velocity) const
+  {
+    return damping_.force(normal_stiffness, effective_mass, normal_velocity);
+  }
+
+ private:
+  RestitutionDamping damping_;
+};
+
+// Tangential: Mindlin spring k_t = 8 G* a with history (contact.h).
+class MindlinTangentialModel {
+ public:
+  static constexpr const char *name = "mindlin";
+  static constexpr std::array<const char *, 1> coefficient_names{"G*"};
+  explicit MindlinTangentialModel(const double *c) : g_eff_(c[0])
+  {
+    if (!(c[0] > 0.0) || !std::isfinite(c[0]))
+      throw InvalidCoefficient("G*: effective shear modulus must be > 0 and finite");
+  }
+  Coefficients values() const { return {g_eff_}; }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    return {mix_compliance(ii[0], jj[0])};
+  }
+  double stiffness(double contact_radius) const { return mindlin_stiffness(g_eff_, contact_radius); }
+  double effective_shear_modulus() const { return g_eff_; }
+
+ private:
+  double g_eff_;
+};
+
+// Friction limit: Coulomb, static mu_s falling to kinetic mu_k over the slip distance d_c.
+class CoulombFrictionModel {
+ public:
+  static constexpr const char *name = "coulomb";
+  static constexpr std::array<const char *, 3> coefficient_names{"mu_s", "mu_k", "d_c"};
+  explicit CoulombFrictionModel(const double *c) : friction_(c[0], c[1], c[2]) {}
+  Coefficients values() const
+  {
+    return {friction_.mu_static(), friction_.mu_kinetic(), friction_.slip_weakening_distance()};
+  }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    return {mix_geometric(ii[0], jj[0]), mix_geometric(ii[1], jj[1]), mix_geometric(ii[2], jj[2])};
+  }
+  double limit(double slip, double normal_force, const NormalContact &, double, FrictionStrengthParts &) const
+  {
+    return friction_.coefficient(slip) * normal_force;
+  }
+
+ private:
+  StaticKineticFriction friction_;
+};
+
+// Friction limit from the micro strength: kinetic level tau_s A_r + ploughing (friction_strength.h); mu_s - mu_k
+// stays the static excess over d_c.
+class StrengthFrictionModel {
+ public:
+  static constexpr const char *name = "strength";
+  static constexpr std::array<const char *, 5> coefficient_names{"mu_s", "mu_k", "d_c", "tau_s", "plough"};
+  explicit StrengthFrictionModel(const double *c) : friction_(c[0], c[1], c[2]), strength_(c[3], c[4]) {}
+  Coefficients values() const
+  {
+    return {friction_.mu_static(), friction_.mu_kinetic(), friction_.slip_weakening_distance(),
+            strength_.shear_strength(), strength_.ploughing_factor()};
+  }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    Coefficients out(ii.size());
+    for (std::size_t k = 0; k < ii.size(); ++k) out[k] = mix_geometric(ii[k], jj[k]);
+    return out;
+  }
+  double limit(double slip, double normal_force, const NormalContact &normal, double overlap,
+               FrictionStrengthParts &parts) const
+  {
+    if (!(normal_force > 0.0)) return 0.0;
+    parts = strength_.strength(normal_force, normal.contact_radius, overlap);
+    return friction_.limit_force(slip, normal_force, parts.total());
+  }
+
+ private:
+  StaticKineticFriction friction_;
+  AdhesionPloughing strength_;
+};
+
+// Wear: Archard, V = k W s / H_softer (or the thesis's / 3H), split between the bodies by 1/H.
+class ArchardWearModel {
+ public:
+  static constexpr const char *name = "archard";
+  static constexpr std::array<const char *, 3> coefficient_names{"k", "H_i", "H_j"};
+  ArchardWearModel(const double *c, ArchardForm form, double transfer)
+      : k_(c[0]), hardness_i_(c[1]), hardness_j_(c[2]), wear_(c[0], checked_hardness(c[1], c[2]), form),
+        exchange_(wear_share(c[1], c[2]), transfer)
+  {
+  }
+  Coefficients values() const { return {k_, hardness_i_, hardness_j_}; }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    // the type-I body keeps its own hardness, the type-J body its own
+    return {mix_geometric(ii[0], jj[0]), ii[1], jj[2]};
+  }
+  // Volume one slip increment removes under the normal force, and where it goes.
+  double volume(double normal_force, double slip_increment) const { return wear_.volume(normal_force, slip_increment); }
+  WearExchange split(double removed) const { return exchange_.split(removed); }
+  double share_i() const { return exchange_.share_a(); }
+
+ private:
+  static double checked_hardness(double hardness_i, double hardness_j)
+  {
+    if (!(hardness_i > 0.0) || !std::isfinite(hardness_i)) throw InvalidCoefficient("H: hardness must be > 0");
+    if (!(hardness_j > 0.0) || !std::isfinite(hardness_j)) throw InvalidCoefficient("H: hardness must be > 0");
+    return std::min(hardness_i, hardness_j);
+  }
+  double k_, hardness_i_, hardness_j_;
+  ArchardWear wear_;
+  WearExchangeRule exchange_;
+};
+
+// ---------------------------------------------------------------------------------------------------
+// The registry: one tuple per kind. Add a law by adding its class here.
+// ---------------------------------------------------------------------------------------------------
+using NormalModels = std::tuple<HertzNormalModel>;
+using DampingModels = std::tuple<RestitutionDampingModel>;
+using TangentialModels = std::tuple<MindlinTangentialModel>;
+using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel>;
+using WearModels = std::tuple<ArchardWearModel>;
+
+enum class SubModelKind { normal = 0, damping, tangential, friction, wear };
+constexpr int kSubModelKinds = 5;
+const char *sub_model_kind_name(SubModelKind kind);
+
+// Name and coefficient names of one registered sub-model.
+struct SubModelInfo {
+  const char *name;
+  std::vector<const char *> coefficient_names;
+  int coefficient_count() const { return static_cast<int>(coefficient_names.size()); }
+};
+// The registered sub-models of a kind, in registry order (the index is the compile-time dispatch index).
+const std::vector<SubModelInfo> &registered_sub_models(SubModelKind kind);
+// Index of `name` among the kind's sub-models; throws InvalidCoefficient listing the known names.
+int find_sub_model(SubModelKind kind, const std::string &name);
+
+// The sub-models chosen for a contact (indices into the registry) and their coefficient values.
+struct ContactModelChoice {
+  std::array<int, kSubModelKinds> index{0, 0, 0, 0, 0};
+  int of(SubModelKind kind) const { return index[static_cast<int>(kind)]; }
+  bool operator==(const ContactModelChoice &o) const { return index == o.index; }
+};
+struct ContactCoefficients {
+  std::array<Coefficients, kSubModelKinds> values;
+  Coefficients &of(SubModelKind kind) { return values[static_cast<int>(kind)]; }
+  const Coefficients &of(SubModelKind kind) const { return values[static_cast<int>(kind)]; }
+};
+// Checks every kind's coefficient count against the registry (InvalidCoefficient: "<kind> model '<name>'
+// takes N coefficients (...), got M").
+void check_coefficient_counts(const ContactModelChoice &choice, const ContactCoefficients &coefficients);
+// Mixing of an unset I,J pair from the I,I and J,J coefficients, sub-model by sub-model.
+ContactCoefficients mix_coefficients(const ContactModelChoice &choice, const ContactCoefficients &ii,
+                                     const ContactCoefficients &jj);
+// Self-describing record (names, counts, values) for restart files, and its reader; the reader throws
+// InvalidCoefficient when the record is damaged.
+std::vector<double> serialize(const ContactModelChoice &choice, const ContactCoefficients &coefficients);
+std::pair<ContactModelChoice, ContactCoefficients> deserialize(const double *record, int size);
+// What differs between two choices, in words ("normal model: restart 'hertz', input 'elastic/plastic'"),
+// or empty.
+std::string describe_difference(const ContactModelChoice &stored, const ContactModelChoice &current);
+std::string describe(const ContactModelChoice &choice);
+
+// The named parameters of one contact as decks give them (pair_coeff's explicit and file forms, the
+// keywords of fix runin/wall); contact_coefficients() maps them onto the chosen sub-models, so every host
+// reads the same set the same way.
+struct ContactParameters {
+  double effective_modulus = 0.0;          // E* [Pa]
+  double effective_shear_modulus = 0.0;    // G* [Pa]
+  double restitution = 1.0;                // e [-]
+  double mu_static = 0.0, mu_kinetic = 0.0, slip_weakening_distance = 0.0;
+  double wear_coefficient = 0.0;           // k [-]
+  double hardness_i = 0.0, hardness_j = 0.0;    // H of body i and of the counter-body j [Pa]
+  double shear_strength = 0.0;             // tau_s [Pa] (friction strength)
+  double ploughing_factor = 1.0;           // scales the ploughing term [-] (friction strength)
+};
+// E* and G* of two materials, the hardnesses and the pair's interface values.
+ContactParameters contact_parameters(const Material &i, const Material &j, double restitution, double mu_static,
+                                     double mu_kinetic, double slip_weakening_distance, double wear_coefficient);
+ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const ContactParameters &p);
+// The same contact seen from the counter-body (the per-body values swapped).
+ContactCoefficients swap_bodies(const ContactModelChoice &choice, const ContactCoefficients &c);
+
+// Settings that are the host's (pair_style / fix keywords), shared by every type pair.
+struct ContactSettings {
+  ArchardForm archard_form = ArchardForm::plain;
+  double transfer_fraction = 0.0;    // part of a body's lost volume deposited on the other
+  double restick_speed = 0.0;        // below this tangential speed a non-slipping contact heals (0: never)
+};
+
+// What one contact evaluation returns to the host.
+struct ContactResult {
+  double normal_force = 0.0;      // total normal force (elastic + damping, clamped >= 0) on body i [N]
+  NormalContact normal;           // the normal sub-model's output (elastic force, stiffness, contact radius)
+  TangentialUpdate tangential;    // tangential force on body i, slip increment, slipping
+  FrictionStrengthParts strength; // adhesion and ploughing parts of the friction limit (strength model)
+  WearExchange wear;              // volumes lost and gained by body i (a) and the counter-body (b)
+  double worn_volume = 0.0;       // volume removed from the contact in this step (lost by both bodies)
+};
+
+// Storage for the chosen alternative of a kind: one std::optional per registered class, exactly one set.
+// Access in the force loop is *std::get<INDEX>(...), unchecked, with INDEX a compile-time constant.
+template <class Tuple> struct SubModelSlots;
+template <class... Models> struct SubModelSlots<std::tuple<Models...>> {
+  using type = std::tuple<std::optional<Models>...>;
+};
+
+// The kernel objects of one type pair, built (and so validated) from its coefficients.
+class ContactModel {
+ public:
+  ContactModel(const ContactModelChoice &choice, const ContactCoefficients &coefficients,
+               const ContactSettings &settings);
+
+  // One contact. NORMAL, FRICTION: registry indices, equal to the choice's (the host dispatches on them once
+  // per step); WEAR: compute the worn volumes. `history` holds CONTACT_HISTORY_SIZE values; with
+  // advance = false (LAMMPS setup) it is read but not changed.
+  template <int NORMAL, int FRICTION, int WEAR>
+  ContactResult evaluate(const ContactGeometry &g, double *history, double dt, bool advance) const
+  {
+    ContactResult out;
+    out.normal = std::get<NORMAL>(normal_)->evaluate(g, history, advance);
+    double fn = out.normal.force + damping().force(out.normal.stiffness, g.effective_mass, g.normal_velocity);
+    if (fn < 0.0) fn = 0.0;    // damping must not glue the bodies together
+    out.normal_force = fn;
+
+    const double kt = tangential().stiffness(out.normal.contact_radius);
+    double &slip = history[HISTORY_SLIP];
+    const double limit = std::get<FRICTION>(friction_)->limit(slip, fn, out.normal, g.overlap, out.strength);
+    out.tangential = mindlin_spring(kt, limit, g.normal, g.tangential_velocity, dt, &history[HISTORY_SPRING_X],
+                                    slip, advance);
+    if (advance) {
+      const double *vt = g.tangential_velocity;
+      if (resticks_squared(out.tangential, vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2], restick_speed_))
+        slip = 0.0;    // re-stuck: the contact heals to its static limit
+    }
+    if (WEAR && out.tangential.slip_increment > 0.0) {
+      out.worn_volume = wear().volume(fn, out.tangential.slip_increment);
+      out.wear = wear().split(out.worn_volume);
+    }
+    return out;
+  }
+  // Elastic energy stored in the normal contact (eflag tallies).
+  template <int NORMAL> double elastic_energy(const ContactGeometry &g, const double *history) const
+  {
+    return std::get<NORMAL>(normal_)->elastic_energy(g, history);
+  }
+
+  const ContactModelChoice &choice() const { return choice_; }
+  double effective_modulus() const;
+  double effective_shear_modulus() const { return tangential().effective_shear_modulus(); }
+  const ArchardWearModel &wear() const { return *std::get<0>(wear_); }
+  const RestitutionDampingModel &damping() const { return *std::get<0>(damping_); }
+  const MindlinTangentialModel &tangential() const { return *std::get<0>(tangential_); }
+
+ private:
+  // Kinds with one registered law are not dispatched: a second law there needs a dispatch index too.
+  static_assert(std::tuple_size_v<DampingModels> == 1 && std::tuple_size_v<TangentialModels> == 1 &&
+                    std::tuple_size_v<WearModels> == 1,
+                "add a dispatch index to ContactModel::evaluate and the hosts' eval tables");
+  ContactModelChoice choice_;
+  SubModelSlots<NormalModels>::type normal_;
+  SubModelSlots<DampingModels>::type damping_;
+  SubModelSlots<TangentialModels>::type tangential_;
+  SubModelSlots<FrictionModels>::type friction_;
+  SubModelSlots<WearModels>::type wear_;
+  double restick_speed_;
+};
+
+namespace detail {
+template <class F, int... I> void dispatch_sub_models(int index, F &&f, std::integer_sequence<int, I...>)
+{
+  constexpr int NF = std::tuple_size_v<FrictionModels>;
+  ((index == I ? (void)f(std::integral_constant<int, I / NF>{}, std::integral_constant<int, I % NF>{}) : void()),
+   ...);
+}
+}    // namespace detail
+
+// Calls f(std::integral_constant<int, NORMAL>, std::integral_constant<int, FRICTION>) with the choice's
+// indices: the compile-time dispatch for hosts that do not keep an eval table of their own.
+template <class F> void with_sub_models(const ContactModelChoice &choice, F &&f)
+{
+  constexpr int NF = std::tuple_size_v<FrictionModels>;
+  detail::dispatch_sub_models(choice.of(SubModelKind::normal) * NF + choice.of(SubModelKind::friction), f,
+                              std::make_integer_sequence<int, std::tuple_size_v<NormalModels> * NF>{});
+}
+
+}    // namespace runin::tribo
