@@ -17,7 +17,8 @@
 using namespace LAMMPS_NS;
 
 ComputeRuninFriction::ComputeRuninFriction(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), wear(nullptr), body_groupbit{0, 0}, bodies_given(false), second_body_is_wall(false)
+    Compute(lmp, narg, arg), wear(nullptr), body_groupbit{0, 0}, bodies_given(false), second_body_is_wall(false),
+    body(Body::none), body_bit(0), normal_axis(2), slide_axis(-1)
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -35,8 +36,34 @@ ComputeRuninFriction::ComputeRuninFriction(LAMMPS *lmp, int narg, char **arg) :
       }
       bodies_given = true;
       iarg += 3;
+    } else if (strcmp(arg[iarg], "body") == 0) {
+      if (iarg + 2 > narg) error->all(FLERR, "compute runin/friction: keyword body needs a group ID or 'wall'");
+      if (strcmp(arg[iarg + 1], "wall") == 0) {
+        body = Body::wall;
+      } else {
+        const int igroup = group->find(arg[iarg + 1]);
+        if (igroup < 0) error->all(FLERR, "compute runin/friction: body group {} does not exist", arg[iarg + 1]);
+        body = Body::group;
+        body_bit = group->bitmask[igroup];
+      }
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "normal") == 0) {
+      if (iarg + 2 > narg) error->all(FLERR, "compute runin/friction: keyword normal needs x, y or z");
+      const std::string axis = arg[iarg + 1];
+      if (axis != "x" && axis != "y" && axis != "z")
+        error->all(FLERR, "compute runin/friction: normal must be x, y or z, got '{}'", axis);
+      normal_axis = axis[0] - 'x';
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "slide") == 0) {
+      if (iarg + 2 > narg) error->all(FLERR, "compute runin/friction: keyword slide needs x, y or z");
+      const std::string axis = arg[iarg + 1];
+      if (axis != "x" && axis != "y" && axis != "z")
+        error->all(FLERR, "compute runin/friction: slide must be x, y or z, got '{}'", axis);
+      slide_axis = axis[0] - 'x';
+      iarg += 2;
     } else {
-      error->all(FLERR, "compute runin/friction: unknown keyword {}", arg[iarg]);
+      error->all(FLERR, "compute runin/friction: unknown keyword {} (expected bodies, body, normal or slide)",
+                 arg[iarg]);
     }
   }
   vector_flag = 1;
@@ -66,6 +93,11 @@ void ComputeRuninFriction::init()
   wear = FixRuninWearState::find(modify);
   if (second_body_is_wall && !have_wall)
     error->all(FLERR, "compute runin/friction: bodies ... wall requires a fix runin/wall");
+  if (slide_axis == normal_axis)
+    error->all(FLERR, "compute runin/friction: slide and normal must be different axes");
+  if (body == Body::wall && !have_wall)
+    error->all(FLERR, "compute runin/friction: body wall requires a fix runin/wall");
+  for (auto *source : sources) source->measure_body(body == Body::group ? body_bit : 0);
 }
 
 void ComputeRuninFriction::compute_vector()
@@ -114,4 +146,17 @@ void ComputeRuninFriction::compute_vector()
   }
   vector[WEAR_RATE] = update->dt > 0.0 ? sum.wear_volume / update->dt : 0.0;
   vector[FRICTIONAL_POWER] = sum.frictional_power;
+
+  // the reaction the measured body feels, in the global frame: load along the normal axis, friction in the
+  // plane normal to it (the sliding direction for a body driven in that plane)
+  constexpr int BODY = 11, COUNTERFACE = 14;
+  const double *reaction = body == Body::wall ? &global[COUNTERFACE] : &global[BODY];
+  double in_plane = 0.0;
+  for (int k = 0; k < 3; k++)
+    if (k != normal_axis) in_plane += reaction[k] * reaction[k];
+  const double friction = slide_axis >= 0 ? std::fabs(reaction[slide_axis]) : std::sqrt(in_plane);
+  const double load = body == Body::none ? 0.0 : std::fabs(reaction[normal_axis]);
+  vector[BODY_TANGENTIAL_FORCE] = body == Body::none ? 0.0 : friction;
+  vector[BODY_NORMAL_FORCE] = load;
+  vector[MU_BODY] = load > 0.0 ? vector[BODY_TANGENTIAL_FORCE] / load : 0.0;
 }

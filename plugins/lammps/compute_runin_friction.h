@@ -32,6 +32,9 @@ class ComputeRuninFriction : public Compute {
     WEAR_VOLUME_BODY2,
     WEAR_RATE,
     FRICTIONAL_POWER,
+    BODY_TANGENTIAL_FORCE,    // reaction on the measured body (keyword body), global frame
+    BODY_NORMAL_FORCE,
+    MU_BODY,
     NENTRIES
   };
 
@@ -46,6 +49,11 @@ class ComputeRuninFriction : public Compute {
   int body_groupbit[2];
   bool bodies_given;
   bool second_body_is_wall;    // 'bodies group-ID wall': the counterfaces of the fix runin/wall instances
+  // 'body group-ID|wall': the body whose contact reaction gives mu_body; 'normal x|y|z': its load axis
+  enum class Body { none, group, wall } body;
+  int body_bit;
+  int normal_axis;
+  int slide_axis;    // 'slide x|y|z': friction along this axis; -1: the magnitude in the plane normal to the load
 };
 
 }    // namespace LAMMPS_NS
