@@ -1,0 +1,144 @@
+#include "tribo/elastic_plastic.h"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace runin::tribo {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string format(double value)
+{
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+void require_finite(double value, const std::string &what)
+{
+  if (!std::isfinite(value)) throw InvalidCoefficient(what + " must be finite, got " + format(value));
+}
+
+void require_positive(double value, const std::string &what)
+{
+  require_finite(value, what);
+  if (!(value > 0.0)) throw InvalidCoefficient(what + " must be > 0, got " + format(value));
+}
+
+}    // namespace
+
+JacksonGreen::JacksonGreen(double effective_modulus, double effective_radius, double yield_strength,
+                           double poisson_ratio, HertzToFitTransition transition)
+    : JacksonGreen(ElasticPlasticCoefficients{effective_modulus, effective_radius, yield_strength, poisson_ratio},
+                   transition)
+{
+}
+
+JacksonGreen::JacksonGreen(const ElasticPlasticCoefficients &coefficients, HertzToFitTransition transition)
+    : c_(coefficients), transition_(transition)
+{
+  require_positive(c_.effective_modulus, "E*: effective modulus");
+  require_positive(c_.effective_radius, "R*: effective radius");
+  require_positive(c_.yield_strength, "S_y: yield strength");
+  require_finite(c_.poisson_ratio, "nu: Poisson ratio");
+  if (!(c_.poisson_ratio >= 0.0 && c_.poisson_ratio < 0.5))
+    throw InvalidCoefficient("nu: Poisson ratio must be in [0, 0.5), got " + format(c_.poisson_ratio));
+
+  const double E = c_.effective_modulus, R = c_.effective_radius, S = c_.yield_strength;
+  yield_factor_ = 1.295 * std::exp(0.736 * c_.poisson_ratio);
+  area_exponent_ = 0.14 * std::exp(23.0 * S / E);
+  const double strain = kPi * yield_factor_ * S / (2.0 * E);    // sqrt(omega_c / R)
+  omega_c_ = strain * strain * R;
+  inv_omega_c_ = 1.0 / omega_c_;
+  const double load = yield_factor_ * kPi * S / 2.0;
+  force_c_ = 4.0 / 3.0 * (R / E) * (R / E) * load * load * load;
+  const double radius_c = yield_factor_ * S * R / (2.0 * E);
+  area_c_ = kPi * kPi * kPi * radius_c * radius_c;
+  hertz_factor_ = 4.0 / 3.0 * E;
+  if (!std::isfinite(area_exponent_) || !(omega_c_ > 0.0) || !std::isfinite(omega_c_) || !(force_c_ > 0.0) ||
+      !std::isfinite(force_c_))
+    throw InvalidCoefficient("E*, R*, S_y: critical interference or load under- or overflows (S_y/E* = " +
+                             format(S / E) + ", R* = " + format(R) + ")");
+
+  // the jump of the published curve at omega* = 1.9, with the Hertz value computed as evaluate() does
+  const double omega_t = kFitStart * omega_c_;
+  const double hertz_t = hertz_factor_ * std::sqrt(R * omega_t) * omega_t;
+  gap_ = fit(omega_t).force / hertz_t - 1.0;
+}
+
+double JacksonGreen::contact_radius(double omega) const
+{
+  return evaluate(omega).contact_radius;
+}
+
+double JacksonGreen::contact_area(double omega) const
+{
+  const double a = contact_radius(omega);
+  return kPi * a * a;
+}
+
+double JacksonGreen::mean_pressure(double omega) const
+{
+  const ContactPoint p = evaluate(omega);
+  if (!(p.contact_radius > 0.0)) return 0.0;
+  return p.force / (kPi * p.contact_radius * p.contact_radius);
+}
+
+double JacksonGreen::hardness_geometric(double omega) const
+{
+  const double q = contact_radius(omega) / c_.effective_radius;
+  if (!(q > 0.0)) return 2.84 * c_.yield_strength;    // the limit a/R -> 0
+  return 2.84 * c_.yield_strength * (1.0 - std::exp(-0.82 * std::pow(q, -0.7)));
+}
+
+double ElasticPlasticUnloading::max_mean_pressure() const
+{
+  if (!(radius_max_ > 0.0)) return 0.0;
+  return force_max_ / (kPi * radius_max_ * radius_max_);
+}
+
+double ElasticPlasticUnloading::ploughing_force() const
+{
+  return max_mean_pressure() * sphere_groove_area(radius_, omega_res_);
+}
+
+double sphere_ploughing_coefficient(double half_width_over_radius)
+{
+  const double r = half_width_over_radius;
+  if (!(r > 0.0)) return 0.0;
+  if (r >= 1.0) return 1.0;    // a hemisphere: A_g = pi R^2 / 2 = pi b^2 / 2
+  if (r < 1e-3) {
+    // (2/pi) [r/6 + r/2 + (3/40 + 1/8) r^3 + ...] = (2/pi) (2r/3 + r^3/5 + ...)
+    return 2.0 / kPi * r * (2.0 / 3.0 + r * r / 5.0);
+  }
+  const double inv = 1.0 / r;
+  return 2.0 / kPi * (inv * inv * std::asin(r) - std::sqrt(inv * inv - 1.0));
+}
+
+double ploughing_force(const JacksonGreen &loading, double omega_max)
+{
+  return ElasticPlasticUnloading(loading, omega_max).ploughing_force();
+}
+
+double ploughing_force(const JacksonGreen &loading, double omega_max, double flow_pressure)
+{
+  if (!(flow_pressure > 0.0)) return 0.0;
+  const double residual =
+      ElasticPlasticUnloading::residual_ratio(omega_max / loading.critical_interference()) * omega_max;
+  return flow_pressure * sphere_groove_area(loading.coefficients().effective_radius, residual);
+}
+
+BrizmerStaticFriction::BrizmerStaticFriction(const JacksonGreen &loading)
+{
+  const double nu = loading.coefficients().poisson_ratio;
+  if (!(nu >= 0.2 && nu < 0.5))
+    throw InvalidCoefficient("nu: Poisson ratio must be in [0.2, 0.5) for the full-stick critical load of "
+                             "Brizmer et al. (2006), got " + format(nu));
+  critical_load_ = critical_load_ratio(nu) * loading.critical_force();
+  inv_critical_load_ = 1.0 / critical_load_;
+}
+
+}    // namespace runin::tribo
