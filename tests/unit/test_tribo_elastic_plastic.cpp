@@ -246,8 +246,12 @@ TEST(JacksonGreen, MeanPressureTendsToGeometricHardness)
       const double ratio = jg.mean_pressure(w) / jg.hardness_geometric(w);
       const double distance = std::fabs(ratio - 1.0);
       // approaches H_G through the elastic-plastic range; near nu = 0.5 it overshoots by a few per cent
-      if (x <= 50.0) EXPECT_LT(distance, previous_distance) << m.name << " x = " << x;
-      if (x >= 50.0) EXPECT_LT(distance, x >= 110.0 ? 0.1 : 0.15) << m.name << " x = " << x;
+      if (x <= 50.0) {
+        EXPECT_LT(distance, previous_distance) << m.name << " x = " << x;
+      }
+      if (x >= 50.0) {
+        EXPECT_LT(distance, x >= 110.0 ? 0.1 : 0.15) << m.name << " x = " << x;
+      }
       previous_distance = distance;
     }
     // H_G itself is below 2.84 S_y and falls as a/R grows
@@ -425,8 +429,9 @@ TEST(ElasticPlasticPloughing, GrooveAreaAndSphereCoefficient)
     const double d = d_over_r * R;
     const double segment = R * R * std::acos(1.0 - d / R) - (R - d) * std::sqrt(2.0 * R * d - d * d);
     EXPECT_LT(relative(sphere_groove_area(R, d), segment), 1e-9) << "d/R = " << d_over_r;
-    if (d_over_r <= 0.5)
+    if (d_over_r <= 0.5) {
       EXPECT_LT(relative(sphere_groove_area(R, d), segment_area_reference(R, d)), 1e-9) << "d/R = " << d_over_r;
+    }
   }
   // shallow grooves: A_g -> (4/3) sqrt(2R) d^(3/2)
   for (double d_over_r : {1e-12, 1e-8, 1e-6}) {
@@ -527,7 +532,9 @@ void expect_invalid(double E, double R, double Sy, double nu, const std::string 
   } catch (const InvalidCoefficient &e) {
     const std::string what = e.what();
     EXPECT_EQ(what.rfind(name + ":", 0), 0u) << what;
-    if (!fragment.empty()) EXPECT_NE(what.find(fragment), std::string::npos) << what;
+    if (!fragment.empty()) {
+      EXPECT_NE(what.find(fragment), std::string::npos) << what;
+    }
   }
 }
 }    // namespace
