@@ -244,16 +244,18 @@ ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const
   else if (friction == StrengthFrictionModel::name)
     c.of(K::friction) = {p.mu_static, p.mu_kinetic, p.slip_weakening_distance, p.shear_strength,
                          p.ploughing_factor};
-  c.of(K::wear) = {p.wear_coefficient, p.hardness_i, p.hardness_j};
+  c.of(K::wear) = {p.wear_coefficient, p.hardness_i, p.wear_coefficient, p.hardness_j};
   check_coefficient_counts(choice, c);
   return c;
 }
 
-ContactCoefficients swap_bodies(const ContactModelChoice &, const ContactCoefficients &c)
+ContactCoefficients swap_bodies(const ContactModelChoice &choice, const ContactCoefficients &c)
 {
+  // only the wear law has per-body coefficients so far
+  static_assert(std::tuple_size_v<WearModels> == 1, "swap the per-body coefficients of every wear law");
   ContactCoefficients out = c;
-  auto &wear = out.of(SubModelKind::wear);
-  std::swap(wear[1], wear[2]);
+  (void) choice;
+  out.of(SubModelKind::wear) = ArchardWearModel::swap_bodies(c.of(SubModelKind::wear));
   return out;
 }
 

@@ -195,37 +195,52 @@ class StrengthFrictionModel {
   AdhesionPloughing strength_;
 };
 
-// Wear: Archard, V = k W s / H_softer (or the thesis's / 3H), split between the bodies by 1/H.
+// Wear: Archard for each body with its own coefficient and hardness, V_i = k_i W s / H_i (the thesis's form
+// divides by 3). A fraction 'transfer' of what one body loses is deposited on the other; the rest is debris.
 class ArchardWearModel {
  public:
   static constexpr const char *name = "archard";
-  static constexpr std::array<const char *, 3> coefficient_names{"k", "H_i", "H_j"};
+  static constexpr std::array<const char *, 4> coefficient_names{"k_i", "H_i", "k_j", "H_j"};
   ArchardWearModel(const double *c, ArchardForm form, double transfer)
-      : k_(c[0]), hardness_i_(c[1]), hardness_j_(c[2]), wear_(c[0], checked_hardness(c[1], c[2]), form),
-        exchange_(wear_share(c[1], c[2]), transfer)
+      : body_i_(c[0], checked_hardness(c[1], "H_i"), form), body_j_(c[2], checked_hardness(c[3], "H_j"), form),
+        transfer_(checked_transfer(transfer))
   {
   }
-  Coefficients values() const { return {k_, hardness_i_, hardness_j_}; }
-  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  Coefficients values() const
   {
-    // the type-I body keeps its own hardness, the type-J body its own
-    return {mix_geometric(ii[0], jj[0]), ii[1], jj[2]};
+    return {body_i_.coefficient(), body_i_.hardness(), body_j_.coefficient(), body_j_.hardness()};
   }
-  // Volume one slip increment removes under the normal force, and where it goes.
-  double volume(double normal_force, double slip_increment) const { return wear_.volume(normal_force, slip_increment); }
-  WearExchange split(double removed) const { return exchange_.split(removed); }
-  double share_i() const { return exchange_.share_a(); }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj) { return {ii[0], ii[1], jj[2], jj[3]}; }
+  static Coefficients swap_bodies(const Coefficients &c) { return {c[2], c[3], c[0], c[1]}; }
+
+  // What one slip increment under the normal force takes from each body, and where it goes.
+  WearExchange wear(double normal_force, double slip_increment) const
+  {
+    WearExchange out;
+    out.lost_a = body_i_.volume(normal_force, slip_increment);
+    out.lost_b = body_j_.volume(normal_force, slip_increment);
+    out.gained_a = transfer_ * out.lost_b;
+    out.gained_b = transfer_ * out.lost_a;
+    out.debris = (1.0 - transfer_) * (out.lost_a + out.lost_b);
+    return out;
+  }
+  const ArchardWear &body_i() const { return body_i_; }
+  const ArchardWear &body_j() const { return body_j_; }
 
  private:
-  static double checked_hardness(double hardness_i, double hardness_j)
+  static double checked_hardness(double hardness, const char *name)
   {
-    if (!(hardness_i > 0.0) || !std::isfinite(hardness_i)) throw InvalidCoefficient("H: hardness must be > 0");
-    if (!(hardness_j > 0.0) || !std::isfinite(hardness_j)) throw InvalidCoefficient("H: hardness must be > 0");
-    return std::min(hardness_i, hardness_j);
+    if (!(hardness > 0.0) || !std::isfinite(hardness))
+      throw InvalidCoefficient(std::string(name) + ": hardness must be > 0 and finite");
+    return hardness;
   }
-  double k_, hardness_i_, hardness_j_;
-  ArchardWear wear_;
-  WearExchangeRule exchange_;
+  static double checked_transfer(double transfer)
+  {
+    if (!(transfer >= 0.0 && transfer <= 1.0)) throw InvalidCoefficient("transfer: fraction must be in [0, 1]");
+    return transfer;
+  }
+  ArchardWear body_i_, body_j_;
+  double transfer_;
 };
 
 // ---------------------------------------------------------------------------------------------------
@@ -351,8 +366,8 @@ class ContactModel {
         slip = 0.0;    // re-stuck: the contact heals to its static limit
     }
     if (WEAR && out.tangential.slip_increment > 0.0) {
-      out.worn_volume = wear().volume(fn, out.tangential.slip_increment);
-      out.wear = wear().split(out.worn_volume);
+      out.wear = wear().wear(fn, out.tangential.slip_increment);
+      out.worn_volume = out.wear.lost_a + out.wear.lost_b;
     }
     return out;
   }

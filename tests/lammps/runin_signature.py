@@ -106,11 +106,11 @@ def signature(args):
 
     # 4. wear: Archard budget of the whole slide and its 1/H split between asperities and wall
     asperity, wall = sliding[-1]["c_fric[5]"], sliding[-1]["f_wall[7]"]
-    budget = WEAR_K * LOAD * slide[-1] / min(H_ASPERITY, H_WALL)
+    budget = WEAR_K * LOAD * slide[-1] * (1.0 / H_ASPERITY + 1.0 / H_WALL)    # per-body Archard, k_i = k
     ratio = (asperity + wall) / budget
     share = asperity / (asperity + wall)
     share_expected = H_WALL / (H_ASPERITY + H_WALL)
-    print(f"wear: {asperity + wall:.4e} m^3 = {ratio:.4f} x k F s / H_soft; asperity share {share:.12f} "
+    print(f"wear: {asperity + wall:.4e} m^3 = {ratio:.4f} x k F s (1/H_a + 1/H_w); asperity share {share:.12f} "
           f"(1/H: {share_expected:.12f})")
     if not ARCHARD_RANGE[0] <= ratio <= ARCHARD_RANGE[1]:
         fail(f"worn volume / Archard budget = {ratio:.4f}, outside {ARCHARD_RANGE}")

@@ -119,7 +119,6 @@ def slide(args):
     lost = [state[1]["f_RUNIN_WEAR_STATE[1]"], state[2]["f_RUNIN_WEAR_STATE[1]"]]
     gained = [state[1]["f_RUNIN_WEAR_STATE[2]"], state[2]["f_RUNIN_WEAR_STATE[2]"]]
     r_star = r1 * r2 / (r1 + r2)
-    h_soft = min(m["h_al"], m["h_cu"])
     form = 3.0 if args.archard == "thesis" else 1.0
     notes = []
     if args.reshape == "no":
@@ -128,10 +127,11 @@ def slide(args):
         check("F_n while sliding", last["c_fric[1]"], load, 1e-10)
         spring = m["mu_k"] * load / (8.0 * m["g_star"] * a)
         slip = speed * nslide * dt - spring
-        archard = m["k"] * load * slip / (form * h_soft)
-        check("removed volume vs k W s / H", removed, archard, 1e-10)
-        notes.append(f"removed {removed:.6e} m^3 = k W s / ({form:g} H) = {archard:.6e}")
-    # per-atom bookkeeping: 1/H split and transfer. (c_fric[5] IS the sum over atoms of the volume lost;
+        # per-body Archard: each body loses k W s / H_i (the thesis's form: / 3 H_i)
+        archard = m["k"] * load * slip * (1.0 / m["h_al"] + 1.0 / m["h_cu"]) / form
+        check("removed volume vs k W s (1/H_Al + 1/H_Cu)", removed, archard, 1e-10)
+        notes.append(f"removed {removed:.6e} m^3 = k W s (1/H_Al + 1/H_Cu) / {form:g} = {archard:.6e}")
+    # per-atom bookkeeping: k_i/H_i per body (equal k: the 1/H split) and transfer. (c_fric[5] IS the sum over atoms of the volume lost;
     # verify_micro.py wear-budget checks it against the per-contact wear rate on a multi-contact slider.)
     share_al = m["h_cu"] / (m["h_al"] + m["h_cu"])
     check("Al share of the removed volume", lost[0], share_al * removed, 1e-13)
