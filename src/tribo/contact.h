@@ -115,38 +115,61 @@ struct TangentialUpdate {
 
 // The Mindlin spring of mindlin_coulomb below with its Coulomb limit given as a force (>= 0), for force
 // loops that compute the limit themselves. Inline: it runs once per contact and step.
+//
+// The update is LAMMPS's pair granular 'tangential mindlin' (GRANULAR/pair_granular.cpp, compute(),
+// LAMMPS 29Sep2021) operation for operation, so that without damping the two agree to round-off:
+//  1. frame update: if the stored spring has a normal part that matters, |xi.n| k_t > 1e-10 limit
+//     (LAMMPS's EPSILON * Fscrit), it is projected onto the current tangent plane and rescaled to its old
+//     length (Luding 2008, Granular Matter 10:235, eq. 17): a rotating contact turns the spring, it
+//     does not shorten it. Below the threshold it is left as is (the same branch as LAMMPS);
+//  2. xi += v_t dt (v_t is tangential by construction, so xi is not projected again);
+//  3. F_t = -k_t xi; if |F_t| > limit, F_t is scaled to the limit and the spring set to -F_t / k_t, with
+//     the expressions of LAMMPS (spring = -1/k_t (limit F_t / |F_t|), F_t *= limit / |F_t|).
+// RunIn's own parts: the limit is the caller's (static -> kinetic weakening, friction strength, F_n
+// clamped at 0); slip_increment is the length by which the spring was shortened at the limit,
+// (|F_t| - limit) / k_t = |xi| - limit / k_t, and is added to 'slip' (LAMMPS keeps no slip distance).
+// With advance = false (LAMMPS setup) nothing is stored: the force comes from the stored spring after the
+// frame update of step 1 on a copy (LAMMPS takes the stored spring unrotated, and at the limit rescales it
+// even at setup); in a continued run the spring is already in the tangent plane, so the two agree.
 inline TangentialUpdate mindlin_spring(double kt, double limit, const double n[3], const double vt[3], double dt,
                                        double spring[3], double &slip, bool advance)
 {
   TangentialUpdate out;
-  double trial[3] = {spring[0], spring[1], spring[2]};
+  double xi[3] = {spring[0], spring[1], spring[2]};
+
+  // 1. rotate into the current tangent plane, keeping the length
+  const double along_normal = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2];
+  if (std::fabs(along_normal) * kt > 1e-10 * limit) {
+    const double length = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+    for (int k = 0; k < 3; ++k) xi[k] -= along_normal * n[k];
+    const double projected = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+    const double restore = projected > 0.0 ? length / projected : 0.0;
+    for (int k = 0; k < 3; ++k) xi[k] *= restore;
+  }
+  // 2. advance with the tangential relative velocity
   if (advance)
-    for (int k = 0; k < 3; ++k) trial[k] += vt[k] * dt;
+    for (int k = 0; k < 3; ++k) xi[k] += vt[k] * dt;
 
-  // Keep the spring in the current tangent plane (the contact normal rotates as bodies move).
-  const double along_normal = trial[0] * n[0] + trial[1] * n[1] + trial[2] * n[2];
-  for (int k = 0; k < 3; ++k) trial[k] -= along_normal * n[k];
-
+  // 3. trial force and the Coulomb limit
   double ft[3];
-  for (int k = 0; k < 3; ++k) ft[k] = -kt * trial[k];
-  const double trial_mag = std::sqrt(trial[0] * trial[0] + trial[1] * trial[1] + trial[2] * trial[2]);
-  double ft_mag = kt * trial_mag;    // k_t >= 0
-
+  for (int k = 0; k < 3; ++k) ft[k] = -kt * xi[k];
+  const double ft_mag = std::sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
+  out.force_magnitude = ft_mag;
   if (ft_mag > limit) {
-    // the spring shrinks along itself to the limit: it slips by |trial| - limit / k_t = |trial| (1 - scale)
+    // (LAMMPS also tests |xi| != 0 here: with a finite k_t, |F_t| > limit >= 0 implies it)
     out.slipping = true;
-    const double scale = limit / ft_mag;
+    out.force_magnitude = limit;
+    const double neg_inv_kt = -1.0 / kt, scale = limit / ft_mag;
+    // the spring shrinks along itself from |xi| = |F_t| / k_t to limit / k_t: the slider slips by the difference
+    out.slip_increment = (ft_mag - limit) * -neg_inv_kt;
     for (int k = 0; k < 3; ++k) {
+      xi[k] = neg_inv_kt * (limit * ft[k] / ft_mag);
       ft[k] *= scale;
-      trial[k] *= scale;
     }
-    out.slip_increment = trial_mag * (1.0 - scale);
-    ft_mag = limit;
   }
   for (int k = 0; k < 3; ++k) out.force[k] = ft[k];
-  out.force_magnitude = ft_mag;
   if (advance) {
-    for (int k = 0; k < 3; ++k) spring[k] = trial[k];
+    for (int k = 0; k < 3; ++k) spring[k] = xi[k];
     slip += out.slip_increment;
   }
   return out;
@@ -157,6 +180,7 @@ inline TangentialUpdate mindlin_spring(double kt, double limit, const double n[3
 // slip distance; both persist per contact. 'normal' is the unit normal (j -> i),
 // 'tangential_velocity' the relative tangential velocity of i w.r.t. j.
 // When 'advance' is false (LAMMPS setup) the history is read but not changed.
+// The limit is mu(slip) max(F_n, 0): a negative normal force gives no friction (LAMMPS: mu |F_n|).
 inline TangentialUpdate mindlin_coulomb(double tangential_stiffness, double normal_force,
                                         const StaticKineticFriction &friction, const double normal[3],
                                         const double tangential_velocity[3], double dt, double spring[3],
