@@ -45,7 +45,7 @@ inline void cross(const double *a, const double *b, double *out)
 const std::map<std::string, int> kKeywordValues = {
     {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
     {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
-    {"strength", 2}, {"restick", 1}, {"transfer", 1}};
+    {"strength", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}};
 
 // Leads the global restart record that carries the contact model. Older records start with NaN (with the
 // counterface gain) or with z_wall.
@@ -62,6 +62,8 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
 {
   if (!atom->sphere_flag) error->all(FLERR, "fix runin/wall: requires atom_style sphere");
 
+  bool yield_given = false;
+  double yield_strength = 0.0, yield_poisson = 0.3;
   bool have_zplane = false, have_file = false, have_elastic = false, have_friction = false, have_wear = false;
   int iarg = 3;
   while (iarg < narg) {
@@ -70,7 +72,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     if (known == kKeywordValues.end())
       error->all(FLERR,
                  "fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, wear, "
-                 "archard, reshape, vel, vz, load, pressure, servo, strength, restick or transfer)",
+                 "archard, reshape, vel, vz, load, pressure, servo, strength, restick, transfer, normal or yield)",
                  keyword);
     const int nvalues = known->second;
     if (iarg + nvalues >= narg)
@@ -146,6 +148,17 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       parameters.ploughing_factor = number(1, "plough");
       choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
           tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
+    } else if (keyword == "normal") {
+      try {
+        choice.index[static_cast<int>(tribo::SubModelKind::normal)] =
+            tribo::find_sub_model(tribo::SubModelKind::normal, values[0]);
+      } catch (const tribo::InvalidCoefficient &e) {
+        error->all(FLERR, "fix runin/wall: {}", e.what());
+      }
+    } else if (keyword == "yield") {
+      yield_given = true;
+      yield_strength = number(0, "S_y");
+      yield_poisson = number(1, "nu");
     } else if (keyword == "restick") {
       contact_settings.restick_speed = number(0, "v");
       if (!(contact_settings.restick_speed >= 0.0) || !std::isfinite(contact_settings.restick_speed))
@@ -170,6 +183,23 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "fix runin/wall: load control needs 'servo GAIN VMAX'");
   if (control != Control::displacement && vz_given)
     error->all(FLERR, "fix runin/wall: 'vz' and 'load'/'pressure' exclude each other");
+
+  // S_y and nu of the yielding body: keyword 'yield', else the material file, else Tabor's H / 2.8
+  if (yield_given) {
+    parameters.yield_strength = yield_strength;
+    parameters.poisson_ratio = yield_poisson;
+    parameters.yield_from_hardness = false;
+  } else if (!have_file) {
+    parameters.yield_strength = std::min(parameters.hardness_i, parameters.hardness_j) / tribo::kTaborConstraintFactor;
+    parameters.yield_from_hardness = true;
+  }
+  const bool plastic =
+      choice.of(tribo::SubModelKind::normal) ==
+      tribo::find_sub_model(tribo::SubModelKind::normal, tribo::ElasticPlasticNormalModel::name);
+  if (plastic && parameters.yield_from_hardness && comm->me == 0)
+    error->warning(FLERR, "fix runin/wall: no yield strength given (keyword yield or material file): S_y = H / {} = "
+                   "{:.4g} Pa (Tabor), nu = {}", tribo::kTaborConstraintFactor, parameters.yield_strength,
+                   parameters.poisson_ratio);
 
   // the contact model validates its coefficients; the message names the offending one
   try {

@@ -204,6 +204,8 @@ void PairRuninAsperity::coeff(int narg, char **arg)
       p.slip_weakening_distance = v[5];
       p.wear_coefficient = v[6];
       p.hardness_i = p.hardness_j = v[7];    // one hardness for both types
+      p.yield_strength = v[7] / tribo::kTaborConstraintFactor;    // unless 'S_y' follows
+      p.yield_from_hardness = true;
       optional_first = 10;
     } else {
       error->all(FLERR,
@@ -213,6 +215,12 @@ void PairRuninAsperity::coeff(int narg, char **arg)
                  narg);
     }
     read_optional_coefficients(p, narg, arg, optional_first);
+    if (p.yield_from_hardness && choice.of(SubModelKind::normal) ==
+                                     tribo::find_sub_model(SubModelKind::normal, tribo::ElasticPlasticNormalModel::name))
+      error->warning(FLERR,
+                     "pair_coeff runin/asperity {} {}: no yield strength given (S_y keyword or material file): "
+                     "S_y = H / {} = {:.4g} Pa (Tabor), nu = {}",
+                     arg[0], arg[1], tribo::kTaborConstraintFactor, p.yield_strength, p.poisson_ratio);
     c = tribo::contact_coefficients(choice, p);
   }
   try {
@@ -289,13 +297,23 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
 {
   for (int iarg = first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
-    if (keyword != "tau_s" && keyword != "plough")
-      error->all(FLERR, "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s or plough)", keyword);
+    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu")
+      error->all(FLERR, "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y or nu)",
+                 keyword);
     if (iarg + 1 >= narg || !utils::is_double(arg[iarg + 1]))
       error->all(FLERR, "pair_coeff runin/asperity: {} needs a number, got '{}'", keyword,
                  iarg + 1 < narg ? arg[iarg + 1] : "");
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    (keyword == "tau_s" ? p.shear_strength : p.ploughing_factor) = value;
+    if (keyword == "tau_s")
+      p.shear_strength = value;
+    else if (keyword == "plough")
+      p.ploughing_factor = value;
+    else if (keyword == "nu")
+      p.poisson_ratio = value;
+    else {
+      p.yield_strength = value;
+      p.yield_from_hardness = false;
+    }
   }
 }
 

@@ -6,6 +6,7 @@
 #include "tokenizer.h"
 #include "utils.h"
 
+#include <cmath>
 #include <map>
 #include <optional>
 #include <vector>
@@ -32,13 +33,19 @@ std::string parse(FILE *fp, const std::string &file, const std::string &name_a, 
       if (!words.has_next()) continue;
       const std::string kind = words.next_string();
       if (kind == "material") {
-        if (words.count() != 6) throw TokenizerException("material needs NAME E nu rho H", "");
+        if (words.count() != 6 && words.count() != 7)
+          throw TokenizerException("material needs NAME E nu rho H [S_y]", "");
         const std::string name = words.next_string();
         tribo::Material m;
         m.youngs_modulus = words.next_double();
         m.poisson_ratio = words.next_double();
         words.next_double();    // density: the timestep guard takes it from the atoms' rmass
         m.hardness = words.next_double();
+        if (words.has_next()) {
+          m.yield_strength = words.next_double();
+          if (!(m.yield_strength > 0.0) || !std::isfinite(m.yield_strength))
+            throw TokenizerException(fmt::format("material {}: S_y must be > 0 and finite", name), "");
+        }
         m.validate(fmt::format("{} line {}: material {}", file, lineno, name));
         materials[name] = m;
       } else if (kind == "pair") {

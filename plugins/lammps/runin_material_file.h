@@ -1,6 +1,6 @@
 // Reader of RunIn coefficient files (potentials/*.runin), shared by pair runin/asperity and
 // fix runin/wall. SI units, '#' comments:
-//   material NAME  E[Pa]  nu[-]  rho[kg/m^3]  H[Pa]
+//   material NAME  E[Pa]  nu[-]  rho[kg/m^3]  H[Pa]  [S_y[Pa]]   (S_y: elastic-plastic contact; else H / 2.8)
 //   pair NAME_A NAME_B  e[-]  mu_s[-]  mu_k[-]  d_c[m]  k[-]
 #pragma once
 

@@ -20,6 +20,7 @@ struct Material {
   double youngs_modulus = 0.0;  // Pa
   double poisson_ratio = 0.0;   // -
   double hardness = 0.0;        // Pa (indentation hardness, used by Archard)
+  double yield_strength = 0.0;  // Pa (uniaxial S_y, elastic-plastic contact); 0: unknown (Tabor's H / 2.8)
 
   void validate(const std::string &name = "material") const;
   double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }

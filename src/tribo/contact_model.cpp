@@ -227,6 +227,14 @@ ContactParameters contact_parameters(const Material &i, const Material &j, doubl
   p.wear_coefficient = wear_coefficient;
   p.hardness_i = i.hardness;
   p.hardness_j = j.hardness;
+  // the softer body yields first: its S_y (Tabor's H / 2.8 where none is given) and nu
+  auto yield_of = [](const Material &m) {
+    return m.yield_strength > 0.0 ? m.yield_strength : m.hardness / kTaborConstraintFactor;
+  };
+  const Material &soft = yield_of(i) <= yield_of(j) ? i : j;
+  p.yield_strength = yield_of(soft);
+  p.poisson_ratio = soft.poisson_ratio;
+  p.yield_from_hardness = !(soft.yield_strength > 0.0);
   return p;
 }
 
@@ -236,6 +244,7 @@ ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const
   ContactCoefficients c;
   const std::string normal = registered_sub_models(K::normal)[choice.of(K::normal)].name;
   if (normal == HertzNormalModel::name) c.of(K::normal) = {p.effective_modulus};
+  if (normal == ElasticPlasticNormalModel::name) c.of(K::normal) = {p.effective_modulus, p.yield_strength, p.poisson_ratio};
   c.of(K::damping) = {p.restitution};
   c.of(K::tangential) = {p.effective_shear_modulus};
   const std::string friction = registered_sub_models(K::friction)[choice.of(K::friction)].name;

@@ -12,6 +12,7 @@
 
 #include "tribo/asperity_geometry.h"
 #include "tribo/contact.h"
+#include "tribo/elastic_plastic.h"
 #include "tribo/friction_strength.h"
 #include "tribo/wear.h"
 
@@ -51,7 +52,10 @@ struct NormalContact {
   double force = 0.0;             // elastic (or elastic-plastic) force, no damping [N]
   double stiffness = 0.0;         // dF/d(delta) [N/m]
   double contact_radius = 0.0;    // a [m]
-  double plastic_depth = 0.0;     // depth of the permanent (plastic) indentation, 0 below yield [m]
+  // Ploughing force of the permanent groove (elastic-plastic models; 0 below yield) [N], and whether the
+  // model knows plasticity at all (an elastic model leaves ploughing to the cone of friction_strength.h)
+  double groove_ploughing = 0.0;
+  bool plastic_model = false;
 };
 
 // ---------------------------------------------------------------------------------------------------
@@ -100,6 +104,81 @@ class HertzNormalModel {
 
  private:
   double e_eff_;
+};
+
+// Normal: elastic-plastic sphere on a flat (elastic_plastic.h): Jackson & Green (2005) loading, Etsion,
+// Kligerman & Kadin (2005) unloading and elastic reloading up to the earlier maximum interference, kept per
+// contact in HISTORY_MAX_OVERLAP. Coefficients: E*, and S_y, nu of the yielding (softer) body. The curves
+// are self-similar in R* (omega_c ~ R, P ~ R^2), so one unit-radius curve per type pair serves every size.
+// A worn summit with a flat b is the sphere truncated b^2 / 2R below its top: its interference is
+// delta + b^2 / 2R (the same fully plastic area 2 pi R omega), and the flat reloads elastically (Sneddon)
+// until it reaches that elastic-plastic force.
+class ElasticPlasticNormalModel {
+ public:
+  static constexpr const char *name = "elastic/plastic";
+  static constexpr std::array<const char *, 3> coefficient_names{"E*", "S_y", "nu"};
+  explicit ElasticPlasticNormalModel(const double *c) : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]) {}
+  Coefficients values() const
+  {
+    return {e_eff_, unit_.coefficients().yield_strength, unit_.coefficients().poisson_ratio};
+  }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    // the softer body yields: its S_y and nu
+    const Coefficients &soft = ii[1] <= jj[1] ? ii : jj;
+    return {mix_compliance(ii[0], jj[0]), soft[1], soft[2]};
+  }
+
+  NormalContact evaluate(const ContactGeometry &g, double *history, bool advance) const
+  {
+    const double R = g.effective_radius, inv_R = 1.0 / R;
+    const double b = g.flat_radius;
+    const double omega = g.overlap + (b > 0.0 ? 0.5 * b * b * inv_R : 0.0);
+    const ElasticPlasticContact ep =
+        elastic_plastic_contact(unit_, omega * inv_R, history[HISTORY_MAX_OVERLAP] * inv_R);
+    NormalContact out;
+    out.plastic_model = true;
+    out.force = ep.force * R * R;
+    out.contact_radius = ep.contact_radius * R;
+    out.stiffness = ep.stiffness * R;
+    if (b > 0.0) {
+      const FlatHertzContact flat = flat_hertz_contact(e_eff_, R, b, g.overlap);
+      if (flat.force < out.force) {
+        out.force = flat.force;
+        out.contact_radius = flat.contact_radius;
+        out.stiffness = flat.stiffness;
+        return out;    // elastic reload of the flat: no new plastic history
+      }
+    }
+    if (ep.plastic) {
+      // the groove left behind, pushed at the mean pressure of the largest load (the flow pressure)
+      const ContactPoint peak = unit_.evaluate(ep.omega_max);
+      const double flow_pressure = peak.force / (3.14159265358979323846 * peak.contact_radius * peak.contact_radius);
+      out.groove_ploughing = flow_pressure * sphere_groove_area(1.0, ep.residual_interference) * R * R;
+    }
+    if (advance) history[HISTORY_MAX_OVERLAP] = ep.omega_max * R;
+    return out;
+  }
+  double elastic_energy(const ContactGeometry &g, const double *history) const
+  {
+    // the energy an unloading would give back: the integral of the current (un)loading curve from its zero
+    const double R = g.effective_radius;
+    const double omega = (g.overlap + (g.flat_radius > 0.0 ? 0.5 * g.flat_radius * g.flat_radius / R : 0.0)) / R;
+    const double omega_max = std::max(history[HISTORY_MAX_OVERLAP] / R, omega);
+    const ElasticPlasticUnloading unloading(unit_, omega_max);
+    if (!(omega > unloading.residual_interference())) return 0.0;
+    // P = P_max s^n with s = (omega - omega_res) / (omega_max - omega_res): integral P_max s^(n+1) span / (n+1)
+    const double span = omega_max - unloading.residual_interference();
+    const double s = (omega - unloading.residual_interference()) / span;
+    return unloading.max_force() * std::pow(s, unloading.exponent() + 1.0) * span / (unloading.exponent() + 1.0) *
+           R * R * R;
+  }
+  double effective_modulus() const { return e_eff_; }
+  const JacksonGreen &unit_curve() const { return unit_; }
+
+ private:
+  double e_eff_;
+  JacksonGreen unit_;    // the loading curve of a unit-radius sphere
 };
 
 // Damping: restitution-calibrated viscoelastic damping (contact.h).
@@ -186,7 +265,14 @@ class StrengthFrictionModel {
                FrictionStrengthParts &parts) const
   {
     if (!(normal_force > 0.0)) return 0.0;
-    parts = strength_.strength(normal_force, normal.contact_radius, overlap);
+    if (normal.plastic_model) {
+      // adhesion over the elastic-plastic real area; ploughing only by the plastic groove (0 below yield)
+      parts.adhesion = strength_.shear_strength() * 3.14159265358979323846 * normal.contact_radius *
+                       normal.contact_radius;
+      parts.ploughing = strength_.ploughing_factor() * normal.groove_ploughing;
+    } else {
+      parts = strength_.strength(normal_force, normal.contact_radius, overlap);
+    }
     return friction_.limit_force(slip, normal_force, parts.total());
   }
 
@@ -246,7 +332,7 @@ class ArchardWearModel {
 // ---------------------------------------------------------------------------------------------------
 // The registry: one tuple per kind. Add a law by adding its class here.
 // ---------------------------------------------------------------------------------------------------
-using NormalModels = std::tuple<HertzNormalModel>;
+using NormalModels = std::tuple<HertzNormalModel, ElasticPlasticNormalModel>;
 using DampingModels = std::tuple<RestitutionDampingModel>;
 using TangentialModels = std::tuple<MindlinTangentialModel>;
 using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel>;
@@ -305,7 +391,12 @@ struct ContactParameters {
   double hardness_i = 0.0, hardness_j = 0.0;    // H of body i and of the counter-body j [Pa]
   double shear_strength = 0.0;             // tau_s [Pa] (friction strength)
   double ploughing_factor = 1.0;           // scales the ploughing term [-] (friction strength)
+  double yield_strength = 0.0;             // S_y of the yielding (softer) body [Pa] (elastic-plastic)
+  double poisson_ratio = 0.3;              // nu of the yielding body [-] (elastic-plastic)
+  bool yield_from_hardness = false;        // S_y was Tabor's H / 2.8 (no S_y given): hosts say so
 };
+// Tabor's fallback S_y = H / 2.8 where a material gives no yield strength.
+constexpr double kTaborConstraintFactor = 2.8;
 // E* and G* of two materials, the hardnesses and the pair's interface values.
 ContactParameters contact_parameters(const Material &i, const Material &j, double restitution, double mu_static,
                                      double mu_kinetic, double slip_weakening_distance, double wear_coefficient);
