@@ -380,13 +380,9 @@ void PairRuninAsperity::init_style()
 double PairRuninAsperity::init_one(int i, int j)
 {
   if (!setflag[i][j]) {
-    // an unset I,J pair is mixed from I,I and J,J (sub-model by sub-model: exact for E* and G*, the
-    // geometric mean of LAMMPS GRANULAR for interface values, each body keeping its own hardness)
-    if (!setflag[i][i] || !setflag[j][j])
-      error->all(FLERR,
-                 "pair runin/asperity: coefficients for types {} {} are not set and cannot be mixed (pair_coeff "
-                 "{} {} and {} {} are needed)",
-                 i, j, i, i, j, j);
+    // an unset I,J pair is mixed from I,I and J,J (Pair::init has checked those are set), sub-model by
+    // sub-model: exact for E* and G*, the geometric mean of LAMMPS GRANULAR for interface values, each
+    // body keeping its own wear coefficient and hardness
     try {
       coeff_of(i, j) = tribo::mix_coefficients(choice, coeff_of(i, i), coeff_of(j, j));
       coeff_of(j, i) = tribo::swap_bodies(choice, coeff_of(i, j));
@@ -686,8 +682,8 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
   const tribo::ContactModel &model = *models[itype * (atom->ntypes + 1) + jtype];
   double energy = 0.0;
   tribo::ContactResult contact;
-  tribo::with_sub_models(choice, [&](auto normal, auto friction) {
-    contact = model.evaluate<decltype(normal)::value, decltype(friction)::value, 0>(g, history, dt, false);
+  tribo::with_sub_models(choice, [&](auto normal, auto) {
+    contact = model.stored_force<decltype(normal)::value>(g, history);
     energy = model.elastic_energy<decltype(normal)::value>(g, history);
   });
   fforce = contact.normal_force / r;

@@ -462,6 +462,22 @@ class ContactModel {
     }
     return out;
   }
+  // The force the last evaluate() applied, from the stored history and without changing it (pair single()):
+  // the stored spring already holds the tangential force of that step (-k_t spring), so no friction limit is
+  // applied again (the slip distance has moved on since, and the limit with it).
+  template <int NORMAL> ContactResult stored_force(const ContactGeometry &g, const double *history) const
+  {
+    double copy[CONTACT_HISTORY_SIZE];
+    for (int k = 0; k < CONTACT_HISTORY_SIZE; ++k) copy[k] = history[k];
+    ContactResult out;
+    out.normal = std::get<NORMAL>(normal_)->evaluate(g, copy, false);
+    double fn = out.normal.force + damping().force(out.normal.stiffness, g.effective_mass, g.normal_velocity);
+    out.normal_force = fn < 0.0 ? 0.0 : fn;
+    const double kt = tangential().stiffness(out.normal.contact_radius);
+    out.tangential = mindlin_spring(kt, HUGE_VAL, g.normal, g.tangential_velocity, 0.0, &copy[HISTORY_SPRING_X],
+                                    copy[HISTORY_SLIP], false);
+    return out;
+  }
   // Elastic energy stored in the normal contact (eflag tallies).
   template <int NORMAL> double elastic_energy(const ContactGeometry &g, const double *history) const
   {
