@@ -591,14 +591,16 @@ void PairRuninAsperity::eval(int eflag)
     double tor[3];
     cross(normal, ft, tor);
     const bool j_here = newton_pair || j < nlocal;
+    // torque about each centre at the contact point, R - delta/2 from it (LAMMPS's pair granular)
+    const double arm_i = radi - 0.5 * g.overlap, arm_j = radj - 0.5 * g.overlap;
     for (int k = 0; k < 3; k++) {
       f[i][k] += fpair[k];
-      torque[i][k] -= radi * tor[k];
+      torque[i][k] -= arm_i * tor[k];
     }
     if (j_here)
       for (int k = 0; k < 3; k++) {
         f[j][k] -= fpair[k];
-        torque[j][k] -= radj * tor[k];
+        torque[j][k] -= arm_j * tor[k];
       }
 
     // with newton off a contact with a ghost is computed on both ranks: count half on each
