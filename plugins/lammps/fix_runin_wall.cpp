@@ -381,10 +381,14 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
     tribo::ContactGeometry g;
     g.overlap = r - summit_drop - side_sign * (x[i][2] - wall_z);
     if (g.overlap <= 0.0) {
-      for (int k = 0; k < HISTORY_SIZE; k++) history[i][k] = 0.0;
+      // the spring and slip belong to one contact; the largest interference belongs to the asperity under
+      // this flat and stays, so a reload retraces the elastic unloading curve up to it
+      for (int k = 0; k < HISTORY_SIZE; k++)
+        if (k != tribo::HISTORY_MAX_OVERLAP) history[i][k] = 0.0;
       continue;
     }
     g.flat_radius = worn_geometry ? wear_state[i][FixRuninWearState::FLAT_RADIUS] : 0.0;
+    g.summit_drop = std::max(summit_drop, 0.0);
     g.effective_radius = r;    // a flat wall: the asperity's own radius
     g.effective_mass = rmass[i];
     for (int k = 0; k < 3; k++) g.normal[k] = normal[k];
@@ -409,6 +413,12 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
       torque[i][k] -= r * tor[k];
       local[LOCAL_FX + k] -= fk;
       if (in_body) sums.body_force[k] += fk;
+    }
+    if (worn_geometry && contact.normal.residual_increment > 0.0) {
+      // the rigid flat does not yield: the asperity's summit sinks by the whole residual growth
+      wear_state[i][FixRuninWearState::VOLUME_FLATTENED] +=
+          FixRuninWearState::flattened_volume(r, summit_drop, contact.normal.residual_increment);
+      fix_wear->refresh_geometry(i);
     }
     local[LOCAL_CONTACTS] += 1.0;
     // the servo regulates the elastic load: with the damping term its own wall speed would feed back

@@ -21,9 +21,11 @@ namespace LAMMPS_NS {
 
 class FixRuninWearState : public Fix {
  public:
-  // VOLUME_LOST: removed by wear; VOLUME_GAINED: deposited by transfer from counter-asperities [m^3].
-  // WEAR_DEPTH h (summit drop) and FLAT_RADIUS a_w follow from them and the radius (truncated sphere).
-  enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, NCOLUMNS };
+  // VOLUME_LOST: removed by wear; VOLUME_GAINED: deposited by transfer from counter-asperities;
+  // VOLUME_FLATTENED: the summit cap pressed flat by plastic contact (displaced, not removed) [m^3].
+  // WEAR_DEPTH h (summit drop) and FLAT_RADIUS a_w follow from them and the radius: one truncated sphere
+  // whose cap volume is lost + flattened - gained, so wear and plastic flattening act on the same summit.
+  enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, VOLUME_FLATTENED, NCOLUMNS };
   static constexpr const char *default_id = "RUNIN_WEAR_STATE";
   // The wear-state fix of this LAMMPS instance (by its ID), or nullptr; the second form creates it
   // for group all when it does not exist yet. Look it up again at init: it may have been redefined.
@@ -47,9 +49,18 @@ class FixRuninWearState : public Fix {
       return;
     }
     const runin::tribo::WornAsperity worn = runin::tribo::worn_asperity(
-        radius, values[i][VOLUME_LOST], values[i][VOLUME_GAINED], values[i][WEAR_DEPTH]);
+        radius, values[i][VOLUME_LOST] + values[i][VOLUME_FLATTENED], values[i][VOLUME_GAINED],
+        values[i][WEAR_DEPTH]);
     values[i][WEAR_DEPTH] = worn.summit_drop;
     values[i][FLAT_RADIUS] = worn.flat_radius;
+  }
+  // Volume of the summit cap pressed flat when the summit of owned atom i (radius R) sinks by a further
+  // depth d from its current drop h: V(h + d) - V(h), V(h) = pi h^2 (3R - h) / 3.
+  static double flattened_volume(double radius, double drop, double depth)
+  {
+    constexpr double kPiThird = 3.14159265358979323846 / 3.0;
+    const double h0 = drop > 0.0 ? drop : 0.0, h1 = h0 + depth;
+    return kPiThird * (h1 * h1 * (3.0 * radius - h1) - h0 * h0 * (3.0 * radius - h0));
   }
   // The same for every owned atom (at setup: volumes or radii may have been set).
   void refresh_geometry_all();

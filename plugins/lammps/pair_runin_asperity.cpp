@@ -57,7 +57,8 @@ PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
   no_virial_fdotr_compute = 1;
   finitecutflag = 1;
   restartinfo = 1;
-  comm_reverse = 2;    // wear and transfer increments (1 without transfer, set at init)
+  comm_reverse = 3;    // wear, transfer and flattening increments (set at init to those in use)
+  comm_gained = comm_flattened = true;
   // slip distance and largest overlap are scalars: do not negate them when LAMMPS swaps i and j
   nondefault_history_transfer = 1;
   beyond_contact = 0;
@@ -161,7 +162,13 @@ void PairRuninAsperity::settings(int narg, char **arg)
                  keyword);
     }
   }
-  if (wear_on && domain->box_exist) attach_wear_state();
+  if ((wear_on || plastic_normal()) && domain->box_exist) attach_wear_state();
+}
+
+bool PairRuninAsperity::plastic_normal() const
+{
+  static const int index = tribo::find_sub_model(SubModelKind::normal, tribo::ElasticPlasticNormalModel::name);
+  return choice.of(SubModelKind::normal) == index;
 }
 
 // The per-atom wear state exists from pair_style on, so dumps and computes can name it before a run.
@@ -343,7 +350,8 @@ void PairRuninAsperity::init_style()
     fix_history->pair = this;
     fix_dummy = nullptr;
   }
-  if (wear_on) attach_wear_state();    // after read_restart, pair_style settings did not run
+  // after read_restart, pair_style settings did not run; plastic flattening needs the state too
+  if (wear_on || plastic_normal()) attach_wear_state();
 
   // largest radius per type bounds the contact cutoff
   std::vector<double> local(atom->ntypes + 1, 0.0);
@@ -353,8 +361,11 @@ void PairRuninAsperity::init_style()
 
   models.assign(coeffs.size(), std::nullopt);
 
-  // transferred volume is communicated only with transfer > 0; reallocate at the first step
-  comm_reverse = contact_settings.transfer_fraction > 0.0 ? 2 : 1;
+  // transferred volume is communicated only with transfer > 0, flattening only with a plastic normal model;
+  // reallocate at the first step
+  comm_gained = contact_settings.transfer_fraction > 0.0;
+  comm_flattened = plastic_normal();
+  comm_reverse = 1 + comm_gained + comm_flattened;
   memory->destroy(increment);
   memory->destroy(worn_owned);
   memory->destroy(worn_ghost);
@@ -417,8 +428,8 @@ void PairRuninAsperity::grow_increments()
   memory->destroy(increment);
   memory->destroy(worn_owned);
   memory->destroy(worn_ghost);
-  memory->create(increment, 2 * nmax_increment, "pair:increment");
-  std::fill(increment, increment + 2 * nmax_increment, 0.0);
+  memory->create(increment, NINCREMENT * nmax_increment, "pair:increment");
+  std::fill(increment, increment + NINCREMENT * nmax_increment, 0.0);
   // one slot per atom, plus the one add_wear writes past the end
   memory->create(worn_owned, nmax_increment + 1, "pair:worn_owned");
   memory->create(worn_ghost, nmax_increment + 1, "pair:worn_ghost");
@@ -429,7 +440,8 @@ void PairRuninAsperity::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   const bool advance = update->setupflag == 0;
-  const bool track_wear = wear_on && advance;
+  // wear and plastic flattening both change the per-atom state through the increments
+  const bool track_wear = (wear_on || (plastic_normal() && reshape)) && advance;
 
   // worn geometry of owned atoms (all of them at setup: radii or volumes may have been set), then ghosts
   if (fix_wear && !advance) fix_wear->refresh_geometry_all();
@@ -452,14 +464,18 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     const double *radius = atom->radius;
     for (int k = 0; k < nworn_owned; k++) {
       const int i = worn_owned[k];
-      state[i][FixRuninWearState::VOLUME_LOST] += increment[2 * i];
-      state[i][FixRuninWearState::VOLUME_GAINED] += increment[2 * i + 1];
-      increment[2 * i] = increment[2 * i + 1] = 0.0;
+      double *inc = &increment[NINCREMENT * i];
+      state[i][FixRuninWearState::VOLUME_LOST] += inc[INC_LOST];
+      state[i][FixRuninWearState::VOLUME_GAINED] += inc[INC_GAINED];
+      if (inc[INC_FLATTENED] > 0.0)
+        state[i][FixRuninWearState::VOLUME_FLATTENED] += FixRuninWearState::flattened_volume(
+            radius[i], state[i][FixRuninWearState::WEAR_DEPTH], inc[INC_FLATTENED]);
+      inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
       fix_wear->refresh_geometry(i, radius[i]);
     }
     for (int k = 0; k < nworn_ghost; k++) {
-      const int i = worn_ghost[k];
-      increment[2 * i] = increment[2 * i + 1] = 0.0;
+      double *inc = &increment[NINCREMENT * worn_ghost[k]];
+      inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
     }
     nworn_owned = nworn_ghost = 0;
   }
@@ -517,6 +533,10 @@ void PairRuninAsperity::eval(int eflag)
   const double step_dt = dt;    // a local: the force stores could alias the member
   const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
   const std::optional<tribo::ContactModel> *const model_table = models.data();
+  // plastic flattening lowers the summits: only with the worn geometry in the contact, and when advancing
+  constexpr bool PLASTIC_MODEL =
+      std::is_same_v<std::tuple_element_t<NORMAL, tribo::NormalModels>, tribo::ElasticPlasticNormalModel>;
+  const bool PLASTIC = PLASTIC_MODEL && RESHAPE && advance && increment != nullptr;
   RuninContactSums local_sums;
   // NaN and inf propagate through the sum of all pair forces: one add per contact replaces a pass over
   // every atom's force (FixRuninFiniteCheck skips its pass for this pair)
@@ -580,7 +600,8 @@ void PairRuninAsperity::eval(int eflag)
     const double rinv = 1.0 / r;
     const double flat =
         RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
-    const tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
+    tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
+    if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
     const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
     const double fn = contact.normal_force;
     const double *ft = contact.tangential.force;
@@ -623,6 +644,12 @@ void PairRuninAsperity::eval(int eflag)
       for (int k = 0; k < 3; k++) local_sums.body_force[k] += side * weight * fpair[k];
     }
 
+    if (PLASTIC && contact.normal.residual_increment > 0.0) {
+      // the summits sink by the growth of the residual interference, shared by the bodies' hardness
+      const double share_i = model.flattening_share_i();
+      add_increment(i, INC_FLATTENED, share_i * contact.normal.residual_increment, nlocal);
+      if (j_here) add_increment(j, INC_FLATTENED, (1.0 - share_i) * contact.normal.residual_increment, nlocal);
+    }
     if (WEAR && contact.tangential.slip_increment > 0.0) {
       const tribo::WearExchange &exchange = contact.wear;
       add_wear(i, exchange.lost_a, exchange.gained_a, nlocal);
@@ -699,8 +726,10 @@ int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int k = 0; k < n; k++) {
-    buf[m++] = increment[2 * (first + k)];
-    if (comm_reverse == 2) buf[m++] = increment[2 * (first + k) + 1];
+    const double *inc = &increment[NINCREMENT * (first + k)];
+    buf[m++] = inc[INC_LOST];
+    if (comm_gained) buf[m++] = inc[INC_GAINED];
+    if (comm_flattened) buf[m++] = inc[INC_FLATTENED];
   }
   return m;
 }
@@ -708,10 +737,13 @@ int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
 void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
+  const int nlocal = atom->nlocal;
   for (int k = 0; k < n; k++) {
     const double lost = buf[m++];
-    const double gained = comm_reverse == 2 ? buf[m++] : 0.0;
-    if (lost != 0.0 || gained != 0.0) add_wear(list[k], lost, gained, atom->nlocal);
+    const double gained = comm_gained ? buf[m++] : 0.0;
+    const double flattened = comm_flattened ? buf[m++] : 0.0;
+    if (lost != 0.0 || gained != 0.0) add_wear(list[k], lost, gained, nlocal);
+    if (flattened != 0.0) add_increment(list[k], INC_FLATTENED, flattened, nlocal);
   }
 }
 

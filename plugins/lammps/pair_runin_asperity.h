@@ -68,19 +68,33 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   bool sums_requested;             // a compute runin/friction exists (set at init): fill 'sums'
   int body_groupbit;               // group whose contact reaction the sums carry (0: none)
 
-  // Wear and transfer increments of one step, owned + ghost, reverse-communicated: {lost, gained} per atom
-  // side by side (one cache line per contact side). All zero between steps: an atom is listed when its
-  // first nonzero increment arrives (sums of volumes >= 0 stay nonzero), and only the listed entries are
+  // Wear, transfer and plastic-flattening increments of one step, owned + ghost, reverse-communicated:
+  // {lost, gained, flattened depth} per atom side by side. All zero between steps: an atom is listed when its
+  // first nonzero increment arrives (sums of values >= 0 stay nonzero), and only the listed entries are
   // applied (owned atoms) and cleared, instead of passes over all owned and ghost atoms.
-  double *increment;               // 2 per atom
+  static constexpr int NINCREMENT = 3;
+  enum Increment { INC_LOST = 0, INC_GAINED, INC_FLATTENED };
+  double *increment;               // NINCREMENT per atom
   int nmax_increment;
   int *worn_owned, *worn_ghost;    // the listed atoms, owned and ghost (nmax_increment + 1 each)
   int nworn_owned, nworn_ghost;
-  void add_wear(int i, double lost, double gained, int nlocal)
+  bool comm_gained, comm_flattened;    // which increments reverse communication carries besides 'lost'
+  void add_increment(int i, int slot_index, double value, int nlocal)
   {
     // branch-free: the slot is always written and kept only for an atom listed now
-    double *slot = &increment[2 * i];
-    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0;
+    double *slot = &increment[NINCREMENT * i];
+    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
+    slot[slot_index] += value;
+    const bool first = was_zero && slot[slot_index] != 0.0, owned = i < nlocal;
+    worn_owned[nworn_owned] = i;
+    worn_ghost[nworn_ghost] = i;
+    nworn_owned += first && owned;
+    nworn_ghost += first && !owned;
+  }
+  void add_wear(int i, double lost, double gained, int nlocal)
+  {
+    double *slot = &increment[NINCREMENT * i];
+    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
     slot[0] += lost;
     slot[1] += gained;
     const bool first = was_zero && (slot[0] != 0.0 || slot[1] != 0.0), owned = i < nlocal;
@@ -118,6 +132,7 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   runin::tribo::ContactCoefficients read_keyword_coefficients(int narg, char **arg);
   void read_optional_coefficients(runin::tribo::ContactParameters &p, int narg, char **arg, int first);
   void set_sub_model(runin::tribo::SubModelKind kind, const std::string &name);
+  bool plastic_normal() const;    // the normal sub-model is elastic/plastic (summits flatten)
 };
 
 }    // namespace LAMMPS_NS

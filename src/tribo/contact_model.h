@@ -32,6 +32,8 @@ struct ContactGeometry {
   double effective_radius = 0.0;    // R* [m]
   double effective_mass = 0.0;      // m* [kg]
   double flat_radius = 0.0;         // b, flat of a worn summit (0: intact sphere) [m]
+  double summit_drop = 0.0;         // how far the summits sit below the intact spheres (wear and plastic
+                                    // flattening, both bodies, >= 0): overlap + drop is the spheres' interference
   double normal[3] = {0.0, 0.0, 0.0};    // unit normal, from the counter-body towards body i
   double normal_velocity = 0.0;     // v_n of i relative to the counter-body (< 0: approach) [m/s]
   double tangential_velocity[3] = {0.0, 0.0, 0.0};    // v_t at the contact point, rolling included [m/s]
@@ -56,6 +58,8 @@ struct NormalContact {
   // model knows plasticity at all (an elastic model leaves ploughing to the cone of friction_strength.h)
   double groove_ploughing = 0.0;
   bool plastic_model = false;
+  // Growth of the residual (plastic) interference in this step [m]: the host lowers the summits by it
+  double residual_increment = 0.0;
 };
 
 // ---------------------------------------------------------------------------------------------------
@@ -110,9 +114,12 @@ class HertzNormalModel {
 // Kligerman & Kadin (2005) unloading and elastic reloading up to the earlier maximum interference, kept per
 // contact in HISTORY_MAX_OVERLAP. Coefficients: E*, and S_y, nu of the yielding (softer) body. The curves
 // are self-similar in R* (omega_c ~ R, P ~ R^2), so one unit-radius curve per type pair serves every size.
-// A worn summit with a flat b is the sphere truncated b^2 / 2R below its top: its interference is
-// delta + b^2 / 2R (the same fully plastic area 2 pi R omega), and the flat reloads elastically (Sneddon)
-// until it reaches that elastic-plastic force.
+// The interference is that of the intact spheres, omega = delta + summit drop. Where the residual
+// interference of omega_max lies below the summits' drop, the difference is returned (residual_increment):
+// the host lowers the summits by it (a flattened cap in the per-asperity truncated-sphere state), so later
+// contacts see the flat. A flat b that the contact's own history does not explain (worn, or flattened by an
+// earlier contact) reloads elastically (Sneddon's flat punch + Hertz) until it reaches the elastic-plastic
+// force at omega.
 class ElasticPlasticNormalModel {
  public:
   static constexpr const char *name = "elastic/plastic";
@@ -133,15 +140,21 @@ class ElasticPlasticNormalModel {
   {
     const double R = g.effective_radius, inv_R = 1.0 / R;
     const double b = g.flat_radius;
-    const double omega = g.overlap + (b > 0.0 ? 0.5 * b * b * inv_R : 0.0);
-    const ElasticPlasticContact ep =
-        elastic_plastic_contact(unit_, omega * inv_R, history[HISTORY_MAX_OVERLAP] * inv_R);
+    const double omega = g.overlap + g.summit_drop;
+    const double omega_max_before = history[HISTORY_MAX_OVERLAP] * inv_R;
+    const ElasticPlasticContact ep = elastic_plastic_contact(unit_, omega * inv_R, omega_max_before);
     NormalContact out;
     out.plastic_model = true;
     out.force = ep.force * R * R;
     out.contact_radius = ep.contact_radius * R;
     out.stiffness = ep.stiffness * R;
-    if (b > 0.0) {
+    // a flat that this contact's own plastic history does not explain (worn, or flattened by an earlier
+    // contact) reloads elastically first
+    const double own_residual = omega_max_before > 0.0 ? ElasticPlasticUnloading::residual_ratio(
+                                                              omega_max_before / unit_.critical_interference()) *
+                                                              omega_max_before * R
+                                                        : 0.0;
+    if (b > 0.0 && g.summit_drop > own_residual * (1.0 + 1e-12)) {
       const FlatHertzContact flat = flat_hertz_contact(e_eff_, R, b, g.overlap);
       if (flat.force < out.force) {
         out.force = flat.force;
@@ -156,14 +169,20 @@ class ElasticPlasticNormalModel {
       const double flow_pressure = peak.force / (3.14159265358979323846 * peak.contact_radius * peak.contact_radius);
       out.groove_ploughing = flow_pressure * sphere_groove_area(1.0, ep.residual_interference) * R * R;
     }
-    if (advance) history[HISTORY_MAX_OVERLAP] = ep.omega_max * R;
+    if (advance && ep.omega_max > omega_max_before) {
+      history[HISTORY_MAX_OVERLAP] = ep.omega_max * R;
+      // the summits sink to the residual interference where it lies below them (a new contact on a summit
+      // that is already flat or worn flattens it only beyond that)
+      const double sink = ep.residual_interference * R - g.summit_drop;
+      out.residual_increment = sink > 0.0 ? sink : 0.0;
+    }
     return out;
   }
   double elastic_energy(const ContactGeometry &g, const double *history) const
   {
     // the energy an unloading would give back: the integral of the current (un)loading curve from its zero
     const double R = g.effective_radius;
-    const double omega = (g.overlap + (g.flat_radius > 0.0 ? 0.5 * g.flat_radius * g.flat_radius / R : 0.0)) / R;
+    const double omega = (g.overlap + g.summit_drop) / R;
     const double omega_max = std::max(history[HISTORY_MAX_OVERLAP] / R, omega);
     const ElasticPlasticUnloading unloading(unit_, omega_max);
     if (!(omega > unloading.residual_interference())) return 0.0;
@@ -488,6 +507,13 @@ class ContactModel {
   double effective_modulus() const;
   double effective_shear_modulus() const { return tangential().effective_shear_modulus(); }
   const ArchardWearModel &wear() const { return *std::get<0>(wear_); }
+  // Part of a contact's plastic flattening taken by body i: the softer body flattens more (1/H, as the wear
+  // of equal k_i).
+  double flattening_share_i() const
+  {
+    const double hi = wear().body_i().hardness(), hj = wear().body_j().hardness();
+    return hj / (hi + hj);
+  }
   const RestitutionDampingModel &damping() const { return *std::get<0>(damping_); }
   const MindlinTangentialModel &tangential() const { return *std::get<0>(tangential_); }
 
