@@ -45,7 +45,7 @@ inline void cross(const double *a, const double *b, double *out)
 const std::map<std::string, int> kKeywordValues = {
     {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
     {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
-    {"strength", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}};
+    {"strength", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}};
 
 // Leads the global restart record that carries the contact model. Older records start with NaN (with the
 // counterface gain) or with z_wall.
@@ -63,6 +63,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
   if (!atom->sphere_flag) error->all(FLERR, "fix runin/wall: requires atom_style sphere");
 
   bool yield_given = false;
+  std::string friction_model_name;    // keyword friction_model; else 'strength' with keyword strength
   double yield_strength = 0.0, yield_poisson = 0.3;
   bool have_zplane = false, have_file = false, have_elastic = false, have_friction = false, have_wear = false;
   int iarg = 3;
@@ -72,7 +73,8 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     if (known == kKeywordValues.end())
       error->all(FLERR,
                  "fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, wear, "
-                 "archard, reshape, vel, vz, load, pressure, servo, strength, restick, transfer, normal or yield)",
+                 "archard, reshape, vel, vz, load, pressure, servo, strength, restick, transfer, normal, yield or "
+                 "friction_model)",
                  keyword);
     const int nvalues = known->second;
     if (iarg + nvalues >= narg)
@@ -148,6 +150,13 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       parameters.ploughing_factor = number(1, "plough");
       choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
           tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
+    } else if (keyword == "friction_model") {
+      try {
+        friction_model_name = values[0];
+        tribo::find_sub_model(tribo::SubModelKind::friction, values[0]);
+      } catch (const tribo::InvalidCoefficient &e) {
+        error->all(FLERR, "fix runin/wall: {}", e.what());
+      }
     } else if (keyword == "normal") {
       try {
         choice.index[static_cast<int>(tribo::SubModelKind::normal)] =
@@ -184,6 +193,9 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
   if (control != Control::displacement && vz_given)
     error->all(FLERR, "fix runin/wall: 'vz' and 'load'/'pressure' exclude each other");
 
+  if (!friction_model_name.empty())
+    choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
+        tribo::find_sub_model(tribo::SubModelKind::friction, friction_model_name);
   // S_y and nu of the yielding body: keyword 'yield', else the material file, else Tabor's H / 2.8
   if (yield_given) {
     parameters.yield_strength = yield_strength;

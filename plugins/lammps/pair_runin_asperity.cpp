@@ -142,8 +142,6 @@ void PairRuninAsperity::settings(int narg, char **arg)
     } else if (keyword == "normal") {
       set_sub_model(SubModelKind::normal, value);
     } else if (keyword == "friction") {
-      if (value != "coulomb" && value != "strength")
-        error->all(FLERR, "pair_style runin/asperity: friction must be 'coulomb' or 'strength', got '{}'", value);
       set_sub_model(SubModelKind::friction, value);
     } else if (keyword == "transfer") {
       const double fraction = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;

@@ -200,6 +200,15 @@ ContactModel::ContactModel(const ContactModelChoice &choice, const ContactCoeffi
                              settings.transfer_fraction);
   if (!(settings.restick_speed >= 0.0) || !std::isfinite(settings.restick_speed))
     throw InvalidCoefficient("restick: speed must be >= 0 m/s and finite");
+  if (std::get<std::optional<BrizmerFrictionModel>>(friction_)) {
+    const auto &plastic = std::get<std::optional<ElasticPlasticNormalModel>>(normal_);
+    if (!plastic)
+      throw InvalidCoefficient("friction model 'brizmer' needs the normal model 'elastic/plastic'");
+    const double nu = plastic->unit_curve().coefficients().poisson_ratio;
+    if (!(nu >= 0.2 && nu < 0.5))
+      throw InvalidCoefficient("nu: friction model 'brizmer' is fitted for a Poisson ratio in [0.2, 0.5), got " +
+                               std::to_string(nu));
+  }
 }
 
 double ContactModel::effective_modulus() const
@@ -253,6 +262,8 @@ ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const
   else if (friction == StrengthFrictionModel::name)
     c.of(K::friction) = {p.mu_static, p.mu_kinetic, p.slip_weakening_distance, p.shear_strength,
                          p.ploughing_factor};
+  else if (friction == BrizmerFrictionModel::name)
+    c.of(K::friction) = {p.slip_weakening_distance, p.shear_strength, p.ploughing_factor};
   c.of(K::wear) = {p.wear_coefficient, p.hardness_i, p.wear_coefficient, p.hardness_j};
   check_coefficient_counts(choice, c);
   return c;

@@ -60,6 +60,8 @@ struct NormalContact {
   bool plastic_model = false;
   // Growth of the residual (plastic) interference in this step [m]: the host lowers the summits by it
   double residual_increment = 0.0;
+  // Full-stick critical load L_c of the equivalent sphere (Brizmer et al.; elastic-plastic models) [N]
+  double stick_critical_load = 0.0;
 };
 
 // ---------------------------------------------------------------------------------------------------
@@ -124,7 +126,11 @@ class ElasticPlasticNormalModel {
  public:
   static constexpr const char *name = "elastic/plastic";
   static constexpr std::array<const char *, 3> coefficient_names{"E*", "S_y", "nu"};
-  explicit ElasticPlasticNormalModel(const double *c) : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]) {}
+  explicit ElasticPlasticNormalModel(const double *c)
+      : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]),
+        stick_critical_load_(BrizmerStaticFriction::critical_load_ratio(c[2]) * unit_.critical_force())
+  {
+  }
   Coefficients values() const
   {
     return {e_eff_, unit_.coefficients().yield_strength, unit_.coefficients().poisson_ratio};
@@ -145,6 +151,7 @@ class ElasticPlasticNormalModel {
     const ElasticPlasticContact ep = elastic_plastic_contact(unit_, omega * inv_R, omega_max_before);
     NormalContact out;
     out.plastic_model = true;
+    out.stick_critical_load = stick_critical_load_ * R * R;
     out.force = ep.force * R * R;
     out.contact_radius = ep.contact_radius * R;
     out.stiffness = ep.stiffness * R;
@@ -198,6 +205,7 @@ class ElasticPlasticNormalModel {
  private:
   double e_eff_;
   JacksonGreen unit_;    // the loading curve of a unit-radius sphere
+  double stick_critical_load_;    // L_c of the unit sphere (fitted for 0.2 <= nu < 0.5; checked by its user)
 };
 
 // Damping: restitution-calibrated viscoelastic damping (contact.h).
@@ -300,6 +308,43 @@ class StrengthFrictionModel {
   AdhesionPloughing strength_;
 };
 
+// Friction limit of the elastic-plastic sphere: the static limit of Brizmer, Kligerman & Etsion (2007),
+// mu_s = 0.27 coth(0.27 (P / L_c)^0.35) (full stick, L_c from the normal model), falls over the slip
+// distance d_c to the kinetic strength tau_s A_r + groove ploughing (as 'strength' with an elastic-plastic
+// normal model). Needs the elastic/plastic normal model with 0.2 <= nu < 0.5 (checked by ContactModel).
+class BrizmerFrictionModel {
+ public:
+  static constexpr const char *name = "brizmer";
+  static constexpr std::array<const char *, 3> coefficient_names{"d_c", "tau_s", "plough"};
+  explicit BrizmerFrictionModel(const double *c) : d_c_(c[0]), strength_(c[1], c[2])
+  {
+    if (!(c[0] >= 0.0) || !std::isfinite(c[0])) throw InvalidCoefficient("d_c: slip distance must be >= 0");
+  }
+  Coefficients values() const { return {d_c_, strength_.shear_strength(), strength_.ploughing_factor()}; }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    return {mix_geometric(ii[0], jj[0]), mix_geometric(ii[1], jj[1]), mix_geometric(ii[2], jj[2])};
+  }
+  double limit(double slip, double normal_force, const NormalContact &normal, double,
+               FrictionStrengthParts &parts) const
+  {
+    if (!(normal_force > 0.0)) return 0.0;
+    parts.adhesion =
+        strength_.shear_strength() * 3.14159265358979323846 * normal.contact_radius * normal.contact_radius;
+    parts.ploughing = strength_.ploughing_factor() * normal.groove_ploughing;
+    const double kinetic = parts.total();
+    const double weight = slip <= 0.0 ? 1.0 : (d_c_ > 0.0 ? 1.0 - slip / d_c_ : 0.0);
+    if (!(weight > 0.0) || !(normal.stick_critical_load > 0.0)) return kinetic;
+    const double stick =
+        BrizmerStaticFriction::coefficient_at(normal_force / normal.stick_critical_load) * normal_force;
+    return stick > kinetic ? kinetic + (stick - kinetic) * weight : kinetic;
+  }
+
+ private:
+  double d_c_;
+  AdhesionPloughing strength_;
+};
+
 // Wear: Archard for each body with its own coefficient and hardness, V_i = k_i W s / H_i (the thesis's form
 // divides by 3). A fraction 'transfer' of what one body loses is deposited on the other; the rest is debris.
 class ArchardWearModel {
@@ -354,7 +399,7 @@ class ArchardWearModel {
 using NormalModels = std::tuple<HertzNormalModel, ElasticPlasticNormalModel>;
 using DampingModels = std::tuple<RestitutionDampingModel>;
 using TangentialModels = std::tuple<MindlinTangentialModel>;
-using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel>;
+using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel, BrizmerFrictionModel>;
 using WearModels = std::tuple<ArchardWearModel>;
 
 enum class SubModelKind { normal = 0, damping, tangential, friction, wear };

@@ -211,10 +211,12 @@ class BrizmerStaticFriction {
   }
   double critical_load() const { return critical_load_; }    // L_c [N]
   // mu_s at normal load P > 0 (+inf at P <= 0, where limit_force is 0).
-  double coefficient(double normal_force) const
+  double coefficient(double normal_force) const { return coefficient_at(normal_force * inv_critical_load_); }
+  // mu_s at the normalised load P / L_c (the fit itself; +inf at P <= 0).
+  static double coefficient_at(double load_ratio)
   {
-    if (!(normal_force > 0.0)) return HUGE_VAL;
-    return 0.27 / std::tanh(0.27 * std::pow(normal_force * inv_critical_load_, 0.35));
+    if (!(load_ratio > 0.0)) return HUGE_VAL;
+    return 0.27 / std::tanh(0.27 * std::pow(load_ratio, 0.35));
   }
   // mu_s P: the tangential force at sliding inception [N]; P^0.65 L_c^0.35 for P << L_c, 0 at P <= 0.
   double limit_force(double normal_force) const
