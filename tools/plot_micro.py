@@ -33,12 +33,14 @@ def main(data_path, png_path, title="RunIn micro: rough Cu-on-Al asperity slider
     roughness = "c_rough[2]" in data
     fig, axes = plt.subplots(3 if roughness else 2, 1, figsize=(7, 8 if roughness else 6), sharex=True)
     ax_mu, ax_wear = axes[0], axes[1]
-    ax_mu.plot(s_um, column("c_fric[3]"), color="tab:red", label="mu_eff")
+    if "c_fric[16]" in data:
+        ax_mu.plot(s_um, column("c_fric[16]"), color="black", label="mu_body (reaction on the body)")
+    ax_mu.plot(s_um, column("c_fric[3]"), color="tab:red", label="mu_eff (contact frames)")
     if "c_fric[6]" in data and any(column("c_fric[6]")):
         ax_mu.plot(s_um, column("c_fric[6]"), color="tab:orange", linestyle="--", label="adhesion part")
         ax_mu.plot(s_um, column("c_fric[7]"), color="tab:brown", linestyle="-.", label="ploughing part")
-        ax_mu.legend(fontsize=8)
-    ax_mu.set_ylabel("mu_eff = |sum F_t| / sum F_n")
+    ax_mu.legend(fontsize=8)
+    ax_mu.set_ylabel("friction coefficient")
     ax_mu.set_title(title)
     ax_mu.grid(alpha=0.3)
     ax_wear.plot(s_um, column("c_fric[5]", 1e18), color="tab:blue")
