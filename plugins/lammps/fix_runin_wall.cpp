@@ -396,7 +396,7 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
       // the spring and slip belong to one contact; the largest interference belongs to the asperity under
       // this flat and stays, so a reload retraces the elastic unloading curve up to it
       for (int k = 0; k < HISTORY_SIZE; k++)
-        if (k != tribo::HISTORY_MAX_OVERLAP) history[i][k] = 0.0;
+        if (!tribo::is_plastic_history(k)) history[i][k] = 0.0;
       continue;
     }
     g.flat_radius = worn_geometry ? wear_state[i][FixRuninWearState::FLAT_RADIUS] : 0.0;

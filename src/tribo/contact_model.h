@@ -45,9 +45,19 @@ enum ContactHistorySlot {
   HISTORY_SPRING_Y,
   HISTORY_SPRING_Z,
   HISTORY_SLIP,           // accumulated slip distance (static -> kinetic weakening)
-  HISTORY_MAX_OVERLAP,    // largest overlap of this contact (elastic-plastic unloading)
+  // elastic-plastic normal model: the largest interference omega_max of this contact [m], then the values
+  // of its unloading curve, kept so that a contact below omega_max costs one power (R* = 1 units)
+  HISTORY_MAX_OVERLAP,
+  HISTORY_RESIDUAL,       // omega_res / R
+  HISTORY_MAX_FORCE,      // P(omega_max) / R^2
+  HISTORY_MAX_RADIUS,     // a(omega_max) / R
+  HISTORY_EXPONENT,       // EKK unloading exponent n
+  HISTORY_GROOVE,         // ploughing force of the groove / R^2
   CONTACT_HISTORY_SIZE
 };
+// The slots that belong to the surface of the asperity under a rigid flat rather than to one contact
+// (kept by fix runin/wall when the contact opens).
+constexpr bool is_plastic_history(int slot) { return slot >= HISTORY_MAX_OVERLAP; }
 
 // Output of a normal sub-model.
 struct NormalContact {
@@ -127,7 +137,7 @@ class ElasticPlasticNormalModel {
   static constexpr const char *name = "elastic/plastic";
   static constexpr std::array<const char *, 3> coefficient_names{"E*", "S_y", "nu"};
   explicit ElasticPlasticNormalModel(const double *c)
-      : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]),
+      : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]), inv_omega_c_(1.0 / unit_.critical_interference()),
         stick_critical_load_(BrizmerStaticFriction::critical_load_ratio(c[2]) * unit_.critical_force())
   {
   }
@@ -145,42 +155,73 @@ class ElasticPlasticNormalModel {
   NormalContact evaluate(const ContactGeometry &g, double *history, bool advance) const
   {
     const double R = g.effective_radius, inv_R = 1.0 / R;
-    const double b = g.flat_radius;
-    const double omega = g.overlap + g.summit_drop;
-    const double omega_max_before = history[HISTORY_MAX_OVERLAP] * inv_R;
-    const ElasticPlasticContact ep = elastic_plastic_contact(unit_, omega * inv_R, omega_max_before);
+    const double omega = (g.overlap + g.summit_drop) * inv_R;    // R = 1 units until the end
+    const double omega_max = history[HISTORY_MAX_OVERLAP] * inv_R;
+    const double cached_residual = history[HISTORY_RESIDUAL];
     NormalContact out;
     out.plastic_model = true;
     out.stick_critical_load = stick_critical_load_ * R * R;
-    out.force = ep.force * R * R;
-    out.contact_radius = ep.contact_radius * R;
-    out.stiffness = ep.stiffness * R;
+    const bool loading = omega >= omega_max;
+    double residual = cached_residual, exponent = 0.0;
+
+    if (loading) {
+      // the Jackson-Green curve
+      const ContactPoint p = unit_.evaluate(omega);
+      const double x = omega * inv_omega_c_;
+      residual = ElasticPlasticUnloading::residual_ratio(x) * omega;
+      exponent = ElasticPlasticUnloading::unloading_exponent(x);
+      out.force = p.force;
+      out.contact_radius = p.contact_radius;
+      out.stiffness = p.stiffness;
+      if (residual > 0.0)
+        out.groove_ploughing =
+            p.force / (kPi * p.contact_radius * p.contact_radius) * sphere_groove_area(1.0, residual);
+    } else if (!(cached_residual > 0.0)) {
+      // an elastic history: unloading is the (Hertz) loading curve itself
+      const ContactPoint p = unit_.evaluate(omega);
+      out.force = p.force;
+      out.contact_radius = p.contact_radius;
+      out.stiffness = p.stiffness;
+    } else {
+      // EKK unloading / elastic reloading below omega_max, P = P_max s^n and a = a_max s^(n-1), from the
+      // cached curve; 0 once the contact has opened (the groove stays)
+      out.groove_ploughing = history[HISTORY_GROOVE];
+      if (omega > cached_residual) {
+        const double gap = omega - cached_residual;
+        const double s = gap / (omega_max - cached_residual);
+        const double n = history[HISTORY_EXPONENT];
+        const double s_n = std::exp(n * std::log(s));
+        out.force = history[HISTORY_MAX_FORCE] * s_n;
+        out.stiffness = n * out.force / gap;
+        out.contact_radius = history[HISTORY_MAX_RADIUS] * s_n / s;
+      }
+    }
+    out.force *= R * R;
+    out.contact_radius *= R;
+    out.stiffness *= R;
+    out.groove_ploughing *= R * R;
+
     // a flat that this contact's own plastic history does not explain (worn, or flattened by an earlier
-    // contact) reloads elastically first
-    const double own_residual = omega_max_before > 0.0 ? ElasticPlasticUnloading::residual_ratio(
-                                                              omega_max_before / unit_.critical_interference()) *
-                                                              omega_max_before * R
-                                                        : 0.0;
-    if (b > 0.0 && g.summit_drop > own_residual * (1.0 + 1e-12)) {
-      const FlatHertzContact flat = flat_hertz_contact(e_eff_, R, b, g.overlap);
+    // contact) reloads elastically (Sneddon) until it reaches the elastic-plastic force
+    if (g.flat_radius > 0.0 && g.summit_drop > cached_residual * R * (1.0 + 1e-12)) {
+      const FlatHertzContact flat = flat_hertz_contact(e_eff_, R, g.flat_radius, g.overlap);
       if (flat.force < out.force) {
         out.force = flat.force;
         out.contact_radius = flat.contact_radius;
         out.stiffness = flat.stiffness;
-        return out;    // elastic reload of the flat: no new plastic history
+        return out;    // elastic: no new plastic history
       }
     }
-    if (ep.plastic) {
-      // the groove left behind, pushed at the mean pressure of the largest load (the flow pressure)
-      const ContactPoint peak = unit_.evaluate(ep.omega_max);
-      const double flow_pressure = peak.force / (3.14159265358979323846 * peak.contact_radius * peak.contact_radius);
-      out.groove_ploughing = flow_pressure * sphere_groove_area(1.0, ep.residual_interference) * R * R;
-    }
-    if (advance && ep.omega_max > omega_max_before) {
-      history[HISTORY_MAX_OVERLAP] = ep.omega_max * R;
+    if (advance && loading && omega > omega_max) {
+      history[HISTORY_MAX_OVERLAP] = omega * R;
+      history[HISTORY_RESIDUAL] = residual;
+      history[HISTORY_MAX_FORCE] = out.force * inv_R * inv_R;
+      history[HISTORY_MAX_RADIUS] = out.contact_radius * inv_R;
+      history[HISTORY_EXPONENT] = exponent;
+      history[HISTORY_GROOVE] = out.groove_ploughing * inv_R * inv_R;
       // the summits sink to the residual interference where it lies below them (a new contact on a summit
       // that is already flat or worn flattens it only beyond that)
-      const double sink = ep.residual_interference * R - g.summit_drop;
+      const double sink = residual * R - g.summit_drop;
       out.residual_increment = sink > 0.0 ? sink : 0.0;
     }
     return out;
@@ -203,8 +244,10 @@ class ElasticPlasticNormalModel {
   const JacksonGreen &unit_curve() const { return unit_; }
 
  private:
+  static constexpr double kPi = 3.14159265358979323846;
   double e_eff_;
   JacksonGreen unit_;    // the loading curve of a unit-radius sphere
+  double inv_omega_c_;   // 1 / omega_c of the unit sphere
   double stick_critical_load_;    // L_c of the unit sphere (fitted for 0.2 <= nu < 0.5; checked by its user)
 };
 
