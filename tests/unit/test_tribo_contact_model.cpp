@@ -1,0 +1,149 @@
+// The one contact model (src/tribo/contact_model.h): registry, coefficient checks, mixing, restart records,
+// and the elastic-plastic sub-model's cached unloading path against the kernel of elastic_plastic.h.
+#include "tribo/contact_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace tribo = runin::tribo;
+using tribo::SubModelKind;
+
+namespace {
+
+tribo::ContactModelChoice choice_of(const char *normal, const char *friction)
+{
+  tribo::ContactModelChoice c;
+  c.index[static_cast<int>(SubModelKind::normal)] = tribo::find_sub_model(SubModelKind::normal, normal);
+  c.index[static_cast<int>(SubModelKind::friction)] = tribo::find_sub_model(SubModelKind::friction, friction);
+  return c;
+}
+
+tribo::ContactParameters steel()
+{
+  tribo::ContactParameters p;
+  p.effective_modulus = 1.092e11;
+  p.effective_shear_modulus = 4.3e10;
+  p.restitution = 1.0;
+  p.mu_static = 0.5;
+  p.mu_kinetic = 0.4;
+  p.slip_weakening_distance = 2e-8;
+  p.wear_coefficient = 1e-3;
+  p.hardness_i = 1.19e9;
+  p.hardness_j = 6.0e9;
+  p.shear_strength = 2e7;
+  p.yield_strength = 350e6;
+  p.poisson_ratio = 0.29;
+  return p;
+}
+
+}    // namespace
+
+TEST(ContactModelRegistry, NamesAndUnknownModelsListTheKnownOnes)
+{
+  EXPECT_EQ(tribo::find_sub_model(SubModelKind::normal, "hertz"), 0);
+  EXPECT_EQ(tribo::find_sub_model(SubModelKind::normal, "elastic/plastic"), 1);
+  try {
+    tribo::find_sub_model(SubModelKind::friction, "amontons");
+    FAIL() << "an unknown friction model was accepted";
+  } catch (const tribo::InvalidCoefficient &e) {
+    EXPECT_EQ(std::string(e.what()), "unknown friction model 'amontons' (known: coulomb, strength, brizmer)");
+  }
+}
+
+TEST(ContactModelRegistry, WrongCoefficientCountNamesTheExpectedOnes)
+{
+  const auto choice = choice_of("elastic/plastic", "coulomb");
+  tribo::ContactCoefficients c = tribo::contact_coefficients(choice, steel());
+  c.of(SubModelKind::normal).pop_back();
+  try {
+    tribo::check_coefficient_counts(choice, c);
+    FAIL() << "a short coefficient list was accepted";
+  } catch (const tribo::InvalidCoefficient &e) {
+    EXPECT_EQ(std::string(e.what()), "normal model 'elastic/plastic' takes 3 coefficient(s) (E* S_y nu), got 2");
+  }
+}
+
+TEST(ContactModelRegistry, ImpossibleCoefficientsNameTheCoefficient)
+{
+  const auto choice = choice_of("elastic/plastic", "brizmer");
+  tribo::ContactParameters p = steel();
+  p.yield_strength = -1.0;
+  EXPECT_THROW(tribo::ContactModel(choice, tribo::contact_coefficients(choice, p), {}), tribo::InvalidCoefficient);
+  p = steel();
+  p.poisson_ratio = 0.1;    // outside the Brizmer fit
+  try {
+    tribo::ContactModel(choice, tribo::contact_coefficients(choice, p), {});
+    FAIL() << "nu = 0.1 was accepted by the brizmer friction model";
+  } catch (const tribo::InvalidCoefficient &e) {
+    EXPECT_EQ(std::string(e.what()).rfind("nu: friction model 'brizmer'", 0), 0u) << e.what();
+  }
+  EXPECT_THROW(tribo::ContactModel(choice_of("hertz", "brizmer"),
+                                   tribo::contact_coefficients(choice_of("hertz", "brizmer"), steel()), {}),
+               tribo::InvalidCoefficient);
+}
+
+// 1/E*_ij = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j: mixing the like pairs gives it exactly.
+TEST(ContactModelMixing, EffectiveModuliOfUnlikeMaterialsAreExact)
+{
+  const tribo::Material al{69e9, 0.33, 0.245e9, 34e6}, cu{110e9, 0.37, 0.87e9, 250e6};
+  const auto choice = choice_of("elastic/plastic", "coulomb");
+  const auto ii = tribo::contact_coefficients(choice, tribo::contact_parameters(al, al, 0.5, 0.6, 0.4, 0.0, 1e-3));
+  const auto jj = tribo::contact_coefficients(choice, tribo::contact_parameters(cu, cu, 0.5, 0.6, 0.4, 0.0, 1e-3));
+  const auto ij = tribo::mix_coefficients(choice, ii, jj);
+  EXPECT_NEAR(ij.of(SubModelKind::normal)[0], tribo::effective_modulus(al, cu), 1e-15 * 5e10);
+  EXPECT_NEAR(ij.of(SubModelKind::tangential)[0], tribo::effective_shear_modulus(al, cu), 1e-15 * 2e10);
+  EXPECT_EQ(ij.of(SubModelKind::normal)[1], 34e6);    // the softer body yields
+  // each body keeps its own wear coefficient and hardness
+  EXPECT_EQ(ij.of(SubModelKind::wear)[1], al.hardness);
+  EXPECT_EQ(ij.of(SubModelKind::wear)[3], cu.hardness);
+}
+
+TEST(ContactModelRestart, RecordRoundTripsAndNamesADifferentChoice)
+{
+  const auto choice = choice_of("elastic/plastic", "strength");
+  const auto c = tribo::contact_coefficients(choice, steel());
+  const std::vector<double> record = tribo::serialize(choice, c);
+  const auto back = tribo::deserialize(record.data(), static_cast<int>(record.size()));
+  EXPECT_TRUE(back.first == choice);
+  for (int k = 0; k < tribo::kSubModelKinds; ++k) EXPECT_EQ(back.second.values[k], c.values[k]);
+  EXPECT_EQ(tribo::describe_difference(back.first, choice_of("hertz", "strength")),
+            "normal model: restart 'elastic/plastic', input 'hertz'");
+  EXPECT_THROW(tribo::deserialize(record.data(), static_cast<int>(record.size()) - 3), tribo::InvalidCoefficient);
+}
+
+// The elastic-plastic sub-model caches each contact's unloading curve in the history; along a load-unload-
+// reload path it must give the kernel's elastic_plastic_contact() (the published equations) to round-off.
+TEST(ContactModelElasticPlastic, CachedHistoryPathEqualsTheKernel)
+{
+  const auto choice = choice_of("elastic/plastic", "coulomb");
+  const tribo::ContactParameters p = steel();
+  const tribo::ContactModel model(choice, tribo::contact_coefficients(choice, p), {});
+  const double R = 2e-5;
+  const tribo::JacksonGreen curve(p.effective_modulus, R, p.yield_strength, p.poisson_ratio);
+  const double omega_c = curve.critical_interference();
+  double history[tribo::CONTACT_HISTORY_SIZE] = {0.0};
+  double omega_max = 0.0;
+  int checked = 0;
+  // 0 -> 30 omega_c -> 5 omega_c -> 60 omega_c
+  for (double target : {30.0, 5.0, 60.0}) {
+    const double start = checked == 0 ? 0.0 : (target == 5.0 ? 30.0 : 5.0);
+    for (int k = 1; k <= 200; ++k) {
+      const double omega = (start + (target - start) * k / 200.0) * omega_c;
+      tribo::ContactGeometry g;
+      g.overlap = omega;
+      g.effective_radius = R;
+      g.effective_mass = 1.0;
+      g.normal[2] = 1.0;
+      const tribo::ContactResult got = model.evaluate<1, 0, 0>(g, history, 1e-9, true);
+      const tribo::ElasticPlasticContact want = tribo::elastic_plastic_contact(curve, omega, omega_max);
+      omega_max = want.omega_max;
+      EXPECT_NEAR(got.normal.force, want.force, 1e-12 * curve.force(60.0 * omega_c)) << omega / omega_c;
+      EXPECT_NEAR(got.normal.contact_radius, want.contact_radius, 1e-12 * R) << omega / omega_c;
+      EXPECT_NEAR(history[tribo::HISTORY_MAX_OVERLAP], omega_max, 1e-15 * omega_max);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 600);
+}
