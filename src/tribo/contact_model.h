@@ -168,8 +168,14 @@ class ElasticPlasticNormalModel {
       // the Jackson-Green curve
       const ContactPoint p = unit_.evaluate(omega);
       const double x = omega * inv_omega_c_;
-      residual = ElasticPlasticUnloading::residual_ratio(x) * omega;
-      exponent = ElasticPlasticUnloading::unloading_exponent(x);
+      if (x > 1.0) {
+        const double log_x = std::log(x);
+        residual = ElasticPlasticUnloading::residual_ratio_of_log(log_x) * omega;
+        exponent = ElasticPlasticUnloading::unloading_exponent_of_log(log_x);
+      } else {
+        residual = 0.0;
+        exponent = 1.5;
+      }
       out.force = p.force;
       out.contact_radius = p.contact_radius;
       out.stiffness = p.stiffness;

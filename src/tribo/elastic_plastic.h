@@ -117,15 +117,21 @@ class ElasticPlasticUnloading {
   {
     const double x = normalised_max_interference;
     if (!(x > 1.0)) return 0.0;
-    return (1.0 - std::pow(x, -0.28)) * (1.0 - std::pow(x, -0.69));
+    return residual_ratio_of_log(std::log(x));
   }
   // The unloading exponent n = 1.5 omega*_max^(-0.0331) of EKK (3/2 for omega*_max <= 1).
   static double unloading_exponent(double normalised_max_interference)
   {
     const double x = normalised_max_interference;
     if (!(x > 1.0)) return 1.5;
-    return 1.5 * std::pow(x, -0.0331);
+    return unloading_exponent_of_log(std::log(x));
   }
+  // The same from ln(omega*_max) > 0 (one logarithm serves both, and exp is cheaper than pow).
+  static double residual_ratio_of_log(double log_x)
+  {
+    return (-std::expm1(-0.28 * log_x)) * (-std::expm1(-0.69 * log_x));
+  }
+  static double unloading_exponent_of_log(double log_x) { return 1.5 * std::exp(-0.0331 * log_x); }
 
   ContactPoint evaluate(double omega) const;    // header-inline
   double force(double omega) const { return evaluate(omega).force; }
