@@ -220,7 +220,7 @@ void PairRuninAsperity::coeff(int narg, char **arg)
                  narg);
     }
     read_optional_coefficients(p, narg, arg, optional_first);
-    if (p.yield_from_hardness && choice.of(SubModelKind::normal) ==
+    if (p.yield_from_hardness && p.yield_strength > 0.0 && choice.of(SubModelKind::normal) ==
                                      tribo::find_sub_model(SubModelKind::normal, tribo::ElasticPlasticNormalModel::name))
       error->warning(FLERR,
                      "pair_coeff runin/asperity {} {}: no yield strength given (S_y keyword or material file): "

@@ -192,12 +192,13 @@ ContactModel::ContactModel(const ContactModelChoice &choice, const ContactCoeffi
 {
   check_coefficient_counts(choice, c);
   using K = SubModelKind;
+  // the materials' hardness first: the elastic-plastic yield strength may have been derived from it
+  emplace_chosen<WearModels>(wear_, choice.of(K::wear), c.of(K::wear).data(), settings.archard_form,
+                             settings.transfer_fraction);
   emplace_chosen<NormalModels>(normal_, choice.of(K::normal), c.of(K::normal).data());
   emplace_chosen<DampingModels>(damping_, choice.of(K::damping), c.of(K::damping).data());
   emplace_chosen<TangentialModels>(tangential_, choice.of(K::tangential), c.of(K::tangential).data());
   emplace_chosen<FrictionModels>(friction_, choice.of(K::friction), c.of(K::friction).data());
-  emplace_chosen<WearModels>(wear_, choice.of(K::wear), c.of(K::wear).data(), settings.archard_form,
-                             settings.transfer_fraction);
   if (!(settings.restick_speed >= 0.0) || !std::isfinite(settings.restick_speed))
     throw InvalidCoefficient("restick: speed must be >= 0 m/s and finite");
   if (std::get<std::optional<BrizmerFrictionModel>>(friction_)) {
