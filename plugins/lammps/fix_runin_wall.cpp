@@ -14,6 +14,7 @@
 #include "domain.h"
 #include "error.h"
 #include "input.h"
+#include "math_extra.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -32,14 +33,6 @@ using namespace FixConst;
 namespace tribo = runin::tribo;
 
 namespace {
-
-inline double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline void cross(const double *a, const double *b, double *out)
-{
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 // Values per keyword (after the keyword itself).
 const std::map<std::string, int> kKeywordValues = {
@@ -405,10 +398,10 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
     g.effective_mass = rmass[i];
     for (int k = 0; k < 3; k++) g.normal[k] = normal[k];
     const double vr[3] = {v[i][0] - wall_velocity[0], v[i][1] - wall_velocity[1], v[i][2] - wall_velocity[2]};
-    g.normal_velocity = dot(vr, normal);
+    g.normal_velocity = MathExtra::dot3(vr, normal);
     const double spin[3] = {r * omega[i][0], r * omega[i][1], r * omega[i][2]};
     double spin_velocity[3];
-    cross(normal, spin, spin_velocity);
+    MathExtra::cross3(normal, spin, spin_velocity);
     for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * normal[k] + spin_velocity[k];
 
     const tribo::ContactResult contact = model->evaluate<NORMAL, FRICTION, 1>(g, history[i], dt, advance);
@@ -417,7 +410,7 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
     if (!std::isfinite(fn + ft[0] + ft[1] + ft[2])) first_bad = std::min(first_bad, tag[i]);
 
     double tor[3];
-    cross(normal, ft, tor);
+    MathExtra::cross3(normal, ft, tor);
     const bool in_body = (mask[i] & body_groupbit) != 0;
     for (int k = 0; k < 3; k++) {
       const double fk = fn * normal[k] + ft[k];

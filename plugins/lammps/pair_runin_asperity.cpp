@@ -16,6 +16,7 @@
 #include "fix_neigh_history.h"
 #include "force.h"
 #include "math_const.h"
+#include "math_extra.h"
 #include "memory.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -34,14 +35,6 @@ namespace {
 const char *const kDummyId = "NEIGH_HISTORY_RUNIN_DUMMY";
 const char *const kHistoryId = "NEIGH_HISTORY_RUNIN";
 using tribo::SubModelKind;
-
-inline double dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline void cross(const double *a, const double *b, double *out)
-{
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 }    // namespace
 
@@ -498,11 +491,11 @@ tribo::ContactGeometry PairRuninAsperity::contact_geometry(int i, int j, double 
   g.effective_radius = radi * radj * mass_sum * inv_sums;
   // relative velocity of i w.r.t. j at the contact point
   const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-  g.normal_velocity = dot(vr, g.normal);
+  g.normal_velocity = MathExtra::dot3(vr, g.normal);
   const double spin[3] = {radi * omega[i][0] + radj * omega[j][0], radi * omega[i][1] + radj * omega[j][1],
                           radi * omega[i][2] + radj * omega[j][2]};
   double spin_velocity[3];
-  cross(g.normal, spin, spin_velocity);
+  MathExtra::cross3(g.normal, spin, spin_velocity);
   for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * g.normal[k] + spin_velocity[k];
   return g;
 }
@@ -571,7 +564,7 @@ void PairRuninAsperity::eval(int eflag)
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
-      const double rsq = dot(del, del);
+      const double rsq = MathExtra::dot3(del, del);
       const double reach = summit_reach(radi, radius[j], depth_i, wear_depth(j));
       const bool in_contact = (!RESHAPE || reach > 0.0) && rsq < reach * reach;
       out[ntouching] = {i, j, &allhistory[HISTORY_SIZE * jj]};
@@ -590,7 +583,7 @@ void PairRuninAsperity::eval(int eflag)
     const int itype = type[i];
     const double radi = radius[i], radj = radius[j];
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-    const double rsq = dot(del, del);
+    const double rsq = MathExtra::dot3(del, del);
     const double reach = summit_reach(radi, radj, wear_depth(i), wear_depth(j));
     const int jtype = type[j];
     const tribo::ContactModel &model = *model_table[itype * ntypes1 + jtype];
@@ -608,7 +601,7 @@ void PairRuninAsperity::eval(int eflag)
     const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
     force_sum += fpair[0] + fpair[1] + fpair[2];
     double tor[3];
-    cross(normal, ft, tor);
+    MathExtra::cross3(normal, ft, tor);
     const bool j_here = newton_pair || j < nlocal;
     // torque about each centre at the contact point, R - delta/2 from it (LAMMPS's pair granular)
     const double arm_i = radi - 0.5 * g.overlap, arm_j = radj - 0.5 * g.overlap;
