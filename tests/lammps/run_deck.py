@@ -156,16 +156,27 @@ def dump_snapshots(text):
     return snapshots
 
 
+def deck_value(deck, name):
+    """The default of 'variable NAME index VALUE' (or the 'timestep VALUE') of a deck, as a float."""
+    text = open(os.path.join(SOURCE_DIR, deck)).read()
+    pattern = r"^timestep\s+(\S+)" if name == "timestep" else rf"^variable\s+{name}\s+index\s+(\S+)"
+    return float(re.search(pattern, text, re.M).group(1))
+
+
 def run_slider(args):
     """Short deterministic slide of the micro deck, long enough that atoms migrate between ranks.
 
-    6000 steps slide the counter-body 1.2 um: its column next to the periodic x face (0.5 a_top = 1.03 um
-    from it) crosses it by more than skin/2, so with 2 and 4 ranks atoms change rank (checked below).
+    After the deck's settling (in contact from about step 600 on), 6000 steps at 0.5 m/s (5 nm a step) slide
+    the counter-body 30 um: its column next to the periodic x face (0.5 a_top = 10.3 um from it) crosses it by
+    more than skin/2 (0.5 um), so with 2 and 4 ranks atoms change rank (checked below). The square box gives
+    LAMMPS no preference between cuts across and along x (the sliding direction): px 2 puts them across.
     """
     fresh_dir(args.workdir)
-    log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck),
-                     {"coeffs": os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"), "nsettle": 200, "nslide": 6000,
-                      "thermo_every": 50}, np=args.np)
+    variables = {"coeffs": os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"), "nslide": 6000, "speed": 0.5,
+                 "thermo_every": 50}
+    if args.np > 1:
+        variables["px"] = 2
+    log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck), variables, np=args.np)
     blocks = thermo_blocks(log)
     if len(blocks) != 2:
         fail(f"expected the settle and slide thermo tables, found {len(blocks)}")
@@ -207,7 +218,8 @@ def run_slider(args):
 def archard_budget(args):
     """Steady sliding: total wear must follow per-body Archard, V = k W s (1/H_Al + 1/H_Cu), for the deck's load."""
     fresh_dir(args.workdir)
-    nslide, speed, dt, load = 4000, 2.0, 1.0e-10, 5.0e-2
+    nslide = 4000
+    speed, dt, load = (deck_value(args.deck, name) for name in ("speed", "timestep", "load"))
     k, hardness_al, hardness_cu = 1.0e-3, 0.245e9, 0.87e9    # potentials/CuAl.runin: pair k, materials' H
     log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck),
                      {"coeffs": os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"), "nslide": nslide,

@@ -5,12 +5,15 @@
   runin_signature.py worn-heights --lmp LMP --workdir DIR [--mpiexec MPIEXEC --np N]
 
 signature: inputs/in.runin_wall, a flat counterface (fix runin/wall, load control) sliding over a
-Gaussian summit layer with Archard wear and the adhesion + ploughing friction strength, then a dwell
-and a restart. Asserted, with the margins below:
+Gaussian layer of elastic-plastic steel summits with Archard wear and the adhesion + ploughing friction
+strength, then a dwell and a restart. Asserted, with the margins below:
   - the servo holds the normal load (end of loading and all of sliding);
-  - mu_eff falls from its break-away peak to a plateau, and the ploughing part, the one that falls as
-    the summits flatten, falls with it;
-  - Rq falls and Rsk goes from ~0 (Gaussian) to clearly negative (plateau honing);
+  - mu_eff falls from its break-away peak to the kinetic level, and the ploughing part (the plastic
+    groove) falls as wear cuts flats into the summits;
+  - the kinetic level then rises by adhesion alone: the adhesion part is tau_s A_r / W at every row and
+    grows with the real area of the worn flats (no plateau, see doc/decks.md); mu_eff stays below its peak;
+  - the unloaded sample is Gaussian (Rsk ~ 0); sliding lowers Rq and makes Rsk clearly negative (plateau
+    honing) beyond what the plastic flattening of the first loading did;
   - the worn volume is Archard's k F s / H_soft and splits between asperities and wall as 1/H;
   - after a dwell the contacts have re-stuck: the break-away peak (static excess mu_s - mu_k) returns.
 worn-heights: compute runin/roughness on preset worn asperities (tests/lammps/decks/in.roughness_worn),
@@ -26,19 +29,38 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps, thermo_blocks, worn  # noqa: E402
 
 # Values of inputs/in.runin_wall (its defaults and its fix runin/wall line).
-LOAD = 1.0                              # N
+LOAD = 20.0                             # N
 WEAR_K, H_ASPERITY, H_WALL = 7.0e-3, 1.19e9, 6.0e9
 STATIC_EXCESS = 0.74 - 0.57             # mu_s - mu_k
+TAU_S = 2.0e7                           # Pa, the deck's boundary-film shear strength
+# Thermo every 2 steps (4 nm of sliding): the static excess decays over d_c = 20 nm of slip, so the break-away
+# peaks (after loading and after the dwell) last about 15 steps.
+THERMO_EVERY = 2
 
-# Margins of the run-in signature.
-PEAK_OVER_PLATEAU = 2.0      # break-away peak >= 2 x the plateau
-PLOUGHING_FALL = 0.5         # ploughing part at the end <= 0.5 x at the start of sliding
-RQ_FALL = 0.10               # Rq_end <= (1 - 0.10) Rq_0
-RSK_START = 0.3              # |Rsk_0| <= 0.3 (the sample is Gaussian)
-RSK_END = -0.3               # Rsk_end <= -0.3 (plateau honed)
+# Margins of the run-in signature. Measured with the deck (R = 100 um, sigma = 0.2 um, elastic/plastic,
+# 16000 sliding steps = 32 um; ctest -R runin_signature -V): peak 0.165 at 16 nm, kinetic minimum 0.025,
+# ploughing part 0.0066 -> 0, adhesion part 0.0235 -> 0.052, Rq -12.2 % over the sliding, Rsk -0.73.
+# The elastic summits of the earlier deck (R = 1 um, Hertz) reached a kinetic plateau; the elastic-plastic
+# summits do not: once wear has removed the plastic caps, the worn flats reload elastically against the flat
+# counterface and spread the load over a growing real area, so the adhesion part tau_s A_r / W rises with
+# the sliding distance (0.11 at 100 um). The peak is therefore compared with the lowest kinetic level the
+# run-in reaches, and the rise after it is asserted to be adhesion over the growing real area.
+PEAK_OVER_KINETIC = 2.0      # break-away peak >= 2 x the lowest mu_eff after it (measured 6.7)
+# ploughing part at the end <= 0.5 x at the start of sliding (measured 0 with the build of 9f15537; since ad55baa
+# a worn flat reloaded elastically keeps the groove of its intact sphere and the part rises, 0.0066 -> 0.014:
+# the bug in doc/decks.md, 'Issues')
+PLOUGHING_FALL = 0.5
+ADHESION_IDENTITY = 1e-9     # adhesion part vs tau_s A_r / sum F_n, relative, at every sliding row
+# Rq over the sliding, from the loaded (plastically flattened) surface: measured -12.2 % at 32 um (the earlier
+# Hertz deck: -35 % at 6.4 um, with 4x more wear per unit summit cap volume, k W s / (H N pi R sigma^2))
+RQ_FALL = 0.10               # Rq_end <= (1 - 0.10) Rq at the start of sliding
+RSK_START = 0.3              # |Rsk| <= 0.3 before the first loading (the sample is Gaussian; measured -0.019)
+RSK_END = -0.3               # Rsk_end <= -0.3 (plateau honed; measured -0.73, -0.33 after the loading)
 LOAD_AT_REST = 1e-6          # |F - F_t| / F_t at the end of loading
 LOAD_SLIDING = 1e-3          # |F - F_t| / F_t while sliding (wear lowers F by ~1e-4 between servo steps)
-ARCHARD_RANGE = (0.95, 1.001)  # worn / (k F s / H_soft): below 1 by the sliding lost to stick
+# worn / (k F s / H_soft): below 1 by the sliding lost to stick, above by the damping force of the wall that
+# descends as the summits wear (measured 1.0003)
+ARCHARD_RANGE = (0.95, 1.001)
 SPLIT_TOLERANCE = 1e-9       # asperity share of the worn volume vs H_wall / (H_asperity + H_wall)
 RESTICK_PEAK = 0.5           # peak after the dwell >= mu before it + 0.5 (mu_s - mu_k)
 
@@ -47,7 +69,7 @@ def signature(args):
     fresh_dir(args.workdir)
     nhold, nresume = 200, 800
     log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck),
-                     {"nslide": args.nslide, "nhold": nhold, "nresume": nresume, "thermo_every": 10,
+                     {"nslide": args.nslide, "nhold": nhold, "nresume": nresume, "thermo_every": THERMO_EVERY,
                       "load": LOAD, "k": WEAR_K})
     blocks = thermo_blocks(log)
     if len(blocks) != 4:
@@ -71,36 +93,57 @@ def signature(args):
     if sliding_error > LOAD_SLIDING:
         fail(f"load servo: relative error {sliding_error:.2e} > {LOAD_SLIDING} while sliding")
 
-    # 2. mu_eff: break-away peak, then a plateau; the ploughing part falls as the summits flatten
+    # 2. mu_eff: break-away peak, then the kinetic level; the ploughing part falls as the summits flatten,
+    #    and the kinetic level then rises by adhesion over the growing real area of the worn flats
     slide = col(sliding, "v_slide")
     mu = col(sliding, "c_fric[3]")
     n = len(sliding)
     first, last = sliding[1:max(2, n // 10)], sliding[3 * n // 4:]
     peak_row = max(first, key=lambda row: row["c_fric[3]"])
     peak = peak_row["c_fric[3]"]
-    plateau = sum(col(last, "c_fric[3]")) / len(last)
+    after_peak = sliding[sliding.index(peak_row):]
+    lowest_row = min(after_peak, key=lambda row: row["c_fric[3]"])
+    lowest = lowest_row["c_fric[3]"]
+    end = sum(col(last, "c_fric[3]")) / len(last)
     plough_start, plough_end = sliding[1]["c_fric[7]"], sum(col(last, "c_fric[7]")) / len(last)
     adhesion_start, adhesion_end = sliding[1]["c_fric[6]"], sum(col(last, "c_fric[6]")) / len(last)
-    print(f"mu_eff: peak {peak:.4f} at s = {peak_row['v_slide'] * 1e9:.0f} nm, plateau {plateau:.4f} "
-          f"(mean over s = {last[0]['v_slide'] * 1e6:.2f}-{slide[-1] * 1e6:.2f} um), ratio {peak / plateau:.2f}")
+    area_start, area_end = sliding[1]["c_fric[9]"], sum(col(last, "c_fric[9]")) / len(last)
+    print(f"mu_eff: peak {peak:.4f} at s = {peak_row['v_slide'] * 1e9:.0f} nm, lowest {lowest:.4f} at s = "
+          f"{lowest_row['v_slide'] * 1e6:.2f} um (peak / lowest {peak / lowest:.2f}), {end:.4f} at the end (mean "
+          f"over s = {last[0]['v_slide'] * 1e6:.2f}-{slide[-1] * 1e6:.2f} um)")
     print(f"  ploughing part {plough_start:.4f} -> {plough_end:.4f}, adhesion part {adhesion_start:.4f} -> "
-          f"{adhesion_end:.4f}")
-    if not peak >= PEAK_OVER_PLATEAU * plateau:
-        fail(f"mu_eff peak {peak:.4f} is not >= {PEAK_OVER_PLATEAU} x the plateau {plateau:.4f}")
+          f"{adhesion_end:.4f}; real area {area_start:.4e} -> {area_end:.4e} m^2, W / A_r "
+          f"{sliding[1]['v_p_real'] / 1e6:.0f} -> {sliding[-1]['v_p_real'] / 1e6:.0f} MPa")
+    if not peak >= PEAK_OVER_KINETIC * lowest:
+        fail(f"mu_eff peak {peak:.4f} is not >= {PEAK_OVER_KINETIC} x the kinetic level {lowest:.4f} after it")
     if not plough_end <= PLOUGHING_FALL * plough_start:
         fail(f"ploughing part {plough_start:.4f} -> {plough_end:.4f}: did not fall below {PLOUGHING_FALL} x")
     if max(mu) > max(mu[:n // 10]) + 1e-12:
         fail(f"mu_eff exceeds its break-away peak later in the run: {max(mu):.4f} > {peak:.4f}")
+    worst = 0.0
+    for row in sliding[1:]:
+        identity = TAU_S / row["v_p_real"]    # v_p_real = sum F_n / A_r (c_fric[1] / c_fric[9])
+        worst = max(worst, abs(row["c_fric[6]"] - identity) / identity)
+    if worst > ADHESION_IDENTITY:
+        fail(f"adhesion part differs from tau_s A_r / sum F_n by {worst:.3e} relative (limit {ADHESION_IDENTITY})")
+    if not (adhesion_end > adhesion_start and area_end > area_start):
+        fail(f"the worn flats did not widen the real area ({area_start:.4e} -> {area_end:.4e} m^2) and raise the "
+             f"adhesion part ({adhesion_start:.4f} -> {adhesion_end:.4f})")
 
-    # 3. roughness: Rq falls, Rsk from ~0 to negative (the highest summits are truncated)
+    # 3. roughness: the unloaded sample is Gaussian; the first loading flattens the highest summits
+    #    plastically; sliding lowers Rq further and makes Rsk negative (the highest summits are truncated)
+    rq_u, rsk_u, rku_u = loading[0]["c_rough[2]"], loading[0]["c_rough[3]"], loading[0]["c_rough[4]"]
     rq0, rsk0, rku0 = sliding[0]["c_rough[2]"], sliding[0]["c_rough[3]"], sliding[0]["c_rough[4]"]
     rq1, rsk1, rku1 = sliding[-1]["c_rough[2]"], sliding[-1]["c_rough[3]"], sliding[-1]["c_rough[4]"]
-    print(f"roughness: Rq {rq0 * 1e9:.2f} -> {rq1 * 1e9:.2f} nm ({(rq1 / rq0 - 1) * 100:+.1f} %), "
+    print(f"roughness: unloaded Rq {rq_u * 1e9:.2f} nm, Rsk {rsk_u:+.3f}, Rku {rku_u:.3f}; loaded Rq {rq0 * 1e9:.2f} "
+          f"nm, Rsk {rsk0:+.3f}; sliding Rq {rq0 * 1e9:.2f} -> {rq1 * 1e9:.2f} nm ({(rq1 / rq0 - 1) * 100:+.1f} %), "
           f"Rsk {rsk0:+.3f} -> {rsk1:+.3f}, Rku {rku0:.3f} -> {rku1:.3f}")
     if not rq1 <= (1.0 - RQ_FALL) * rq0:
         fail(f"Rq {rq0:.4e} -> {rq1:.4e}: did not fall by {RQ_FALL * 100:.0f} %")
-    if not abs(rsk0) <= RSK_START:
-        fail(f"initial Rsk {rsk0:.3f} is not within +-{RSK_START} of 0 (Gaussian sample)")
+    if not abs(rsk_u) <= RSK_START:
+        fail(f"Rsk of the unloaded sample {rsk_u:.3f} is not within +-{RSK_START} of 0 (Gaussian sample)")
+    if not rsk1 < rsk0:
+        fail(f"Rsk {rsk0:.3f} -> {rsk1:.3f}: sliding did not make the surface more negatively skewed")
     if not rsk1 <= RSK_END:
         fail(f"final Rsk {rsk1:.3f} is not <= {RSK_END} (plateau-honed surface)")
 
