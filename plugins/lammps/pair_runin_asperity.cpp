@@ -698,7 +698,8 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
   double **x = atom->x;
   const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
   const double r = std::sqrt(rsq);
-  const tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, flat);
+  tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, flat);
+  if (state) g.summit_drop = std::max(depth_i, 0.0) + std::max(depth_j, 0.0);
   const tribo::ContactModel &model = *models[itype * (atom->ntypes + 1) + jtype];
   double energy = 0.0;
   tribo::ContactResult contact;

@@ -16,6 +16,7 @@
 #include "tribo/friction_strength.h"
 #include "tribo/wear.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -213,9 +214,10 @@ class ElasticPlasticNormalModel {
       const FlatHertzContact flat = flat_hertz_contact(e_eff_, R, g.flat_radius, g.overlap);
       if (flat.force < out.force) {
         out.force = flat.force;
-        out.contact_radius = flat.contact_radius;
         out.stiffness = flat.stiffness;
-        return out;    // elastic: no new plastic history
+        out.contact_radius = flat.contact_radius;
+        out.groove_ploughing = 0.0;    // an elastic flat ploughs nothing; no new plastic history
+        return out;
       }
     }
     if (advance && loading && omega > omega_max) {

@@ -130,7 +130,8 @@ def wall_mu_body(args):
     finite_rows(rows)
     touching = [row for row in rows if row["c_fric[4]"] > 0]
     sliding = [row for row in blocks[1][1:] if row["c_fric[4]"] > 0]
-    if len(touching) < 5 or len(sliding) < 5 or not max(row["c_fric[3]"] for row in sliding) > 0.05:
+    # the deck's kinetic level is about 0.03 (elastic-plastic steel summits, tau_s 20 MPa)
+    if len(touching) < 5 or len(sliding) < 5 or not max(row["c_fric[3]"] for row in sliding) > 0.01:
         fail(f"the wall must touch and slide: {len(touching)} rows with contacts, {len(sliding)} sliding")
     worst = 0.0
     for row in rows:
