@@ -6,6 +6,7 @@
 #include "lammps.h"
 #include "plugin.h"
 
+#include <dlfcn.h>
 #include <mpi.h>
 
 #include <cstdio>
@@ -20,6 +21,19 @@ Command *plugin_command(LAMMPS *lmp)
   return new Plugin(lmp);
 }
 }    // namespace
+
+// 'clear' destroys the style maps and builds them anew, then calls post_create(), as the constructor does.
+// lmp_runin defines post_create(): the library's own, then the RunIn styles again, so decks that 'clear'
+// (parameter loops, restart round trips) keep them. The library calls post_create() through its PLT, so this
+// definition takes precedence; a library bound otherwise simply keeps calling its own (the styles then
+// stay registered from main() only, until a 'clear').
+void LAMMPS_NS::LAMMPS::post_create()
+{
+  using PostCreate = void (*)(LAMMPS *);
+  static const auto library = reinterpret_cast<PostCreate>(dlsym(RTLD_NEXT, "_ZN9LAMMPS_NS6LAMMPS11post_createEv"));
+  if (library) library(this);
+  if (force && modify) runin_lammps::register_styles(this);
+}
 
 int main(int argc, char **argv)
 {
