@@ -638,8 +638,8 @@ void PairRuninAsperity::eval(int eflag)
     if (PLASTIC && contact.normal.residual_increment > 0.0) {
       // the summits sink by the growth of the residual interference, shared by the bodies' hardness
       const double share_i = model.flattening_share_i();
-      add_increment(i, INC_FLATTENED, share_i * contact.normal.residual_increment, nlocal);
-      if (j_here) add_increment(j, INC_FLATTENED, (1.0 - share_i) * contact.normal.residual_increment, nlocal);
+      add_flattening(i, share_i * contact.normal.residual_increment, nlocal);
+      if (j_here) add_flattening(j, (1.0 - share_i) * contact.normal.residual_increment, nlocal);
     }
     if (WEAR && contact.tangential.slip_increment > 0.0) {
       const tribo::WearExchange &exchange = contact.wear;
@@ -735,7 +735,7 @@ void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
     const double gained = comm_gained ? buf[m++] : 0.0;
     const double flattened = comm_flattened ? buf[m++] : 0.0;
     if (lost != 0.0 || gained != 0.0) add_wear(list[k], lost, gained, nlocal);
-    if (flattened != 0.0) add_increment(list[k], INC_FLATTENED, flattened, nlocal);
+    if (flattened != 0.0) add_flattening(list[k], flattened, nlocal);
   }
 }
 

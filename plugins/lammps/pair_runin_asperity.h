@@ -17,6 +17,7 @@ PairStyle(runin/asperity,PairRuninAsperity);
 #include "runin_timestep_guard.h"
 #include "tribo/contact_model.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -79,13 +80,15 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   int *worn_owned, *worn_ghost;    // the listed atoms, owned and ghost (nmax_increment + 1 each)
   int nworn_owned, nworn_ghost;
   bool comm_gained, comm_flattened;    // which increments reverse communication carries besides 'lost'
-  void add_increment(int i, int slot_index, double value, int nlocal)
+  // The summit of one asperity sinks to the deepest residual of its contacts in a step, not their sum: every
+  // contact of the asperity sees the same summit, so each one's sink below it is the same flattening.
+  void add_flattening(int i, double depth, int nlocal)
   {
     // branch-free: the slot is always written and kept only for an atom listed now
     double *slot = &increment[NINCREMENT * i];
     const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
-    slot[slot_index] += value;
-    const bool first = was_zero && slot[slot_index] != 0.0, owned = i < nlocal;
+    slot[INC_FLATTENED] = std::max(slot[INC_FLATTENED], depth);
+    const bool first = was_zero && slot[INC_FLATTENED] != 0.0, owned = i < nlocal;
     worn_owned[nworn_owned] = i;
     worn_ghost[nworn_ghost] = i;
     nworn_owned += first && owned;
