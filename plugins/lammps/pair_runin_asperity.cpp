@@ -39,9 +39,10 @@ using tribo::SubModelKind;
 }    // namespace
 
 PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
-    Pair(lmp), dt(0.0), wear_on(true), reshape(true), from_restart(false), sums_requested(false),
-    body_groupbit(0), increment(nullptr), nmax_increment(0), worn_owned(nullptr), worn_ghost(nullptr),
-    nworn_owned(0), nworn_ghost(0), maxrad(nullptr), fix_history(nullptr), fix_wear(nullptr)
+    Pair(lmp), history_size(tribo::TANGENTIAL_HISTORY_SIZE), dt(0.0), wear_on(true), reshape(true),
+    from_restart(false), sums_requested(false), body_groupbit(0), increment(nullptr), nmax_increment(0),
+    worn_owned(nullptr), worn_ghost(nullptr), nworn_owned(0), nworn_ghost(0), maxrad(nullptr), fix_history(nullptr),
+    fix_wear(nullptr)
 {
   single_enable = 1;
   // single(): normal force (fforce * del), then the tangential force on i, the contact radius and overlap
@@ -335,8 +336,15 @@ void PairRuninAsperity::init_style()
   runin_compat::request_size_history_list(this, neighbor, instance_me);
   dt = update->dt;
 
+  const int wanted_history = tribo::contact_history_size_of(choice.of(SubModelKind::normal));
+  if (fix_history && wanted_history != history_size)
+    error->all(FLERR,
+               "pair runin/asperity: the normal model changed after the first run ({} history values per "
+               "contact, {} now); define the pair style anew (pair_style none first)",
+               history_size, wanted_history);
+  history_size = wanted_history;
   if (!fix_history) {
-    auto cmd = fmt::format("{} all NEIGH_HISTORY {}", kHistoryId, static_cast<int>(HISTORY_SIZE));
+    auto cmd = fmt::format("{} all NEIGH_HISTORY {}", kHistoryId, history_size);
     fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(kDummyId, cmd, 1));
     fix_history->pair = this;
     fix_dummy = nullptr;
@@ -524,6 +532,7 @@ void PairRuninAsperity::eval(int eflag)
   const double step_dt = dt;    // a local: the force stores could alias the member
   const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
   const std::optional<tribo::ContactModel> *const model_table = models.data();
+  constexpr int HISTORY = tribo::contact_history_size<NORMAL>;
   // plastic flattening lowers the summits: only with the worn geometry in the contact, and when advancing
   constexpr bool PLASTIC_MODEL =
       std::is_same_v<std::tuple_element_t<NORMAL, tribo::NormalModels>, tribo::ElasticPlasticNormalModel>;
@@ -567,11 +576,11 @@ void PairRuninAsperity::eval(int eflag)
       const double rsq = MathExtra::dot3(del, del);
       const double reach = summit_reach(radi, radius[j], depth_i, wear_depth(j));
       const bool in_contact = (!RESHAPE || reach > 0.0) && rsq < reach * reach;
-      out[ntouching] = {i, j, &allhistory[HISTORY_SIZE * jj]};
+      out[ntouching] = {i, j, &allhistory[HISTORY * jj]};
       ntouching += in_contact;
       // a pair that was not touching has a zero history already (fix NEIGH_HISTORY zeroes new pairs)
       if (touch[jj] && !in_contact)
-        for (int k = 0; k < HISTORY_SIZE; k++) allhistory[HISTORY_SIZE * jj + k] = 0.0;
+        for (int k = 0; k < HISTORY; k++) allhistory[HISTORY * jj + k] = 0.0;
       touch[jj] = in_contact;
     }
   }
@@ -661,7 +670,7 @@ void PairRuninAsperity::eval(int eflag)
 void PairRuninAsperity::transfer_history(double *source, double *target)
 {
   for (int k = tribo::HISTORY_SPRING_X; k <= tribo::HISTORY_SPRING_Z; k++) target[k] = -source[k];
-  for (int k = tribo::HISTORY_SLIP; k < HISTORY_SIZE; k++) target[k] = source[k];
+  for (int k = tribo::HISTORY_SLIP; k < history_size; k++) target[k] = source[k];
 }
 
 // The force of the contact of i and j as the force loop computes it, without changing its history: for
@@ -686,12 +695,12 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
   // this contact's history in i's neighbor list (a copy: single() must not advance it)
   if (!fix_history || !fix_history->firstvalue)
     error->one(FLERR, "pair runin/asperity: single() needs the contact history (run setup first)");
-  double history[HISTORY_SIZE] = {0.0};
+  double history[MAX_HISTORY_SIZE] = {0.0};
   const int jnum = list->numneigh[i];
   const int *jlist = list->firstneigh[i];
   for (int jj = 0; jj < jnum; jj++)
     if ((jlist[jj] & NEIGHMASK) == j) {
-      std::copy_n(&fix_history->firstvalue[i][HISTORY_SIZE * jj], HISTORY_SIZE, history);
+      std::copy_n(&fix_history->firstvalue[i][history_size * jj], history_size, history);
       break;
     }
 

@@ -55,7 +55,8 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   bool wear_enabled() const { return wear_on; }
 
  protected:
-  static constexpr int HISTORY_SIZE = runin::tribo::CONTACT_HISTORY_SIZE;
+  static constexpr int MAX_HISTORY_SIZE = runin::tribo::CONTACT_HISTORY_SIZE;
+  int history_size;    // per contact: the tangential slots and the chosen normal model's (set at init)
 
   double dt;
   bool wear_on;

@@ -53,6 +53,20 @@ constexpr int kRecordVersion = 1;
 
 }    // namespace
 
+namespace {
+template <std::size_t... I> int history_size_of(int normal_index, std::index_sequence<I...>)
+{
+  int out = TANGENTIAL_HISTORY_SIZE;
+  ((normal_index == static_cast<int>(I) ? (void)(out = contact_history_size<I>) : void()), ...);
+  return out;
+}
+}    // namespace
+
+int contact_history_size_of(int normal_index)
+{
+  return history_size_of(normal_index, std::make_index_sequence<std::tuple_size_v<NormalModels>>{});
+}
+
 const char *sub_model_kind_name(SubModelKind kind)
 {
   static const char *const names[kSubModelKinds] = {"normal", "damping", "tangential", "friction", "wear"};

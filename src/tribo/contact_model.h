@@ -40,15 +40,19 @@ struct ContactGeometry {
   double tangential_velocity[3] = {0.0, 0.0, 0.0};    // v_t at the contact point, rolling included [m/s]
 };
 
-// Per-contact history, CONTACT_HISTORY_SIZE values stored by the host (zero for a new contact).
+// Per-contact history stored by the host (zero for a new contact): the tangential slots, then the slots of
+// the normal model (NormalModel::history_slots); contact_history_size<NORMAL> values in all, at most
+// CONTACT_HISTORY_SIZE. Hertz keeps none, so its contacts carry 4 values (the neighbour-list history of a
+// pair style is copied for every neighbour: its size costs time).
 enum ContactHistorySlot {
   HISTORY_SPRING_X = 0,
   HISTORY_SPRING_Y,
   HISTORY_SPRING_Z,
   HISTORY_SLIP,           // accumulated slip distance (static -> kinetic weakening)
+  TANGENTIAL_HISTORY_SIZE,
   // elastic-plastic normal model: the largest interference omega_max of this contact [m], then the values
   // of its unloading curve, kept so that a contact below omega_max costs one power (R* = 1 units)
-  HISTORY_MAX_OVERLAP,
+  HISTORY_MAX_OVERLAP = TANGENTIAL_HISTORY_SIZE,
   HISTORY_RESIDUAL,       // omega_res / R
   HISTORY_MAX_FORCE,      // P(omega_max) / R^2
   HISTORY_MAX_RADIUS,     // a(omega_max) / R
@@ -93,6 +97,7 @@ class HertzNormalModel {
  public:
   static constexpr const char *name = "hertz";
   static constexpr std::array<const char *, 1> coefficient_names{"E*"};
+  static constexpr int history_slots = 0;
   explicit HertzNormalModel(const double *c) : e_eff_(c[0])
   {
     HertzNormal(c[0], 1.0);    // validates E*
@@ -137,6 +142,7 @@ class ElasticPlasticNormalModel {
  public:
   static constexpr const char *name = "elastic/plastic";
   static constexpr std::array<const char *, 3> coefficient_names{"E*", "S_y", "nu"};
+  static constexpr int history_slots = CONTACT_HISTORY_SIZE - HISTORY_MAX_OVERLAP;
   explicit ElasticPlasticNormalModel(const double *c)
       : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]), inv_omega_c_(1.0 / unit_.critical_interference()),
         stick_critical_load_(BrizmerStaticFriction::critical_load_ratio(c[2]) * unit_.critical_force())
@@ -448,6 +454,11 @@ class ArchardWearModel {
 // The registry: one tuple per kind. Add a law by adding its class here.
 // ---------------------------------------------------------------------------------------------------
 using NormalModels = std::tuple<HertzNormalModel, ElasticPlasticNormalModel>;
+// History values a contact keeps with the NORMAL-th normal model.
+template <int NORMAL>
+constexpr int contact_history_size = TANGENTIAL_HISTORY_SIZE + std::tuple_element_t<NORMAL, NormalModels>::history_slots;
+// The same for a choice made at run time.
+int contact_history_size_of(int normal_index);
 using DampingModels = std::tuple<RestitutionDampingModel>;
 using TangentialModels = std::tuple<MindlinTangentialModel>;
 using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel, BrizmerFrictionModel>;
@@ -582,8 +593,8 @@ class ContactModel {
   // applied again (the slip distance has moved on since, and the limit with it).
   template <int NORMAL> ContactResult stored_force(const ContactGeometry &g, const double *history) const
   {
-    double copy[CONTACT_HISTORY_SIZE];
-    for (int k = 0; k < CONTACT_HISTORY_SIZE; ++k) copy[k] = history[k];
+    double copy[CONTACT_HISTORY_SIZE] = {0.0};
+    for (int k = 0; k < contact_history_size<NORMAL>; ++k) copy[k] = history[k];
     ContactResult out;
     out.normal = std::get<NORMAL>(normal_)->evaluate(g, copy, false);
     double fn = out.normal.force + damping().force(out.normal.stiffness, g.effective_mass, g.normal_velocity);
