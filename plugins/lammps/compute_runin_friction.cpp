@@ -47,19 +47,13 @@ ComputeRuninFriction::ComputeRuninFriction(LAMMPS *lmp, int narg, char **arg) :
         body_bit = group->bitmask[igroup];
       }
       iarg += 2;
-    } else if (strcmp(arg[iarg], "normal") == 0) {
-      if (iarg + 2 > narg) error->all(FLERR, "compute runin/friction: keyword normal needs x, y or z");
+    } else if (strcmp(arg[iarg], "normal") == 0 || strcmp(arg[iarg], "slide") == 0) {
+      const std::string keyword = arg[iarg];
+      if (iarg + 2 > narg) error->all(FLERR, "compute runin/friction: keyword {} needs x, y or z", keyword);
       const std::string axis = arg[iarg + 1];
       if (axis != "x" && axis != "y" && axis != "z")
-        error->all(FLERR, "compute runin/friction: normal must be x, y or z, got '{}'", axis);
-      normal_axis = axis[0] - 'x';
-      iarg += 2;
-    } else if (strcmp(arg[iarg], "slide") == 0) {
-      if (iarg + 2 > narg) error->all(FLERR, "compute runin/friction: keyword slide needs x, y or z");
-      const std::string axis = arg[iarg + 1];
-      if (axis != "x" && axis != "y" && axis != "z")
-        error->all(FLERR, "compute runin/friction: slide must be x, y or z, got '{}'", axis);
-      slide_axis = axis[0] - 'x';
+        error->all(FLERR, "compute runin/friction: {} must be x, y or z, got '{}'", keyword, axis);
+      (keyword == "normal" ? normal_axis : slide_axis) = axis[0] - 'x';
       iarg += 2;
     } else {
       error->all(FLERR, "compute runin/friction: unknown keyword {} (expected bodies, body, normal or slide)",

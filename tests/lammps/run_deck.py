@@ -342,21 +342,26 @@ def roughness(args):
     print(f"ok: {checked} values on {args.np} rank(s) match the closed form, worst global relative error {worst:.3e}")
 
 
-def expect_error(args):
-    fresh_dir(args.workdir)
-    result = subprocess.run([args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"],
-                            cwd=args.workdir, env=mpi_env(), capture_output=True, text=True, timeout=60)
+def single_error(result, pattern, refused="the deck was accepted"):
+    """The one ERROR line of a finished lmp_runin run that must stop cleanly (no crash) naming `pattern`."""
     output = result.stdout + result.stderr
     if result.returncode == 0:
-        fail("the deck was accepted; expected an ERROR")
+        fail(f"{refused}; expected an ERROR")
     if result.returncode < 0 or result.returncode >= 128:
         fail(f"crashed with signal/status {result.returncode}\n{output}")
     errors = [line for line in output.splitlines() if line.startswith("ERROR")]
     if len(errors) != 1:
         fail(f"expected exactly one ERROR line, got {errors}\n{output}")
-    if not re.search(args.pattern, errors[0]):
-        fail(f"ERROR line does not name the problem ({args.pattern!r}): {errors[0]}")
-    print("ok: " + errors[0])
+    if not re.search(pattern, errors[0]):
+        fail(f"ERROR line does not name the problem ({pattern!r}): {errors[0]}")
+    return errors[0]
+
+
+def expect_error(args):
+    fresh_dir(args.workdir)
+    result = subprocess.run([args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"],
+                            cwd=args.workdir, env=mpi_env(), capture_output=True, text=True, timeout=60)
+    print("ok: " + single_error(result, args.pattern))
 
 
 def expect_warning(args):
