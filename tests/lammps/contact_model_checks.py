@@ -35,7 +35,6 @@ restart-error: a restart written by the --write deck and read by the --read deck
 import argparse
 import math
 import os
-import re
 import subprocess
 import sys
 
