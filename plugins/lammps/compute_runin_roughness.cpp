@@ -1,4 +1,5 @@
 #include "compute_runin_roughness.h"
+#include "runin_errors.h"
 
 #include "fix_runin_wear_state.h"
 #include "tribo/surface_statistics.h"
@@ -28,7 +29,7 @@ ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) 
       seen_bearing = true;
       ++iarg;
       while (iarg < narg && utils::is_double(arg[iarg])) {
-        const double depth = utils::numeric(FLERR, arg[iarg], false, lmp);
+        const double depth = runin_lammps::finite_number(lmp, "compute runin/roughness", "bearing depth", arg[iarg]);
         if (!(depth >= 0.0))
           error->all(FLERR, "compute runin/roughness: bearing depth must be >= 0, got {}", arg[iarg]);
         depths.push_back(depth);

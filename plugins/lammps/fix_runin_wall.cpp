@@ -1,4 +1,5 @@
 #include "fix_runin_wall.h"
+#include "runin_errors.h"
 
 #include "fix_runin_wear_state.h"
 #include "runin_material_file.h"
@@ -74,9 +75,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix runin/wall: keyword '{}' needs {} value(s), got {}", keyword, nvalues, narg - iarg - 1);
     char **values = &arg[iarg + 1];
     auto number = [&](int k, const char *name) {
-      if (!utils::is_double(values[k]))
-        error->all(FLERR, "fix runin/wall: {} {} must be a number, got '{}'", keyword, name, values[k]);
-      return utils::numeric(FLERR, values[k], false, lmp);
+      return runin_lammps::finite_number(lmp, "fix runin/wall", keyword + " " + name, values[k]);
     };
 
     if (keyword == "zplane") {
@@ -147,14 +146,14 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       try {
         friction_model_name = values[0];
         tribo::find_sub_model(tribo::SubModelKind::friction, values[0]);
-      } catch (const tribo::InvalidCoefficient &e) {
+      } catch (const std::exception &e) {
         error->all(FLERR, "fix runin/wall: {}", e.what());
       }
     } else if (keyword == "normal") {
       try {
         choice.index[static_cast<int>(tribo::SubModelKind::normal)] =
             tribo::find_sub_model(tribo::SubModelKind::normal, values[0]);
-      } catch (const tribo::InvalidCoefficient &e) {
+      } catch (const std::exception &e) {
         error->all(FLERR, "fix runin/wall: {}", e.what());
       }
     } else if (keyword == "yield") {
@@ -213,7 +212,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     if (!(parameters.hardness_j > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", parameters.hardness_j));
     model.emplace(choice, tribo::contact_coefficients(choice, parameters), contact_settings);
-  } catch (const tribo::InvalidCoefficient &e) {
+  } catch (const std::exception &e) {
     error->all(FLERR, "fix runin/wall: {}", e.what());
   }
 
@@ -255,9 +254,7 @@ void FixRuninWall::parse_setting(Setting &s, const char *arg, const char *keywor
   if (strncmp(arg, "v_", 2) == 0) {
     s.variable = arg + 2;
   } else {
-    if (!utils::is_double(arg))
-      error->all(FLERR, "fix runin/wall: {} must be a number or v_name, got '{}'", keyword, arg);
-    s.value = utils::numeric(FLERR, arg, false, lmp);
+    s.value = runin_lammps::finite_number(lmp, "fix runin/wall", std::string(keyword) + " (a number or v_name)", arg);
     s.variable.clear();
   }
 }
@@ -352,8 +349,10 @@ void FixRuninWall::move_wall()
 
 void FixRuninWall::compute_contacts(bool advance)
 {
-  tribo::with_sub_models(choice, [&](auto normal, auto friction) {
-    compute_contacts<decltype(normal)::value, decltype(friction)::value>(advance);
+  runin_lammps::kernel_call(lmp, "fix runin/wall", false, [&] {
+    tribo::with_sub_models(choice, [&](auto normal, auto friction) {
+      compute_contacts<decltype(normal)::value, decltype(friction)::value>(advance);
+    });
   });
 }
 
@@ -524,7 +523,7 @@ void FixRuninWall::restart(char *buf)
     const auto stored = tribo::deserialize(state + 7, size);
     if (!(stored.first == choice))
       error->all(FLERR, "fix runin/wall: restart file: {}", tribo::describe_difference(stored.first, choice));
-  } catch (const tribo::InvalidCoefficient &e) {
+  } catch (const std::exception &e) {
     error->all(FLERR, "fix runin/wall: restart file: {}", e.what());
   }
 }

@@ -1,4 +1,5 @@
 #include "pair_runin_asperity.h"
+#include "runin_errors.h"
 
 #include "fix_runin_wear_state.h"
 #include "runin_lammps_compat.h"
@@ -101,7 +102,7 @@ void PairRuninAsperity::set_sub_model(SubModelKind kind, const std::string &name
   int index = 0;
   try {
     index = tribo::find_sub_model(kind, name);
-  } catch (const tribo::InvalidCoefficient &e) {
+  } catch (const std::exception &e) {
     error->all(FLERR, "pair_style runin/asperity: {}", e.what());
   }
   if (from_restart && index != choice.of(kind))
@@ -190,11 +191,7 @@ void PairRuninAsperity::coeff(int narg, char **arg)
     } else if (narg == 10 || (narg > 10 && !utils::is_double(arg[10]))) {
       const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
       double v[8];
-      for (int k = 0; k < 8; k++) {
-        if (!utils::is_double(arg[2 + k]))
-          error->all(FLERR, "pair_coeff runin/asperity: {} must be a number, got '{}'", names[k], arg[2 + k]);
-        v[k] = utils::numeric(FLERR, arg[2 + k], false, lmp);
-      }
+      for (int k = 0; k < 8; k++) v[k] = runin_lammps::finite_number(lmp, "pair_coeff runin/asperity", names[k], arg[2 + k]);
       p.effective_modulus = v[0];
       p.effective_shear_modulus = v[1];
       p.restitution = v[2];
@@ -224,7 +221,7 @@ void PairRuninAsperity::coeff(int narg, char **arg)
   }
   try {
     tribo::ContactModel(choice, c, contact_settings);    // validates every sub-model's coefficients
-  } catch (const tribo::InvalidCoefficient &e) {
+  } catch (const std::exception &e) {
     error->all(FLERR, "pair_coeff runin/asperity ({}): {}", origin, e.what());
   }
 
@@ -264,7 +261,7 @@ tribo::ContactCoefficients PairRuninAsperity::read_keyword_coefficients(int narg
     int model = 0;
     try {
       model = tribo::find_sub_model(kind, arg[iarg + 1]);
-    } catch (const tribo::InvalidCoefficient &e) {
+    } catch (const std::exception &e) {
       error->all(FLERR, "pair_coeff runin/asperity: {}", e.what());
     }
     if (model != choice.of(kind))
@@ -279,7 +276,10 @@ tribo::ContactCoefficients PairRuninAsperity::read_keyword_coefficients(int narg
     if (got != n)
       error->all(FLERR, "pair_coeff runin/asperity: {} model '{}' takes {} coefficient(s) ({}), got {}", arg[iarg],
                  info.name, n, names, got);
-    for (int k = 0; k < n; k++) c.values[kind_index].push_back(utils::numeric(FLERR, arg[iarg + 2 + k], false, lmp));
+    for (int k = 0; k < n; k++)
+      c.values[kind_index].push_back(runin_lammps::finite_number(
+          lmp, fmt::format("pair_coeff runin/asperity: {} {}", arg[iarg], info.name), info.coefficient_names[k],
+          arg[iarg + 2 + k]));
     given[kind_index] = true;
     iarg += 2 + n;
   }
@@ -299,10 +299,8 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
     if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu")
       error->all(FLERR, "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y or nu)",
                  keyword);
-    if (iarg + 1 >= narg || !utils::is_double(arg[iarg + 1]))
-      error->all(FLERR, "pair_coeff runin/asperity: {} needs a number, got '{}'", keyword,
-                 iarg + 1 < narg ? arg[iarg + 1] : "");
-    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double value =
+        runin_lammps::finite_number(lmp, "pair_coeff runin/asperity", keyword, iarg + 1 < narg ? arg[iarg + 1] : "");
     if (keyword == "tau_s")
       p.shear_strength = value;
     else if (keyword == "plough")
@@ -396,7 +394,7 @@ double PairRuninAsperity::init_one(int i, int j)
     try {
       coeff_of(i, j) = tribo::mix_coefficients(choice, coeff_of(i, i), coeff_of(j, j));
       coeff_of(j, i) = tribo::swap_bodies(choice, coeff_of(i, j));
-    } catch (const tribo::InvalidCoefficient &e) {
+    } catch (const std::exception &e) {
       error->all(FLERR, "pair runin/asperity: mixing types {} {}: {}", i, j, e.what());
     }
   }
@@ -404,7 +402,7 @@ double PairRuninAsperity::init_one(int i, int j)
   try {
     models[i * n + j].emplace(choice, coeff_of(i, j), contact_settings);
     models[j * n + i].emplace(choice, coeff_of(j, i), contact_settings);
-  } catch (const tribo::InvalidCoefficient &e) {
+  } catch (const std::exception &e) {
     error->all(FLERR, "pair runin/asperity: types {} {}: {}", i, j, e.what());
   }
   return maxrad[i] + maxrad[j];
@@ -454,7 +452,7 @@ void PairRuninAsperity::compute(int eflag, int vflag)
                            choice.of(tribo::SubModelKind::friction);
   const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
-  (this->*table[index])(eflag);
+  runin_lammps::kernel_call(lmp, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
 
   if (track_wear) {
     if (force->newton_pair) runin_compat::reverse_comm(comm, this);
@@ -788,7 +786,7 @@ void PairRuninAsperity::read_restart(FILE *fp)
                      tribo::describe_difference(stored.first, choice));
         coeff_of(i, j) = stored.second;
         coeff_of(j, i) = tribo::swap_bodies(choice, stored.second);
-      } catch (const tribo::InvalidCoefficient &e) {
+      } catch (const std::exception &e) {
         error->all(FLERR, "pair runin/asperity: restart file: types {} {}: {}", i, j, e.what());
       }
     }

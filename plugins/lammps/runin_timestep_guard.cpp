@@ -1,4 +1,5 @@
 #include "runin_timestep_guard.h"
+#include "runin_errors.h"
 
 #include "tribo/stability.h"
 
@@ -130,14 +131,20 @@ double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairMo
     for (int j = i; j <= ntypes; j++) {
       const PairModuli moduli = moduli_of(i, j);
       if (!(moduli.effective_modulus > 0.0)) continue;
-      const tribo::Material equivalent =
-          tribo::equivalent_material(moduli.effective_modulus, moduli.effective_shear_modulus, 0.3);
-      for (int t : {i, j}) {
-        if (global[2 * t] == inf) continue;    // no atoms of this type
-        const double time = tribo::rayleigh_time(global[2 * t], equivalent, global[2 * t + 1]);
-        if (time < t_rayleigh) t_rayleigh = time, worst_i = i, worst_j = j;
-        t_cfl = std::min(t_cfl, tribo::cfl_time_step(2.0 * global[2 * t], equivalent.youngs_modulus, global[2 * t + 1]));
-      }
+      // every rank sees the same moduli and reduced radii: a failure is collective
+      const std::string where = fmt::format("{}: timestep guard for types {} {} (E* = {}, G* = {})", style, i, j,
+                                            moduli.effective_modulus, moduli.effective_shear_modulus);
+      runin_lammps::kernel_call(lmp, where, true, [&] {
+        const tribo::Material equivalent =
+            tribo::equivalent_material(moduli.effective_modulus, moduli.effective_shear_modulus, 0.3);
+        for (int t : {i, j}) {
+          if (global[2 * t] == inf) continue;    // no atoms of this type
+          const double time = tribo::rayleigh_time(global[2 * t], equivalent, global[2 * t + 1]);
+          if (time < t_rayleigh) t_rayleigh = time, worst_i = i, worst_j = j;
+          t_cfl = std::min(t_cfl,
+                           tribo::cfl_time_step(2.0 * global[2 * t], equivalent.youngs_modulus, global[2 * t + 1]));
+        }
+      });
     }
 
   if (lmp->modify->find_fix(LAMMPS_NS::FixRuninFiniteCheck::default_id) < 0) {

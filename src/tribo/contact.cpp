@@ -143,7 +143,7 @@ double RestitutionDamping::hertz_restitution(double damping_factor)
 
 RestitutionDamping::RestitutionDamping(double e) : restitution_(e), factor_(0.0)
 {
-  require(e > 0.0 && e <= 1.0, "e: coefficient of restitution must be in (0, 1]");
+  require(e >= kMinimumRestitution && e <= 1.0, "e: coefficient of restitution must be in [1e-6, 1]");
   if (e < 1.0) factor_ = calibrated_factor(e);
 }
 

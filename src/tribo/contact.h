@@ -53,7 +53,9 @@ class HertzNormal {
 // Hertz impact x'' = -max(0, x^(3/2) + c sqrt(3/2) x^(1/4) x') (separation where the clamped total force
 // reaches zero, as the contact styles evaluate it), so a head-on Hertz impact rebounds with exactly e.
 // (The linear-spring mapping c = -2 sqrt(5/6) ln e / sqrt(ln^2 e + pi^2) misses e by up to 10 %.)
-// e = 1 switches damping off exactly.
+// e = 1 switches damping off exactly. Below kMinimumRestitution the calibration's damping factor leaves the
+// range its root search covers (and a rebound of 1e-6 of the approach speed is already a plastic impact).
+inline constexpr double kMinimumRestitution = 1e-6;
 class RestitutionDamping {
  public:
   explicit RestitutionDamping(double coefficient_of_restitution);

@@ -108,6 +108,20 @@ void check_coefficient_counts(const ContactModelChoice &choice, const ContactCoe
   }
 }
 
+void check_coefficients(const ContactModelChoice &choice, const ContactCoefficients &coefficients)
+{
+  check_coefficient_counts(choice, coefficients);
+  for (int k = 0; k < kSubModelKinds; ++k) {
+    const auto kind = static_cast<SubModelKind>(k);
+    const SubModelInfo &info = registered_sub_models(kind)[choice.of(kind)];
+    const Coefficients &values = coefficients.of(kind);
+    for (std::size_t n = 0; n < values.size(); ++n)
+      if (!std::isfinite(values[n]))
+        throw InvalidCoefficient(std::string(info.coefficient_names[n]) + ": must be a finite number, got " +
+                                 std::to_string(values[n]));
+  }
+}
+
 ContactCoefficients mix_coefficients(const ContactModelChoice &choice, const ContactCoefficients &ii,
                                      const ContactCoefficients &jj)
 {
@@ -204,7 +218,7 @@ ContactModel::ContactModel(const ContactModelChoice &choice, const ContactCoeffi
                            const ContactSettings &settings)
     : choice_(choice), restick_speed_(settings.restick_speed)
 {
-  check_coefficient_counts(choice, c);
+  check_coefficients(choice, c);
   using K = SubModelKind;
   // the materials' hardness first: the elastic-plastic yield strength may have been derived from it
   emplace_chosen<WearModels>(wear_, choice.of(K::wear), c.of(K::wear).data(), settings.archard_form,

@@ -493,6 +493,8 @@ struct ContactCoefficients {
 // Checks every kind's coefficient count against the registry (InvalidCoefficient: "<kind> model '<name>'
 // takes N coefficients (...), got M").
 void check_coefficient_counts(const ContactModelChoice &choice, const ContactCoefficients &coefficients);
+// The counts, then every value finite (InvalidCoefficient: "<coefficient>: must be a finite number, got inf").
+void check_coefficients(const ContactModelChoice &choice, const ContactCoefficients &coefficients);
 // Mixing of an unset I,J pair from the I,I and J,J coefficients, sub-model by sub-model.
 ContactCoefficients mix_coefficients(const ContactModelChoice &choice, const ContactCoefficients &ii,
                                      const ContactCoefficients &jj);

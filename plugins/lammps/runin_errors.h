@@ -1,0 +1,45 @@
+// Turning bad input and kernel failures into LAMMPS ERRORs, for every RunIn style.
+#ifndef LMP_RUNIN_ERRORS_H
+#define LMP_RUNIN_ERRORS_H
+
+#include "error.h"
+#include "lammps.h"
+#include "utils.h"
+
+#include <cmath>
+#include <exception>
+#include <string>
+#include <utility>
+
+namespace runin_lammps {
+
+// Runs `body` and returns its result; an exception from the RunIn kernels (a bad coefficient, a failed
+// calibration) becomes one ERROR "<where>: <what>" instead of std::terminate. `collective`: every rank runs
+// `body` on the same input (parsing, init), so error->all; otherwise (a rank's own contacts) error->one.
+template <class Body>
+decltype(auto) kernel_call(LAMMPS_NS::LAMMPS *lmp, const std::string &where, bool collective, Body &&body)
+{
+  try {
+    return std::forward<Body>(body)();
+  } catch (const std::exception &e) {
+    const std::string message = where + ": " + e.what();
+    if (collective) lmp->error->all(FLERR, message);
+    lmp->error->one(FLERR, message);
+  }
+}
+
+// utils::numeric for a named argument that must be a finite number: "1e999" (inf), "nan" or a word give one
+// ERROR "<where>: <name> must be a finite number, got '<text>'".
+inline double finite_number(LAMMPS_NS::LAMMPS *lmp, const std::string &where, const std::string &name,
+                            const char *text)
+{
+  if (text && LAMMPS_NS::utils::is_double(text)) {
+    const double value = LAMMPS_NS::utils::numeric(FLERR, text, false, lmp);
+    if (std::isfinite(value)) return value;
+  }
+  lmp->error->all(FLERR, where + ": " + name + " must be a finite number, got '" + (text ? text : "") + "'");
+}
+
+}    // namespace runin_lammps
+
+#endif
