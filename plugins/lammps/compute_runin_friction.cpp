@@ -153,4 +153,9 @@ void ComputeRuninFriction::compute_vector()
   vector[BODY_TANGENTIAL_FORCE] = body == Body::none ? 0.0 : friction;
   vector[BODY_NORMAL_FORCE] = load;
   vector[MU_BODY] = load > 0.0 ? vector[BODY_TANGENTIAL_FORCE] / load : 0.0;
+  // the sums are reduced over all ranks: every rank sees the same entries
+  for (int k = 0; k < size_vector; k++)
+    if (!std::isfinite(vector[k]))
+      error->all(FLERR, "compute runin/friction: entry {} is {} at step {}: the contact sums overflowed (a "
+                 "coefficient far outside its physical range?)", k + 1, vector[k], update->ntimestep);
 }

@@ -282,6 +282,10 @@ void FixRuninWall::init()
   // the wear-state fix may have been redefined since this fix was created: look it up again
   fix_wear = FixRuninWearState::find(modify);
   if (!fix_wear) error->all(FLERR, "fix runin/wall: the per-atom wear state fix is missing");
+  double local_min = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) local_min = std::min(local_min, atom->radius[i]);
+  MPI_Allreduce(&local_min, &smallest_radius, 1, MPI_DOUBLE, MPI_MIN, world);
   guard_timestep();
 }
 
@@ -328,6 +332,22 @@ void FixRuninWall::update_wall_velocity()
   wall_velocity[1] = current(vel[1]);
   wall_velocity[2] = control == Control::displacement ? current(vz) : 0.0;
   modify->addstep_compute(update->ntimestep + 1);
+  check_wall_step();
+}
+
+// Every rank evaluates the same variables, so the checks are collective. A wall that moves further than a
+// summit radius in one step skips whole contacts: the contact laws are not resolved in time.
+void FixRuninWall::check_wall_step() const
+{
+  const double *v = wall_velocity;
+  if (!std::isfinite(v[0] + v[1] + v[2]))
+    error->all(FLERR, "fix runin/wall: wall velocity ({}, {}, {}) m/s is not finite at step {} (vel/vz values or "
+               "variables)", v[0], v[1], v[2], update->ntimestep);
+  const double step = std::hypot(v[0], v[1], v[2]) * dt;
+  if (step > smallest_radius)
+    error->all(FLERR, "fix runin/wall: at step {} the wall moves {:.4g} m per step (speed {:.4g} m/s, dt = {} s), "
+               "more than the smallest asperity radius {:.4g} m: contacts are not resolved in time (lower the "
+               "speed or the timestep)", update->ntimestep, step, step / dt, dt, smallest_radius);
 }
 
 // Displacement control: z += vz dt. Load control: runin::tribo::LoadServo moves the wall toward the
@@ -373,9 +393,14 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
   const double normal[3] = {0.0, 0.0, side_sign};    // from the wall to the asperity
 
   // force on the wall xyz, contacts, elastic normal force and stiffness (servo), wall wear and gain this step
-  enum { LOCAL_FX = 0, LOCAL_FY, LOCAL_FZ, LOCAL_CONTACTS, LOCAL_FN, LOCAL_STIFFNESS, LOCAL_LOST, LOCAL_GAINED, NLOCAL };
-  double local[NLOCAL] = {0, 0, 0, 0, 0, 0, 0, 0};
-  tagint first_bad = std::numeric_limits<tagint>::max();    // lowest atom ID with a non-finite force
+  // LOCAL_CHECK sums every contact output (NaN and inf propagate); LOCAL_THROUGH counts walls past a centre
+  enum {
+    LOCAL_FX = 0, LOCAL_FY, LOCAL_FZ, LOCAL_CONTACTS, LOCAL_FN, LOCAL_STIFFNESS, LOCAL_LOST, LOCAL_GAINED,
+    LOCAL_CHECK, LOCAL_THROUGH, NLOCAL
+  };
+  double local[NLOCAL] = {};
+  tagint first_bad = std::numeric_limits<tagint>::max();        // lowest atom ID with a non-finite output
+  tagint first_through = std::numeric_limits<tagint>::max();    // lowest atom ID the wall passed the centre of
   const double pi = std::acos(-1.0);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -390,6 +415,12 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
       for (int k = 0; k < HISTORY_SIZE; k++)
         if (!tribo::is_plastic_history(k)) history[i][k] = 0.0;
       continue;
+    }
+    if (g.overlap + std::max(summit_drop, 0.0) > r) {
+      // past the centre of the intact sphere (worn or flattened summits included): no sphere contact law
+      // holds (the run stops after the reduction)
+      local[LOCAL_THROUGH] += 1.0;
+      first_through = std::min(first_through, tag[i]);
     }
     g.flat_radius = worn_geometry ? wear_state[i][FixRuninWearState::FLAT_RADIUS] : 0.0;
     g.summit_drop = std::max(summit_drop, 0.0);
@@ -406,7 +437,10 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
     const tribo::ContactResult contact = model->evaluate<NORMAL, FRICTION, 1>(g, history[i], dt, advance);
     const double fn = contact.normal_force;
     const double *ft = contact.tangential.force;
-    if (!std::isfinite(fn + ft[0] + ft[1] + ft[2])) first_bad = std::min(first_bad, tag[i]);
+    const double outputs = fn + ft[0] + ft[1] + ft[2] + contact.normal.contact_radius + contact.strength.adhesion +
+                           contact.strength.ploughing + contact.wear.lost_a + contact.wear.lost_b;
+    local[LOCAL_CHECK] += outputs;
+    if (!std::isfinite(outputs)) first_bad = std::min(first_bad, tag[i]);
 
     double tor[3];
     MathExtra::cross3(normal, ft, tor);
@@ -455,14 +489,22 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
 
   double global[NLOCAL];
   MPI_Allreduce(local, global, NLOCAL, MPI_DOUBLE, MPI_SUM, world);
-  if (!std::isfinite(global[LOCAL_FX] + global[LOCAL_FY] + global[LOCAL_FZ] + wall_z)) {
+  if (global[LOCAL_THROUGH] > 0.0) {
+    tagint culprit = first_through;
+    MPI_Allreduce(&first_through, &culprit, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    error->all(FLERR, "fix runin/wall: at step {} the wall (z = {}) has passed the centre of {:.0f} asperity "
+               "summit(s), first atom {}: the interference of the intact sphere exceeds its radius, where no contact law holds "
+               "(load {} too high for these asperities, or the wall placed inside them)", update->ntimestep, wall_z,
+               global[LOCAL_THROUGH], culprit, control == Control::displacement ? "or wall travel" : "target");
+  }
+  if (!std::isfinite(global[LOCAL_FX] + global[LOCAL_FY] + global[LOCAL_FZ] + global[LOCAL_CHECK] + wall_z)) {
     tagint culprit = first_bad;
     MPI_Allreduce(&first_bad, &culprit, 1, MPI_LMP_TAGINT, MPI_MIN, world);
     const std::string atoms = culprit == std::numeric_limits<tagint>::max() ? std::string("no atom")
                                                                             : fmt::format("atom {}", culprit);
-    error->all(FLERR, "fix runin/wall: non-finite wall force or position at step {} (first: {}, z_wall = {}, "
-               "wall velocity {} {} {}); the run is unstable (a timestep too large: dt = {} s, or a non-finite "
-               "wall velocity)", update->ntimestep, atoms, wall_z, wall_velocity[0], wall_velocity[1],
+    error->all(FLERR, "fix runin/wall: non-finite contact force, area, strength or wear at step {} (first: {}, "
+               "z_wall = {}, wall velocity {} {} {}); the run is unstable (a timestep too large: dt = {} s) or a "
+               "coefficient overflows", update->ntimestep, atoms, wall_z, wall_velocity[0], wall_velocity[1],
                wall_velocity[2], update->dt);
   }
   totals[FX] = global[LOCAL_FX];

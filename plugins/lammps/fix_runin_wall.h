@@ -84,6 +84,7 @@ class FixRuninWall : public Fix, public RuninContactSource {
   double wall_velocity[3];
   bool vz_given;
   double dt;
+  double smallest_radius;    // of the group's asperities (init): the wall may not slide further in one step
 
   double **history;
   double totals[NOUTPUT];    // reduced over ranks at every evaluation
@@ -98,6 +99,7 @@ class FixRuninWall : public Fix, public RuninContactSource {
   void compute_contacts(bool advance);
   template <int NORMAL, int FRICTION> void compute_contacts(bool advance);
   void guard_timestep();
+  void check_wall_step() const;
 };
 
 }    // namespace LAMMPS_NS

@@ -469,6 +469,13 @@ void PairRuninAsperity::compute(int eflag, int vflag)
             radius[i], state[i][FixRuninWearState::WEAR_DEPTH], inc[INC_FLATTENED]);
       inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
       fix_wear->refresh_geometry(i, radius[i]);
+      // a summit worn or flattened past its equator has left the truncated-sphere geometry
+      if (state[i][FixRuninWearState::WEAR_DEPTH] > radius[i])
+        error->one(FLERR, fmt::format("pair runin/asperity: at step {} the summit of atom {} has been worn or "
+                                      "flattened by {:.4g} m, more than its radius {:.4g} m (the asperity is used "
+                                      "up): load or wear coefficient too large",
+                                      update->ntimestep, atom->tag[i], state[i][FixRuninWearState::WEAR_DEPTH],
+                                      radius[i]));
     }
     for (int k = 0; k < nworn_ghost; k++) {
       double *inc = &increment[NINCREMENT * worn_ghost[k]];
@@ -600,10 +607,17 @@ void PairRuninAsperity::eval(int eflag)
         RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
     tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
     if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
+    // validity: not past the centre of the smaller summit, not closing by more than its radius in a step
+    const double smaller_radius = std::min(radi, radj);
+    if (std::max(g.overlap + g.summit_drop, std::fabs(g.normal_velocity) * step_dt) > smaller_radius)
+      stop_past_centre(i, j, g.overlap + g.summit_drop, std::fabs(g.normal_velocity) * step_dt, 0.0);
     const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
     const double fn = contact.normal_force;
     const double *ft = contact.tangential.force;
     const double *normal = g.normal;
+    // and not pushed apart by more than it in the next step (a timestep too large for this force)
+    if (fn * step_dt * step_dt > smaller_radius * g.effective_mass)
+      stop_past_centre(i, j, g.overlap + g.summit_drop, 0.0, fn * step_dt * step_dt / g.effective_mass);
 
     const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
     force_sum += fpair[0] + fpair[1] + fpair[2];
@@ -652,6 +666,7 @@ void PairRuninAsperity::eval(int eflag)
       const tribo::WearExchange &exchange = contact.wear;
       add_wear(i, exchange.lost_a, exchange.gained_a, nlocal);
       if (j_here) add_wear(j, exchange.lost_b, exchange.gained_b, nlocal);
+      force_sum += exchange.lost_a + exchange.lost_b;    // an overflowing wear law stops the run too
       if (SUMS) local_sums.wear_volume += weight * contact.worn_volume;
     }
 
@@ -663,6 +678,27 @@ void PairRuninAsperity::eval(int eflag)
 
   if (SUMS) sums = local_sums;
   if (!std::isfinite(force_sum)) runin_lammps::stop_on_non_finite_force(lmp, "pair runin/asperity");
+}
+
+// Two summits pressed past the centre of the smaller one, or closing (or pushed apart) by more than its
+// radius in one step (the contact is not resolved in time): outside every sphere contact law. Only this rank knows (error->one);
+// it names the step, both atoms and the limit exceeded.
+void PairRuninAsperity::stop_past_centre(int i, int j, double interference, double approach_per_step,
+                                         double push_per_step) const
+{
+  const double radius = std::min(atom->radius[i], atom->radius[j]);
+  std::string what;
+  if (interference > radius)
+    what = fmt::format("interfere by {:.4g} m (overlap of the intact spheres), more than the smaller radius {:.4g} "
+                       "m: the summit is pressed past its centre, where no contact law holds", interference, radius);
+  else if (approach_per_step > radius)
+    what = fmt::format("close at {:.4g} m per step, more than the smaller radius {:.4g} m: the contact is not "
+                       "resolved in time", approach_per_step, radius);
+  else
+    what = fmt::format("are pushed apart by their contact force at {:.4g} m per step squared (F dt^2 / m*), more "
+                       "than the smaller radius {:.4g} m: the contact is not resolved in time", push_per_step, radius);
+  error->one(FLERR, fmt::format("pair runin/asperity: at step {} atoms {} and {} {} (load, speed or timestep too "
+                                "large)", update->ntimestep, atom->tag[i], atom->tag[j], what));
 }
 
 void PairRuninAsperity::transfer_history(double *source, double *target)

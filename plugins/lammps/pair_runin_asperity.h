@@ -130,6 +130,8 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   // One contact's geometry from positions, velocities, radii, masses and the worn state (eval and single).
   runin::tribo::ContactGeometry contact_geometry(int i, int j, double overlap, double rinv, const double *del,
                                                  double flat) const;
+  [[noreturn]] void stop_past_centre(int i, int j, double interference, double approach_per_step,
+                                     double push_per_step) const;
   runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);
   runin::tribo::ContactParameters read_coefficients_file(const std::string &file, const std::string &material_i,
                                                          const std::string &material_j);

@@ -1,6 +1,8 @@
 #include "tribo/contact_model.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 
@@ -118,7 +120,7 @@ void check_coefficients(const ContactModelChoice &choice, const ContactCoefficie
     for (std::size_t n = 0; n < values.size(); ++n)
       if (!std::isfinite(values[n]))
         throw InvalidCoefficient(std::string(info.coefficient_names[n]) + ": must be a finite number, got " +
-                                 std::to_string(values[n]));
+                                 (std::isnan(values[n]) ? "nan" : "inf"));
   }
 }
 
@@ -229,6 +231,19 @@ ContactModel::ContactModel(const ContactModelChoice &choice, const ContactCoeffi
   emplace_chosen<FrictionModels>(friction_, choice.of(K::friction), c.of(K::friction).data());
   if (!(settings.restick_speed >= 0.0) || !std::isfinite(settings.restick_speed))
     throw InvalidCoefficient("restick: speed must be >= 0 m/s and finite");
+  // a film at the interface cannot shear harder than the bulk under it
+  const auto &archard = std::get<std::optional<ArchardWearModel>>(wear_);
+  const double softer = std::min(archard->body_i().hardness(), archard->body_j().hardness());
+  const auto check_film = [softer](const auto &model) {
+    if (!model || model->shear_strength() <= softer) return;
+    char message[160];
+    std::snprintf(message, sizeof message,
+                  "tau_s: interfacial shear strength %.4g Pa exceeds the hardness of the softer body, %.4g Pa",
+                  model->shear_strength(), softer);
+    throw InvalidCoefficient(message);
+  };
+  check_film(std::get<std::optional<StrengthFrictionModel>>(friction_));
+  check_film(std::get<std::optional<BrizmerFrictionModel>>(friction_));
   if (std::get<std::optional<BrizmerFrictionModel>>(friction_)) {
     const auto &plastic = std::get<std::optional<ElasticPlasticNormalModel>>(normal_);
     if (!plastic)

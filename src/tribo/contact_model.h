@@ -345,6 +345,7 @@ class StrengthFrictionModel {
     for (std::size_t k = 0; k < ii.size(); ++k) out[k] = mix_geometric(ii[k], jj[k]);
     return out;
   }
+  double shear_strength() const { return strength_.shear_strength(); }
   double limit(double slip, double normal_force, const NormalContact &normal, double overlap,
                FrictionStrengthParts &parts) const
   {
@@ -378,6 +379,7 @@ class BrizmerFrictionModel {
     if (!(c[0] >= 0.0) || !std::isfinite(c[0])) throw InvalidCoefficient("d_c: slip distance must be >= 0");
   }
   Coefficients values() const { return {d_c_, strength_.shear_strength(), strength_.ploughing_factor()}; }
+  double shear_strength() const { return strength_.shear_strength(); }
   static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
   {
     return {mix_geometric(ii[0], jj[0]), mix_geometric(ii[1], jj[1]), mix_geometric(ii[2], jj[2])};
