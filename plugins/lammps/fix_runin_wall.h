@@ -34,6 +34,7 @@ class FixRuninWall : public Fix, public RuninContactSource {
   void setup(int) override;
   void post_force(int) override;
   void reset_dt() override;
+  void post_run() override;
   double compute_vector(int) override;
 
   void write_restart(FILE *) override;
@@ -85,6 +86,7 @@ class FixRuninWall : public Fix, public RuninContactSource {
   bool vz_given;
   double dt;
   double smallest_radius;    // of the group's asperities (init): the wall may not slide further in one step
+  bigint past_centre_count = 0;    // asperity evaluations past the summit centre in this run (WARNING)
 
   double **history;
   double totals[NOUTPUT];    // reduced over ranks at every evaluation

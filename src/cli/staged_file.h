@@ -58,6 +58,7 @@ class StagedOutput {
   std::filesystem::path directory_, staging_;
   std::vector<std::string> owned_;
   bool committed_ = false;
+  int signal_slot_ = -1;  // its entry in the SIGINT/SIGTERM cleanup list
 };
 
 }  // namespace runin::cli

@@ -119,6 +119,12 @@ def run_case(args, tag, material, radius, sigma, spacing, separations, runs):
         if len(rows) != len(walls):
             fail(f"{tag} {normal} {deck}: expected {len(walls)} EP_GW lines, got {len(rows)}")
         warnings = [line for line in log.splitlines() if line.startswith("WARNING") and "runin" in line]
+        # the sweep's sigma/R = 0.8 points press the highest summits past their centre on purpose (the plot's
+        # far end, outside every sphere law): the fix counts and reports them, which is expected there
+        beyond = [w for w in warnings if "past the centre" in w or "passed the centre" in w]
+        if beyond:
+            print(f"note: {tag} {normal} {deck}: summits pressed past their centre (reported by the fix)")
+            warnings = [w for w in warnings if w not in beyond]
         if warnings:    # e.g. the Tabor fallback for S_y, the timestep guard
             fail(f"{tag} {normal} {deck}: unexpected warning: {warnings[0]}")
         sums = expected(args, "sum", material["Estar"], radius, material["Sy"], material["nu"], data + ".heights",
