@@ -132,7 +132,7 @@ double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairMo
       const PairModuli moduli = moduli_of(i, j);
       if (!(moduli.effective_modulus > 0.0)) continue;
       // every rank sees the same moduli and reduced radii: a failure is collective
-      const std::string where = fmt::format("{}: timestep guard for types {} {} (E* = {}, G* = {})", style, i, j,
+      const std::string where = fmt::format("{}: timestep guard for types {} {} (E* = {:.4g}, G* = {:.4g})", style, i, j,
                                             moduli.effective_modulus, moduli.effective_shear_modulus);
       runin_lammps::kernel_call(lmp, where, true, [&] {
         const tribo::Material equivalent =

@@ -19,6 +19,7 @@ std::string type_name(const toml::node &node) {
 namespace {
 
 using json = nlohmann::json;
+constexpr int kMaxCaseNesting = 32;
 
 std::string one_line(std::string text) {
   for (char &c : text)
@@ -99,7 +100,15 @@ toml::table parse_json_case(const std::string &text, const std::string &path) {
   std::vector<std::set<std::string>> seen;
   std::vector<std::string> keys;
   std::vector<bool> in_object;  // per open container
-  const json::parser_callback_t strict = [&](int, json::parse_event_t event, json &parsed) {
+  const json::parser_callback_t strict = [&](int depth, json::parse_event_t event, json &parsed) {
+    // case files are a few levels deep; a cap keeps a hostile file from exhausting the stack
+    if (depth > kMaxCaseNesting) {
+      std::vector<std::string> named;
+      for (const auto &k : keys)
+        if (!k.empty()) named.push_back(k);
+      throw InputError(path + ": key '" + key_path(named) + "': nested deeper than " +
+                       std::to_string(kMaxCaseNesting) + " levels");
+    }
     switch (event) {
       case json::parse_event_t::object_start: in_object.push_back(true); seen.emplace_back(); keys.emplace_back(); break;
       case json::parse_event_t::array_start: in_object.push_back(false); keys.emplace_back(); break;
@@ -123,6 +132,11 @@ toml::table parse_json_case(const std::string &text, const std::string &path) {
   json document;
   try {
     document = json::parse(text, strict);
+  } catch (const json::out_of_range &e) {  // a number beyond a double (e.g. 1e400)
+    std::vector<std::string> named;
+    for (const auto &k : keys)
+      if (!k.empty()) named.push_back(k);
+    throw InputError(path + ": key '" + key_path(named) + "': number out of range (overflows a double)");
   } catch (const json::parse_error &e) {
     // e.byte counts the characters read up to and including the offending one.
     std::size_t line = 1, column = 1;
@@ -147,6 +161,8 @@ toml::table parse_json_case(const std::string &text, const std::string &path) {
 }
 
 toml::table parse_toml(const std::string &path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a directory, not a case file");
   if (std::filesystem::path(path).extension() == ".json") {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open the case file");

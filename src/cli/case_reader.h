@@ -1,6 +1,7 @@
 // Typed, checked access to a TOML or JSON case file; every error names the file and the key.
 #pragma once
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -30,6 +31,7 @@ toml::table parse_json_case(const std::string &text, const std::string &path);
 // Reads keys by dotted path ("pin.mass"); `fallback` makes a key optional.
 class CaseReader {
  public:
+  static constexpr std::size_t kMaxFrames = 200;
   CaseReader(std::string path, toml::table root, const Schema &schema)
       : path_(std::move(path)), root_(std::move(root)), schema_(schema) {}
 
@@ -74,12 +76,14 @@ class CaseReader {
     if (value < 0.0) fail(key, "must be >= 0, got " + format(value));
     return value;
   }
-  long positive_integer(const std::string &key, long fallback) const {
+  // Positive and at most `max` (an int by default: callers store counts in int, which must not wrap).
+  long positive_integer(const std::string &key, long fallback, long max = std::numeric_limits<int>::max()) const {
     const toml::node *node = root_.at_path(key).node();
     if (!node) return fallback;
     if (!node->is_integer()) fail(key, "expected an integer, got " + type_name(*node));
     const long value = static_cast<long>(*node->value<int64_t>());
     if (value <= 0) fail(key, "must be positive, got " + std::to_string(value));
+    if (value > max) fail(key, "must be at most " + std::to_string(max) + ", got " + std::to_string(value));
     return value;
   }
   std::string choice(const std::string &key, const std::set<std::string> &options,
@@ -114,9 +118,12 @@ class CaseReader {
     }
     return values;
   }
-  // Output times (VTK frames): numbers(key), each in [0, t_end].
-  std::vector<double> times_within(const std::string &key, double t_end) const {
+  // Output times (VTK frames): numbers(key), each in [0, t_end], at most `max_frames` of them (every frame is a
+  // full field file: the cap bounds the run's output size and time).
+  std::vector<double> times_within(const std::string &key, double t_end, std::size_t max_frames = kMaxFrames) const {
     const std::vector<double> times = numbers(key);
+    if (times.size() > max_frames)
+      fail(key, std::to_string(times.size()) + " frames: at most " + std::to_string(max_frames) + " allowed");
     for (std::size_t i = 0; i < times.size(); ++i)
       if (times[i] < 0.0 || times[i] > t_end)
         fail(key, "element " + std::to_string(i) + ": must be in [0, run.t_end], got " + format(times[i]));

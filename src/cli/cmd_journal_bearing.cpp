@@ -246,7 +246,8 @@ Subcommand add_journal_bearing_command(CLI::App &app, PlotRunner plot) {
   auto *cmd = app.add_subcommand("journal-bearing", "Dry journal bearing run-in: contact, friction torque, wear (thesis ch. 5)");
   cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
   cmd->add_option("--law", options->law_path, "law file from fit-law, for friction.model = \"law_file\"");
-  cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required();
+  cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required()
+      ->check(non_empty_path());
   cmd->add_flag("--no-plot", options->no_plot, "write CSV and VTK only");
   cmd->add_option("--max-wear-updates", options->max_wear_updates,
                   "stop with an error instead of running more wear updates (contact re-solves) than this")

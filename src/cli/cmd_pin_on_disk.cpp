@@ -166,7 +166,8 @@ CLI::App *add_pin_on_disk_command(CLI::App &app, PinOnDiskOptions &o) {
   cmd->add_option("--law", o.law_path, "law file from fit-law, for friction.model = \"law_file\"");
   cmd->add_option("--output-dir", o.output_dir,
                   "directory for pin_on_disk.csv/.png, pin_face_*.vts/.pvd and the mu0 sweep files")
-      ->required();
+      ->required()
+      ->check(non_empty_path());
   cmd->add_flag("--no-plot", o.no_plot, "write the CSV (and VTK) only");
   return cmd;
 }

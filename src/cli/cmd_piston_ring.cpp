@@ -332,7 +332,8 @@ Subcommand add_piston_ring_command(CLI::App &app, PlotRunner plot) {
   cmd->add_option("--law", options->law_path, "law file from fit-law, for friction.model = \"law_file\"");
   cmd->add_option("--output-dir", options->output_dir,
                   "directory for piston_ring*.csv, piston_ring*.png and vtk/ (liner and ring-face frames)")
-      ->required();
+      ->required()
+      ->check(non_empty_path());
   cmd->add_flag("--no-plot", options->no_plot, "write the CSV and VTK files only");
   return {cmd, [options, plot = std::move(plot)] { return run(*options, plot); }};
 }

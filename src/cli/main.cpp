@@ -280,13 +280,15 @@ int main(int argc, char **argv) {
   bool fb_no_plot = false;
   auto *fb_cmd = app.add_subcommand("feedback", "Two-mechanism roughness-feedback model R(t), mu(t) (thesis ch. 3)");
   fb_cmd->add_option("case", fb_case, "case file (TOML, or JSON if it ends in .json)")->required();
-  fb_cmd->add_option("--output-dir", fb_dir, "directory for feedback.csv and feedback.png (+ sweep files)")->required();
+  fb_cmd->add_option("--output-dir", fb_dir, "directory for feedback.csv and feedback.png (+ sweep files)")->required()
+      ->check(non_empty_path());
   fb_cmd->add_flag("--no-plot", fb_no_plot, "write the CSV(s) only");
 
   std::string dump_path, vtk_dir, vtk_stem = "asperities";
   auto *vtk_cmd = app.add_subcommand("dump-to-vtk", "Convert a LAMMPS custom dump to VTK (.vtp per snapshot + .pvd)");
   vtk_cmd->add_option("dump", dump_path, "LAMMPS dump file (style custom with x y z columns)")->required();
-  vtk_cmd->add_option("--output-dir", vtk_dir, "directory for the .vtp files and the .pvd collection")->required();
+  vtk_cmd->add_option("--output-dir", vtk_dir, "directory for the .vtp files and the .pvd collection")->required()
+      ->check(non_empty_path());
   vtk_cmd->add_option("--stem", vtk_stem, "file name stem")->capture_default_str();
 
   const Subcommand journal_bearing = add_journal_bearing_command(app, run_python_plot);

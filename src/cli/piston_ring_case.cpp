@@ -123,7 +123,7 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   w.ring_cells = static_cast<int>(reader.positive_integer("wear.ring_cells", 64));
   w.liner_cells = static_cast<int>(reader.positive_integer("wear.liner_cells", 512));
   if (w.ring_cells < 2 || w.ring_cells > 100000) reader.fail("wear.ring_cells", "must lie in [2, 100000]");
-  if (w.liner_cells < 2 || w.liner_cells > 10000000) reader.fail("wear.liner_cells", "must lie in [2, 1e7]");
+  if (w.liner_cells < 2 || w.liner_cells > 100000) reader.fail("wear.liner_cells", "must lie in [2, 100000]");
   w.step_safety = reader.positive("wear.step_safety", 0.5);
   if (w.step_safety >= 1.0) reader.fail("wear.step_safety", "must be below 1 (the stability bound)");
   w.fixed_step = reader.non_negative("wear.fixed_step", 0.0);

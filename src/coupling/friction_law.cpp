@@ -213,37 +213,72 @@ std::string law_to_json_text(const FrictionLaw &law) {
 }
 
 FrictionLaw law_from_json_text(const std::string &text, const std::string &source_name) {
+  using json = nlohmann::json;
+  json doc;
   try {
-    const auto doc = nlohmann::json::parse(text);
-    if (doc.at("format").get<std::string>() != "runin-friction-law" || doc.at("version").get<int>() != 1)
-      throw InputFormatError(source_name + ": not a runin-friction-law version 1 file");
-    const auto &table = doc.at("table");
-    FrictionLaw law{doc.at("source").at("file").get<std::string>(),
-                    doc.at("source").at("distance_column").get<std::string>(),
-                    doc.at("source").at("mu_column").get<std::string>(),
-                    doc.at("units").at("distance").get<std::string>(),
-                    doc.at("units").at("distance_in_m").get<double>(),
-                    TabulatedLaw(table.at("distance").get<std::vector<double>>(),
-                                 table.at("mu").get<std::vector<double>>()),
-                    std::nullopt};
-    if (!(law.distance_unit_in_m > 0.0))
-      throw InputFormatError(source_name + ": key 'units.distance_in_m': must be positive");
-    if (const auto &fit = doc.at("fit"); !fit.is_null()) {
+    doc = json::parse(text);
+  } catch (const json::exception &e) {  // syntax error, or a number that overflows a double
+    throw InputFormatError(source_name + ": invalid JSON: " + e.what());
+  }
+  if (!doc.is_object()) throw InputFormatError(source_name + ": the law must be a JSON object { ... }");
+  // Every value by its JSON pointer; errors name the key as a dotted path.
+  const auto fail = [&](const std::string &pointer, const std::string &problem) {
+    std::string key = pointer.substr(1);
+    std::replace(key.begin(), key.end(), '/', '.');
+    return InputFormatError(source_name + ": key '" + key + "': " + problem);
+  };
+  const auto node = [&](const std::string &pointer) -> const json & {
+    const json::json_pointer where(pointer);
+    if (!doc.contains(where)) throw fail(pointer, "missing (required)");
+    return doc.at(where);
+  };
+  const auto text_at = [&](const std::string &pointer) {
+    const json &v = node(pointer);
+    if (!v.is_string()) throw fail(pointer, std::string("expected a string, got ") + v.type_name());
+    return v.get<std::string>();
+  };
+  const auto number_at = [&](const std::string &pointer) {
+    const json &v = node(pointer);
+    if (!v.is_number()) throw fail(pointer, std::string("expected a number, got ") + v.type_name());
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) throw fail(pointer, "must be finite");
+    return x;
+  };
+  const auto numbers_at = [&](const std::string &pointer) {
+    const json &v = node(pointer);
+    if (!v.is_array()) throw fail(pointer, std::string("expected an array of numbers, got ") + v.type_name());
+    std::vector<double> out;
+    for (const auto &element : v) {
+      if (!element.is_number() || !std::isfinite(element.get<double>()))
+        throw fail(pointer, "element " + std::to_string(out.size()) + ": expected a finite number");
+      out.push_back(element.get<double>());
+    }
+    return out;
+  };
+  if (text_at("/format") != "runin-friction-law" || !node("/version").is_number_integer() ||
+      node("/version").get<long>() != 1)
+    throw InputFormatError(source_name + ": not a runin-friction-law version 1 file");
+  try {
+    FrictionLaw law{text_at("/source/file"), text_at("/source/distance_column"), text_at("/source/mu_column"),
+                    text_at("/units/distance"), number_at("/units/distance_in_m"),
+                    TabulatedLaw(numbers_at("/table/distance"), numbers_at("/table/mu")), std::nullopt};
+    if (!(law.distance_unit_in_m > 0.0)) throw fail("/units/distance_in_m", "must be positive");
+    if (!node("/fit").is_null()) {
       RunInFit f;
-      f.mu_0 = fit.at("mu_0").get<double>();
-      f.mu_ss = fit.at("mu_ss").get<double>();
-      f.s0 = fit.at("s0").get<double>();
-      f.s_peak = fit.at("s_peak").get<double>();
-      f.rms_residual = fit.at("rms_residual").get<double>();
-      f.points = fit.at("points").get<std::size_t>();
-      if (!(f.s0 > 0.0)) throw InputFormatError(source_name + ": key 'fit.s0': must be positive");
+      f.mu_0 = number_at("/fit/mu_0");
+      f.mu_ss = number_at("/fit/mu_ss");
+      f.s0 = number_at("/fit/s0");
+      f.s_peak = number_at("/fit/s_peak");
+      f.rms_residual = number_at("/fit/rms_residual");
+      const json &points = node("/fit/points");
+      if (!points.is_number_unsigned()) throw fail("/fit/points", "expected a non-negative integer");
+      f.points = points.get<std::size_t>();
+      if (!(f.s0 > 0.0)) throw fail("/fit/s0", "must be positive");
       law.fit = f;
     }
     return law;
-  } catch (const nlohmann::json::exception &e) {
-    throw InputFormatError(source_name + ": " + e.what());
-  } catch (const std::invalid_argument &e) {
-    throw InputFormatError(source_name + ": " + e.what());
+  } catch (const std::invalid_argument &e) {  // the table's own checks
+    throw InputFormatError(source_name + ": key 'table': " + e.what());
   }
 }
 

@@ -357,18 +357,39 @@ def single_error(result, pattern, refused="the deck was accepted"):
     return errors[0]
 
 
-def expect_error(args):
+NON_FINITE = re.compile(r"(?<![\w.])[-+]?(nan|inf|infinity)(?![\w.])", re.IGNORECASE)
+
+
+def run_expecting(args):
+    """Runs the deck (-var NAME VALUE for each --var; under mpiexec for --np > 1) in a fresh workdir. No
+    thermo line or output file written before the ERROR or WARNING may hold a non-finite number: the
+    styles must stop or warn before anything non-finite is printed."""
     fresh_dir(args.workdir)
-    result = subprocess.run([args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"],
-                            cwd=args.workdir, env=mpi_env(), capture_output=True, text=True, timeout=60)
-    print("ok: " + single_error(result, args.pattern))
+    command = [args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"]
+    for name, value in args.var or []:
+        command += ["-var", name, value]
+    if args.np > 1:
+        command = [args.mpiexec, "-np", str(args.np)] + command
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True, timeout=120)
+    printed = [line for line in (result.stdout + result.stderr).splitlines()
+               if not line.startswith(("ERROR", "WARNING", "Last command"))]
+    written = []
+    for name in os.listdir(args.workdir):
+        if name.endswith((".dat", ".csv", ".dump")):
+            written += open(os.path.join(args.workdir, name), errors="replace").read().splitlines()
+    bad = [line for line in printed + written if NON_FINITE.search(line)]
+    if bad:
+        fail(f"non-finite value printed or written: {bad[0]!r}")
+    return result
+
+
+def expect_error(args):
+    print("ok: " + single_error(run_expecting(args), args.pattern))
 
 
 def expect_warning(args):
     """The deck runs to the end and prints exactly one WARNING matching the pattern per run."""
-    fresh_dir(args.workdir)
-    result = subprocess.run([args.lmp, "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"],
-                            cwd=args.workdir, env=mpi_env(), capture_output=True, text=True, timeout=60)
+    result = run_expecting(args)
     output = result.stdout + result.stderr
     if result.returncode != 0:
         fail(f"lmp_runin exited with {result.returncode}\n{output}")
@@ -661,12 +682,13 @@ def main():
     for name in ("--lmp", "--mpiexec", "--deck", "--workdir"):
         p.add_argument(name, required=True)
     p.add_argument("--np", type=int, default=1)
-    p = sub.add_parser("expect-error")
-    for name in ("--lmp", "--deck", "--workdir", "--pattern"):
-        p.add_argument(name, required=True)
-    p = sub.add_parser("expect-warning")
-    for name in ("--lmp", "--deck", "--workdir", "--pattern"):
-        p.add_argument(name, required=True)
+    for kind in ("expect-error", "expect-warning"):
+        p = sub.add_parser(kind)
+        for name in ("--lmp", "--deck", "--workdir", "--pattern"):
+            p.add_argument(name, required=True)
+        p.add_argument("--var", nargs=2, action="append", metavar=("NAME", "VALUE"), help="-var NAME VALUE")
+        p.add_argument("--np", type=int, default=1)
+        p.add_argument("--mpiexec", default="mpiexec")
     p = sub.add_parser("materials")
     for name in ("--lmp", "--deck", "--workdir"):
         p.add_argument(name, required=True)
