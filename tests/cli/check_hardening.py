@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""Hardening of the runin CLI (issue 13's findings), each a case that crashed, hung or gave an unclear error:
+hostile case and law files give exit 2 and one line naming the file and key; SIGTERM/SIGINT mid-run and a
+dead process's staging directory leave nothing behind.
+
+usage: check_hardening.py RUNIN SOURCE_DIR WORKDIR"""
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+RUNIN, SOURCE, WORK = sys.argv[1], sys.argv[2], sys.argv[3]
+INPUTS = os.path.join(SOURCE, "inputs")
+failures = []
+
+
+def run(*args, timeout=60):
+    return subprocess.run([RUNIN, *args], cwd=WORK, capture_output=True, text=True, timeout=timeout)
+
+
+def expect_refused(label, args, pattern):
+    result = run(*args)
+    lines = result.stderr.strip().splitlines()
+    if result.returncode != 2 or not lines or not re.search(pattern, lines[0]) or len(lines) > 2:
+        failures.append(f"{label}: exit {result.returncode}, stderr {result.stderr.strip()!r}; want exit 2 and "
+                        f"{pattern!r}")
+    else:
+        print(f"ok: {label}: {lines[0]}")
+
+
+def write(name, text):
+    path = os.path.join(WORK, name)
+    with open(path, "w") as out:
+        out.write(text)
+    return path
+
+
+def staging_dirs():
+    return [n for n in os.listdir(WORK) if ".staging-" in n]
+
+
+shutil.rmtree(WORK, ignore_errors=True)
+os.makedirs(WORK)
+
+# --- case files ------------------------------------------------------------------------------------------
+deep = write("deep.json", '{"model": ' + "[" * 100000 + "]" * 100000 + "}")
+expect_refused("JSON nested 100,000 levels", ["feedback", deep, "--output-dir", "o"],
+               r"deep.json: key 'model': nested deeper than 32 levels")
+lubricated = open(os.path.join(INPUTS, "feedback_lubricated.json")).read()
+overflow = write("overflow.json", re.sub(r'"R0": *[-0-9.eE+]+', '"R0": 1e400', lubricated, count=1))
+expect_refused("JSON number 1e400", ["feedback", overflow, "--output-dir", "o"],
+               r"overflow.json: key 'run.R0': number out of range")
+expect_refused("a directory as case file", ["feedback", INPUTS, "--output-dir", "o"], r"is a directory, not a case file")
+expect_refused("empty --output-dir", ["feedback", os.path.join(INPUTS, "feedback_dry.toml"), "--output-dir", ""],
+               r"--output-dir: must not be empty")
+piston = open(os.path.join(INPUTS, "piston_ring.toml")).read()
+wrap = write("wrap.toml", piston.replace("ring_cells = 64", "ring_cells = 4294967298"))
+expect_refused("integer beyond int (2^32 + 2)", ["piston-ring", wrap, "--output-dir", "o", "--no-plot"],
+               r"key 'wear.ring_cells': must be at most 2147483647, got 4294967298")
+cells = write("cells.toml", re.sub(r"(?m)^liner_cells = .*$", "liner_cells = 10000000", piston))
+expect_refused("liner cells above the cap", ["piston-ring", cells, "--output-dir", "o", "--no-plot"],
+               r"key 'wear.liner_cells': must lie in \[2, 100000\]")
+frames = "[" + ", ".join("0.0" for _ in range(20000)) + "]"
+many = write("frames.toml", re.sub(r"(?m)^vtk_times = .*$", "vtk_times = " + frames, piston))
+expect_refused("20,000 VTK frames", ["piston-ring", many, "--output-dir", "o", "--no-plot"],
+               r"key 'output.vtk_times': 20000 frames: at most 200 allowed")
+
+# --- law files -------------------------------------------------------------------------------------------
+case = os.path.join(INPUTS, "pin_on_disk_micro.toml")
+law_text = run("fit-law", "--input", os.path.join(SOURCE, "tests/data/fric_ave_time.txt"), "--distance-column",
+               "v_slide", "--mu-column", "c_fric[3]", "--output", "law.json")
+law = json.load(open(os.path.join(WORK, "law.json")))
+for label, document, pattern in [
+        ("law file with a null root", None, r"the law must be a JSON object"),
+        ("law value of the wrong type", {**law, "units": {**law["units"], "distance_in_m": "1"}},
+         r"key 'units.distance_in_m': expected a number, got string"),
+        ("law table with a null", {**law, "table": {**law["table"], "mu": law["table"]["mu"][:2] + [None]}},
+         r"key 'table.mu': element 2: expected a finite number")]:
+    path = write("bad_law.json", json.dumps(document))
+    expect_refused(label, ["pin-on-disk", case, "--law", path, "--output-dir", "o", "--no-plot"], pattern)
+
+# --- signals and stale staging ---------------------------------------------------------------------------
+# 1e5 liner cells: a run of several seconds, long enough to be killed mid-way
+long_case = write("long.toml", re.sub(r"(?m)^liner_cells = .*$", "liner_cells = 100000", piston))
+for sig in (signal.SIGTERM, signal.SIGINT):
+    process = subprocess.Popen([RUNIN, "piston-ring", long_case, "--output-dir", "killed", "--no-plot"], cwd=WORK,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.time() + 20
+    while not staging_dirs() and time.time() < deadline and process.poll() is None:
+        time.sleep(0.05)
+    time.sleep(0.3)
+    if process.poll() is not None:
+        failures.append(f"{sig.name}: the run ended before it could be killed (exit {process.returncode})")
+        continue
+    process.send_signal(sig)
+    status = process.wait(timeout=30)
+    left = staging_dirs()
+    if status != -sig or left or os.path.exists(os.path.join(WORK, "killed")):
+        failures.append(f"{sig.name}: exit {status}, staging left {left}, output dir "
+                        f"{os.path.exists(os.path.join(WORK, 'killed'))}")
+    else:
+        print(f"ok: {sig.name} mid-run: killed by the signal, no staging directory or output left")
+
+dead_pid = subprocess.Popen(["true"])
+dead_pid.wait()
+stale = os.path.join(WORK, f".fb.staging-{dead_pid.pid}-0")
+alive = os.path.join(WORK, f".fb.staging-{os.getpid()}-0")
+for path in (stale, alive):
+    os.makedirs(path)
+    write(os.path.relpath(os.path.join(path, "partial.csv"), WORK), "t,R\n0,1\n")
+result = run("feedback", os.path.join(INPUTS, "feedback_dry.toml"), "--output-dir", "fb", "--no-plot")
+if result.returncode != 0 or os.path.exists(stale) or not os.path.exists(alive):
+    failures.append(f"stale staging: exit {result.returncode}, dead process's kept {os.path.exists(stale)}, live "
+                    f"process's removed {not os.path.exists(alive)}")
+else:
+    print("ok: a dead process's staging directory is removed by the next run; a live one's is kept")
+shutil.rmtree(alive, ignore_errors=True)
+
+if failures:
+    print("FAIL:\n  " + "\n  ".join(failures))
+    sys.exit(1)
+print("ok: all hardening cases")
