@@ -329,7 +329,7 @@ void FixRuninWall::setup(int)
 void FixRuninWall::post_force(int)
 {
   update_wall_velocity();
-  move_wall();
+  runin_lammps::kernel_call(lmp, "fix runin/wall", true, [&] { move_wall(); });    // the servo: every rank alike
   compute_contacts(true);
 }
 

@@ -110,6 +110,8 @@ void stop_on_non_finite_force(LAMMPS *lmp, const std::string &style)
 
 double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairModuli(int, int)> &moduli_of)
 {
+  if (!(lmp->update->dt > 0.0) || !std::isfinite(lmp->update->dt))
+    lmp->error->all(FLERR, fmt::format("{}: timestep {} s must be positive and finite", style, lmp->update->dt));
   Atom *atom = lmp->atom;
   const int ntypes = atom->ntypes;
   const double inf = std::numeric_limits<double>::infinity();

@@ -169,7 +169,7 @@ int feedback(const std::string &case_path, const std::string &output_dir, bool p
     std::string sweep_text = c.sweep->parameter + ",R_star,mu_R_star,k_R_star,time_to_1pct,time_to_1pct_exact\n";
     for (const auto &r : rows)
       sweep_text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g}\n", r.value, r.r_star, r.mu_star, r.k_star,
-                                r.settle < 0.0 ? std::string("nan") : fmt::format("{:.12g}", r.settle),
+                                r.settle < 0.0 ? std::string() : fmt::format("{:.12g}", r.settle),  // empty: not within t_end
                                 r.settle_exact);
     out.write("feedback_sweep.csv", sweep_text);
     written.push_back("feedback_sweep.csv");

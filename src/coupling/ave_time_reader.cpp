@@ -1,5 +1,6 @@
 #include "coupling/ave_time_reader.h"
 
+#include <filesystem>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -80,9 +81,16 @@ AveTimeTable parse_ave_time(std::istream &in, const std::string &source_name) {
   return AveTimeTable(source_name, std::move(names), std::move(columns));
 }
 
-AveTimeTable read_ave_time(const std::string &path) {
+std::ifstream open_input(const std::string &path, const std::string &what) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputFormatError(path + ": is a directory, not a " + what);
   std::ifstream file(path);
-  if (!file) throw InputFormatError(path + ": cannot open file");
+  if (!file) throw InputFormatError(path + ": cannot open the " + what);
+  return file;
+}
+
+AveTimeTable read_ave_time(const std::string &path) {
+  std::ifstream file = open_input(path, "fix ave/time file");
   return parse_ave_time(file, path);
 }
 

@@ -1,6 +1,7 @@
 // Reader for LAMMPS `fix ave/time ... mode scalar` output files.
 #pragma once
 
+#include <fstream>
 #include <cstddef>
 #include <istream>
 #include <stdexcept>
@@ -15,6 +16,10 @@ class InputFormatError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// An input file opened for reading; a directory or an unreadable path is an InputFormatError naming it
+// (a directory "opens" as a stream that fails on the first read, with a library message).
+std::ifstream open_input(const std::string &path, const std::string &what);
 
 // The numeric table of one ave/time file; columns are named by the header line
 // ("TimeStep", "v_slide", "c_fric[3]", ...).

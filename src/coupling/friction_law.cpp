@@ -218,7 +218,11 @@ FrictionLaw law_from_json_text(const std::string &text, const std::string &sourc
   try {
     doc = json::parse(text);
   } catch (const json::exception &e) {  // syntax error, or a number that overflows a double
-    throw InputFormatError(source_name + ": invalid JSON: " + e.what());
+    // nlohmann's text after its "[json.exception.<kind>.<id>] " tag: where and what
+    const std::string what = e.what();
+    const auto tag_end = what.find("] ");
+    throw InputFormatError(source_name + ": invalid JSON: " +
+                           (tag_end == std::string::npos ? what : what.substr(tag_end + 2)));
   }
   if (!doc.is_object()) throw InputFormatError(source_name + ": the law must be a JSON object { ... }");
   // Every value by its JSON pointer; errors name the key as a dotted path.
@@ -283,8 +287,7 @@ FrictionLaw law_from_json_text(const std::string &text, const std::string &sourc
 }
 
 FrictionLaw read_law_file(const std::string &path) {
-  std::ifstream file(path);
-  if (!file) throw InputFormatError(path + ": cannot open file");
+  std::ifstream file = open_input(path, "law file");
   std::ostringstream text;
   text << file.rdbuf();
   return law_from_json_text(text.str(), path);

@@ -12,8 +12,7 @@ std::size_t DumpSnapshot::column(const std::string &name, const std::string &fil
 }
 
 std::vector<DumpSnapshot> read_custom_dump(const std::string &path) {
-  std::ifstream in(path);
-  if (!in) throw InputFormatError(path + ": cannot open dump file");
+  std::ifstream in = open_input(path, "dump file");
   std::vector<DumpSnapshot> snapshots;
   std::string line;
   int lineno = 0;

@@ -1,16 +1,20 @@
 #include "coupling/vtk_export.h"
 
 #include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPointSet.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLStructuredGridWriter.h>
 
+#include <cmath>
 #include <cstdio>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -21,8 +25,26 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A field with NaN or inf is never written (ParaView would show it as plausible colours): the caller's run
+// stops with the file, array and point named.
+void check_finite(vtkPointSet *data, const fs::path &destination) {
+  std::vector<vtkDataArray *> arrays{data->GetPoints() ? data->GetPoints()->GetData() : nullptr};
+  vtkPointData *fields = data->GetPointData();
+  for (int a = 0; a < fields->GetNumberOfArrays(); ++a) arrays.push_back(fields->GetArray(a));
+  for (vtkDataArray *array : arrays) {
+    if (!array) continue;
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+        if (!std::isfinite(array->GetComponent(i, c)))
+          throw std::runtime_error(destination.filename().string() + ": non-finite value in " +
+                                   (array->GetName() ? std::string("'") + array->GetName() + "'" : "the points") +
+                                   " at point " + std::to_string(i) + ": the solution diverged; no file written");
+  }
+}
+
 template <class Writer, class Data>
 void write_atomically(Data &data, const fs::path &destination) {
+  check_finite(data, destination);
   const fs::path temp = destination.string() + ".part";
   vtkNew<Writer> writer;
   writer->SetFileName(temp.c_str());
