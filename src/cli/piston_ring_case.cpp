@@ -119,6 +119,9 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   // Winkler layer: plane-strain modulus over the ring's radial thickness.
   w.foundation_modulus =
       reader.positive("wear.foundation_modulus", youngs / (1.0 - poisson * poisson) / thickness);
+  // below a 1 MPa elastomer over 1 m the face no longer carries the ring (1e-300 diverged to nan)
+  if (w.foundation_modulus < 1e6)
+    reader.fail("wear.foundation_modulus", "must be at least 1e6 Pa/m, got " + CaseReader::format(w.foundation_modulus));
   w.crown_height = reader.non_negative("wear.crown_height", 0.0);
   w.ring_cells = static_cast<int>(reader.positive_integer("wear.ring_cells", 64));
   w.liner_cells = static_cast<int>(reader.positive_integer("wear.liner_cells", 512));

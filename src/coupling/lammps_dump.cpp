@@ -5,6 +5,11 @@
 
 namespace runin::coupling {
 
+namespace {
+// 1e8 atoms x (id, type, x, y, z, ...) is several GB in memory and in VTK files: beyond it, split the dump.
+constexpr long long kMaxDumpAtoms = 100000000;
+}  // namespace
+
 std::size_t DumpSnapshot::column(const std::string &name, const std::string &file) const {
   for (std::size_t c = 0; c < columns.size(); ++c)
     if (columns[c] == name) return c;
@@ -34,6 +39,9 @@ std::vector<DumpSnapshot> read_custom_dump(const std::string &path) {
     long long natoms = 0;
     try { natoms = std::stoll(line); } catch (...) { throw bad("atom count is not an integer"); }
     if (natoms < 0) throw bad("negative atom count");
+    if (natoms > kMaxDumpAtoms)
+      throw bad("atom count " + std::to_string(natoms) + " above the limit of " + std::to_string(kMaxDumpAtoms) +
+                " per snapshot (split the dump)");
     next("'ITEM: BOX BOUNDS'");
     for (int d = 0; d < 3; ++d) next("box bounds");
     next("'ITEM: ATOMS ...'");
@@ -41,12 +49,17 @@ std::vector<DumpSnapshot> read_custom_dump(const std::string &path) {
     std::istringstream header(line.substr(11));
     for (std::string name; header >> name;) snap.columns.push_back(name);
     if (snap.columns.empty()) throw bad("no columns in 'ITEM: ATOMS'");
-    snap.values.assign(snap.columns.size(), std::vector<double>(natoms));
+    // grown row by row: a header that promises more atoms than the file holds ends as 'truncated', not as a
+    // failed allocation
+    snap.values.assign(snap.columns.size(), std::vector<double>());
     for (long long a = 0; a < natoms; ++a) {
       next("an atom line");
       std::istringstream row(line);
-      for (auto &column : snap.values)
-        if (!(row >> column[a])) throw bad("expected " + std::to_string(snap.columns.size()) + " numbers");
+      for (auto &column : snap.values) {
+        double value = 0.0;
+        if (!(row >> value)) throw bad("expected " + std::to_string(snap.columns.size()) + " numbers");
+        column.push_back(value);
+      }
     }
     snapshots.push_back(std::move(snap));
   }

@@ -11,8 +11,10 @@ AdhesionPloughing::AdhesionPloughing(double shear_strength, double ploughing_fac
 {
   if (!(shear_strength >= 0.0) || !std::isfinite(shear_strength))
     throw InvalidCoefficient("tau_s: interfacial shear strength must be >= 0");
-  if (!(ploughing_factor >= 0.0) || !std::isfinite(ploughing_factor))
-    throw InvalidCoefficient("plough: ploughing factor must be >= 0");
+  // 1 is the groove of the plastic interference itself; a factor beyond 10 describes no groove (1e308 gave a
+  // ploughing friction coefficient of 1e305)
+  if (!(ploughing_factor >= 0.0 && ploughing_factor <= 10.0))
+    throw InvalidCoefficient("plough: ploughing factor must lie in [0, 10]");
 }
 
 }    // namespace runin::tribo

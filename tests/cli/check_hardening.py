@@ -69,6 +69,18 @@ many = write("frames.toml", re.sub(r"(?m)^vtk_times = .*$", "vtk_times = " + fra
 expect_refused("20,000 VTK frames", ["piston-ring", many, "--output-dir", "o", "--no-plot"],
                r"key 'output.vtk_times': 20000 frames: at most 200 allowed")
 
+soft = write("soft.toml", piston.replace("ring_cells = 64", "ring_cells = 64\nfoundation_modulus = 1e-300"))
+expect_refused("a foundation modulus of 1e-300", ["piston-ring", soft, "--output-dir", "o", "--no-plot"],
+               r"key 'wear.foundation_modulus': must be at least 1e6 Pa/m, got 1e-300")
+journal = open(os.path.join(INPUTS, "journal_bearing.toml")).read()
+frames_jb = write("frames_jb.toml", re.sub(r"(?m)^frame_times = .*$", "frame_times = " + frames, journal))
+expect_refused("20,000 journal-bearing frames", ["journal-bearing", frames_jb, "--output-dir", "o", "--no-plot"],
+               r"key 'run.frame_times': 20000 frames: at most 200 allowed")
+dump = write("huge.dump", "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1000000000000\nITEM: BOX BOUNDS pp pp pp\n"
+             "0 1\n0 1\n0 1\nITEM: ATOMS id type x y z\n1 1 0.1 0.1 0.1\n")
+expect_refused("dump with 1e12 atoms", ["dump-to-vtk", dump, "--output-dir", "o"],
+               r"huge.dump:4: atom count 1000000000000 above the limit of 100000000")
+
 # --- law files -------------------------------------------------------------------------------------------
 case = os.path.join(INPUTS, "pin_on_disk_micro.toml")
 law_text = run("fit-law", "--input", os.path.join(SOURCE, "tests/data/fric_ave_time.txt"), "--distance-column",

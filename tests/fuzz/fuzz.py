@@ -285,11 +285,11 @@ def cli_cases(rng, count, runin):
             command = [runin, "fit-law", "--input", source, "--distance-column", "v_slide", "--mu-column", column,
                        "--output", "{dir}/out/law.json", "--distance-unit", rng.choice(["m", "um", "parsec"])]
         else:
-            atoms = rng.choice(["2", "0", "-3", "1000000000000", "abc"])
+            atoms = rng.choice(["2", "0", "-3", "1000000000000", "50", "abc"])
             dump = ("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n" + atoms + "\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\n"
                     "ITEM: ATOMS id type x y z\n1 1 0.1 0.1 0.1\n2 1 0.5 0.5 0.5\n")
             files = {"a.dump": dump}
-            command = [runin, "dump-to-vtk", "--input", "{dir}/a.dump", "--output-dir", "{dir}/out"]
+            command = [runin, "dump-to-vtk", "{dir}/a.dump", "--output-dir", "{dir}/out"]
             op += f" (atom count {atoms})"
         cases.append(Case(f"cli-{k}", "cli", name if "fit" not in op and "dump" not in op else op.split()[0],
                           op, files, command))
