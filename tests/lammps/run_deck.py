@@ -168,14 +168,15 @@ def run_slider(args):
 
     After the deck's settling (in contact from about step 600 on), 6000 steps at 0.5 m/s (5 nm a step) slide
     the counter-body 30 um: its column next to the periodic x face (0.5 a_top = 10.3 um from it) crosses it by
-    more than skin/2 (0.5 um), so with 2 and 4 ranks atoms change rank (checked below). The square box gives
-    LAMMPS no preference between cuts across and along x (the sliding direction): px 2 puts them across.
+    more than skin/2 (0.5 um), so with 2, 3 and 4 ranks atoms change rank (checked below). The square box gives
+    LAMMPS no preference between cuts across and along x (the sliding direction): px 2 (3 with 3 ranks) puts
+    them across.
     """
     fresh_dir(args.workdir)
     variables = {"coeffs": os.path.join(SOURCE_DIR, "potentials", "CuAl.runin"), "nslide": 6000, "speed": 0.5,
                  "thermo_every": 50}
     if args.np > 1:
-        variables["px"] = 2
+        variables["px"] = 3 if args.np == 3 else 2
     log = run_lammps(args, os.path.join(SOURCE_DIR, args.deck), variables, np=args.np)
     blocks = thermo_blocks(log)
     if len(blocks) != 2:
