@@ -1,5 +1,6 @@
 #include "cli/cmd_piston_ring.h"
 
+#include <cstdio>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -175,6 +176,24 @@ std::vector<std::string> write_frames(const continuum::RingLinerWear &wear, cons
 }
 #endif
 
+// The wear pass visits every ring and liner cell at every sample, and each VTK frame holds every cell around
+// the bore: announced before a run that takes long or needs much memory. The rates were measured on a 2-core
+// VM (doc/hardening.md): 30-90 ns per cell and sample, 40 bytes per VTK point (3 coordinates, 2 fields).
+void announce_large_wear_pass(const PistonRingCase &c, std::size_t samples) {
+  constexpr double kSecondsPerCellSample = 60e-9, kBytesPerPoint = 40.0;
+  const auto &w = c.wear_settings;
+  const double cells = static_cast<double>(w.ring_cells) + static_cast<double>(w.liner_cells);
+  const double seconds = kSecondsPerCellSample * cells * static_cast<double>(samples);
+  const double megabytes =
+      kBytesPerPoint * cells * c.circumferential_points * static_cast<double>(c.vtk_times.size()) / 1e6;
+  if (seconds > 5.0 || megabytes > 500.0)
+    fmt::print("  note: large wear pass: {} samples x {} cells (ring {}, liner {}), {} VTK frames x {} points around: "
+               "about {:.0f} s and {:.0f} MB of memory and disk (estimate)\n",
+               samples, cells, w.ring_cells, w.liner_cells, c.vtk_times.size(), c.circumferential_points,
+               std::ceil(seconds), megabytes);
+  std::fflush(stdout);  // seen before the long part starts, also through a pipe
+}
+
 std::string or_none(double t) { return t < 0.0 ? std::string("none") : fmt::format("{:.6g} s", t); }
 
 // Wear run-in (crank motion): per cycle the largest peak contact pressure; settled from the first
@@ -199,6 +218,7 @@ int run(const Options &o, const PlotRunner &plot) {
   const PistonRingCase c = read_piston_ring_case(o.case_path, o.law_path);
   const auto &p = c.parameters;
   const Curve curve = run_dynamics(c, *c.friction);
+  announce_large_wear_pass(c, curve.samples.size());
   continuum::RingLinerWear wear(c.wear_settings, *c.archard);
   const WearPass wear_pass = run_wear(wear, curve.samples, c.vtk_times);
 

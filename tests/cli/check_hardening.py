@@ -100,7 +100,7 @@ for label, document, pattern in [
 long_case = write("long.toml", re.sub(r"(?m)^liner_cells = .*$", "liner_cells = 100000", piston))
 for sig in (signal.SIGTERM, signal.SIGINT):
     process = subprocess.Popen([RUNIN, "piston-ring", long_case, "--output-dir", "killed", "--no-plot"], cwd=WORK,
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                               stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
     deadline = time.time() + 20
     while not staging_dirs() and time.time() < deadline and process.poll() is None:
         time.sleep(0.05)
@@ -110,6 +110,9 @@ for sig in (signal.SIGTERM, signal.SIGINT):
         continue
     process.send_signal(sig)
     status = process.wait(timeout=30)
+    printed = process.stdout.read()
+    if "note: large wear pass" not in printed or "MB of memory and disk" not in printed:
+        failures.append(f"{sig.name}: no time and memory estimate before the 1e5-cell run: {printed!r}")
     left = staging_dirs()
     if status != -sig or left or os.path.exists(os.path.join(WORK, "killed")):
         failures.append(f"{sig.name}: exit {status}, staging left {left}, output dir "
