@@ -746,9 +746,11 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
   const tribo::ContactModel &model = *models[itype * (atom->ntypes + 1) + jtype];
   double energy = 0.0;
   tribo::ContactResult contact;
-  tribo::with_sub_models(choice, [&](auto normal, auto) {
-    contact = model.stored_force<decltype(normal)::value>(g, history);
-    energy = model.elastic_energy<decltype(normal)::value>(g, history);
+  runin_lammps::kernel_call(lmp, "pair runin/asperity: single()", false, [&] {
+    tribo::with_sub_models(choice, [&](auto normal, auto) {
+      contact = model.stored_force<decltype(normal)::value>(g, history);
+      energy = model.elastic_energy<decltype(normal)::value>(g, history);
+    });
   });
   fforce = contact.normal_force / r;
   for (int k = 0; k < 3; k++) svector[k] = contact.tangential.force[k];
