@@ -546,6 +546,8 @@ void PairRuninAsperity::eval(int eflag)
   // NaN and inf propagate through the sum of all pair forces: one add per contact replaces a pass over
   // every atom's force (FixRuninFiniteCheck skips its pass for this pair)
   double force_sum = 0.0;
+  int invalid_contact = -1;      // first contact outside every contact law's validity (see stop_past_centre)
+  double invalid_force = 0.0;    // its normal force
 
   const int inum = list->inum;
   const int *ilist = list->ilist, *numneigh = list->numneigh;
@@ -607,17 +609,19 @@ void PairRuninAsperity::eval(int eflag)
         RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
     tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
     if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
-    // validity: not past the centre of the smaller summit, not closing by more than its radius in a step
     const double smaller_radius = std::min(radi, radj);
-    if (std::max(g.overlap + g.summit_drop, std::fabs(g.normal_velocity) * step_dt) > smaller_radius)
-      stop_past_centre(i, j, g.overlap + g.summit_drop, std::fabs(g.normal_velocity) * step_dt, 0.0);
     const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
     const double fn = contact.normal_force;
     const double *ft = contact.tangential.force;
     const double *normal = g.normal;
-    // and not pushed apart by more than it in the next step (a timestep too large for this force)
-    if (fn * step_dt * step_dt > smaller_radius * g.effective_mass)
-      stop_past_centre(i, j, g.overlap + g.summit_drop, 0.0, fn * step_dt * step_dt / g.effective_mass);
+    // validity: not past the centre of the smaller summit, and not closing or pushed apart by more than its
+    // radius in one step; the first violation is remembered without a branch and reported after the loop
+    const bool invalid =
+        (std::max(g.overlap + g.summit_drop, std::fabs(g.normal_velocity) * step_dt) > smaller_radius) |
+        (fn * step_dt * step_dt > smaller_radius * g.effective_mass);
+    const bool first_invalid = invalid & (invalid_contact < 0);
+    invalid_contact = first_invalid ? c : invalid_contact;
+    invalid_force = first_invalid ? fn : invalid_force;
 
     const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
     force_sum += fpair[0] + fpair[1] + fpair[2];
@@ -677,6 +681,16 @@ void PairRuninAsperity::eval(int eflag)
   }
 
   if (SUMS) sums = local_sums;
+  if (invalid_contact >= 0) {
+    const int i = touching[invalid_contact].i, j = touching[invalid_contact].j;
+    const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+    const double r = std::sqrt(MathExtra::dot3(del, del));
+    const double reach = summit_reach(radius[i], radius[j], wear_depth(i), wear_depth(j));
+    const tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, 0.0);
+    const double drop = RESHAPE ? std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0) : 0.0;
+    stop_past_centre(i, j, g.overlap + drop, std::fabs(g.normal_velocity) * step_dt,
+                     invalid_force * step_dt * step_dt / g.effective_mass);
+  }
   if (!std::isfinite(force_sum)) runin_lammps::stop_on_non_finite_force(lmp, "pair runin/asperity");
 }
 
