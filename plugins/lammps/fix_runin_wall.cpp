@@ -1,5 +1,6 @@
 #include "fix_runin_wall.h"
 #include "runin_errors.h"
+#include "runin_lammps_compat.h"
 
 #include "fix_runin_wear_state.h"
 #include "runin_material_file.h"
@@ -54,7 +55,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     wall_velocity{0.0, 0.0, 0.0}, vz_given(false), dt(0.0), history(nullptr),
     fix_wear(nullptr)
 {
-  if (!atom->sphere_flag) error->all(FLERR, "fix runin/wall: requires atom_style sphere");
+  if (!runin_compat::sphere_atoms(atom)) error->all(FLERR, "fix runin/wall: requires atom_style sphere");
 
   bool yield_given = false;
   std::string friction_model_name;    // keyword friction_model; else 'strength' with keyword strength

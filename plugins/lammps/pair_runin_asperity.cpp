@@ -715,7 +715,12 @@ void PairRuninAsperity::stop_past_centre(int i, int j, double interference, doub
                                 "large)", update->ntimestep, atom->tag[i], atom->tag[j], what));
 }
 
+// The history as seen from j (reverse transfer of newton-on contacts): the spring turns, the rest is shared.
+#ifdef RUNIN_TRANSFER_HISTORY_TYPES
+void PairRuninAsperity::transfer_history(double *source, double *target, int, int)
+#else
 void PairRuninAsperity::transfer_history(double *source, double *target)
+#endif
 {
   for (int k = tribo::HISTORY_SPRING_X; k <= tribo::HISTORY_SPRING_Z; k++) target[k] = -source[k];
   for (int k = tribo::HISTORY_SLIP; k < history_size; k++) target[k] = source[k];

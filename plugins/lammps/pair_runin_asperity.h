@@ -41,7 +41,11 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void reset_dt() override;
+#ifdef RUNIN_TRANSFER_HISTORY_TYPES
+  void transfer_history(double *, double *, int, int) override;
+#else
   void transfer_history(double *, double *) override;
+#endif
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;

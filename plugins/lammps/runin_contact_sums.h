@@ -3,6 +3,10 @@
 #ifndef LMP_RUNIN_CONTACT_SUMS_H
 #define LMP_RUNIN_CONTACT_SUMS_H
 
+#include "pointers.h"
+
+#include <type_traits>
+
 namespace LAMMPS_NS {
 
 struct RuninContactSums {
@@ -36,7 +40,9 @@ struct RuninContactSums {
 // Implemented by the styles that own contacts, so the compute needs no list of them.
 class RuninContactSource {
  public:
-  virtual ~RuninContactSource() = default;
+  // the exception specification of LAMMPS's Pointers (noexcept(false) in newer releases), which the styles
+  // that mix this in inherit: theirs may not be looser than this one
+  virtual ~RuninContactSource() noexcept(std::is_nothrow_destructible_v<LAMMPS_NS::Pointers>) {}
   virtual const RuninContactSums &contact_sums() const = 0;
   // Cumulative volume worn off rigid counterfaces (not atoms) that the host owns, the same on every rank.
   virtual double counterface_wear_volume() const { return 0.0; }

@@ -2,6 +2,7 @@
 // RUNIN_LAMMPS_VERSION (YYYYMMDD) is derived from version.h by CMake.
 #pragma once
 
+#include "atom.h"
 #include "comm.h"
 #include "error.h"
 #include "utils.h"
@@ -57,6 +58,13 @@ inline bool logical(LAMMPS_NS::LAMMPS *lmp, const std::string &value, const char
   lmp->error->all(FLERR, "{} must be 'yes' or 'no', got '{}'", what, value);
   return false;
 #endif
+}
+
+// Per-atom radius, mass, spin and torque: what atom_style sphere provides (Atom::sphere_flag is gone in
+// LAMMPS 2023+; these flags exist in every release).
+inline bool sphere_atoms(const LAMMPS_NS::Atom *atom)
+{
+  return atom->radius_flag && atom->rmass_flag && atom->omega_flag && atom->torque_flag;
 }
 
 }    // namespace runin_compat

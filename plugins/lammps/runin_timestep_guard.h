@@ -17,6 +17,7 @@ FixStyle(RUNIN/FINITE_CHECK,FixRuninFiniteCheck);
 
 #include <functional>
 #include <string>
+#include <type_traits>
 
 namespace LAMMPS_NS {
 
@@ -57,7 +58,7 @@ double guard_timestep(LAMMPS_NS::LAMMPS *lmp, const char *style,
 // pair forces) and calls stop_on_non_finite_force when the test fails.
 class FiniteForcePair {
  public:
-  virtual ~FiniteForcePair() = default;
+  virtual ~FiniteForcePair() noexcept(std::is_nothrow_destructible_v<LAMMPS_NS::Pointers>) {}    // see RuninContactSource
 };
 
 // For a force loop that found a non-finite force on this rank: stops the run with the guard's ERROR
