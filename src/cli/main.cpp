@@ -261,6 +261,9 @@ int main(int argc, char **argv) {
   using namespace runin::cli;
   CLI::App app{"RunIn: multiscale run-in tribology toolkit (continuum side)", "runin"};
   app.require_subcommand(1);
+  // Option errors on one line like every other error (CLI11 adds "Run with --help ..."); set before the
+  // subcommands are added, which copy it.
+  app.failure_message([](const CLI::App *, const CLI::Error &e) { return "runin: error: " + std::string(e.what()) + "\n"; });
 
   FitLawOptions fit;
   auto *fit_cmd = app.add_subcommand("fit-law", "Fit mu(s) to LAMMPS fix ave/time (mode scalar) output");

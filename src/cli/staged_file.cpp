@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include <fnmatch.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -126,6 +127,25 @@ void remove_stale_staging(const fs::path &directory) {
   }
 }
 
+// Holds SIGINT and SIGTERM back for its lifetime: a signal during commit() would leave the output
+// directory with part of the new set; held, it arrives once the set is complete.
+class InterruptsHeld {
+ public:
+  InterruptsHeld() {
+    sigset_t held;
+    sigemptyset(&held);
+    sigaddset(&held, SIGINT);
+    sigaddset(&held, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &held, &previous_);
+  }
+  ~InterruptsHeld() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+  InterruptsHeld(const InterruptsHeld &) = delete;
+  InterruptsHeld &operator=(const InterruptsHeld &) = delete;
+
+ private:
+  sigset_t previous_;
+};
+
 // Collection files name the frames; move them after the frames so that they never point at nothing.
 bool is_index(const fs::path &p) { return p.extension() == ".pvd"; }
 
@@ -215,6 +235,7 @@ std::vector<fs::path> StagedOutput::commit() {
   }
   std::stable_partition(staged.begin(), staged.end(), [](const fs::path &p) { return !is_index(p); });
 
+  const InterruptsHeld held;
   std::vector<fs::path> committed;
   for (const auto &relative : staged) {
     const fs::path to = directory_ / relative;

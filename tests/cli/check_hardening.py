@@ -25,7 +25,7 @@ def run(*args, timeout=60):
 def expect_refused(label, args, pattern):
     result = run(*args)
     lines = result.stderr.strip().splitlines()
-    if result.returncode != 2 or not lines or not re.search(pattern, lines[0]) or len(lines) > 2:
+    if result.returncode != 2 or len(lines) != 1 or not re.search(r"^runin: error: .*" + pattern, lines[0]):
         failures.append(f"{label}: exit {result.returncode}, stderr {result.stderr.strip()!r}; want exit 2 and "
                         f"{pattern!r}")
     else:
