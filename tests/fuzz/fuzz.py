@@ -352,12 +352,9 @@ def classify(case, returncode, stdout, stderr, directory):
         return "SILENT_NAN", printed_bad[0].strip()[:200]
     if returncode not in (1, 2) or not lines or RAW_TEXT.search(first):
         return "UNCLEAR", first[:200] or f"exit {returncode} without a message"
-    # CLI11's usage errors (exit 2) name the option or positional and add "Run with --help ..."
-    usage_error = returncode == 2 and len(lines) == 2 and lines[1].startswith("Run with --help")
-    names_input = usage_error or "key '" in first or re.search(
-        r"--[\w-]+|\w+\.(toml|json|txt|dump)\b|(^|\s)/\S+|option|subcommand", first) is not None
-    # exit 1: the input parsed but the run failed (a diverging solver, a full disk); one clear line suffices
-    if len(lines) > 2 or not (names_input or (returncode == 1 and first.startswith("runin: error: "))):
+    # exit 2: bad input, one 'runin: error:' line (case reader, law reader and CLI11's option errors all name
+    # the file, key or option); exit 1: the input parsed but the run failed (a diverging solver, a full disk)
+    if len(lines) != 1 or not first.startswith("runin: error: "):
         return "UNCLEAR", first[:200]
     return "CLEAN_ERROR", first[:200]
 
