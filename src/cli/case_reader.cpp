@@ -8,6 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "coupling/ave_time_reader.h"  // InputFormatError
+#include "coupling/json_input.h"
+
 namespace runin::cli {
 
 std::string type_name(const toml::node &node) {
@@ -96,64 +99,11 @@ void convert(const json &value, std::vector<std::string> &keys, const std::strin
 }  // namespace
 
 toml::table parse_json_case(const std::string &text, const std::string &path) {
-  // Duplicate keys are an error in TOML; keep JSON as strict (nlohmann would keep the last one).
-  std::vector<std::set<std::string>> seen;
-  std::vector<std::string> keys;
-  std::vector<bool> in_object;  // per open container
-  const json::parser_callback_t strict = [&](int depth, json::parse_event_t event, json &parsed) {
-    // case files are a few levels deep; a cap keeps a hostile file from exhausting the stack
-    if (depth > kMaxCaseNesting) {
-      std::vector<std::string> named;
-      for (const auto &k : keys)
-        if (!k.empty()) named.push_back(k);
-      throw InputError(path + ": key '" + key_path(named) + "': nested deeper than " +
-                       std::to_string(kMaxCaseNesting) + " levels");
-    }
-    switch (event) {
-      case json::parse_event_t::object_start: in_object.push_back(true); seen.emplace_back(); keys.emplace_back(); break;
-      case json::parse_event_t::array_start: in_object.push_back(false); keys.emplace_back(); break;
-      case json::parse_event_t::object_end: in_object.pop_back(); seen.pop_back(); keys.pop_back(); break;
-      case json::parse_event_t::array_end: in_object.pop_back(); keys.pop_back(); break;
-      case json::parse_event_t::key: {
-        const std::string key = parsed.get<std::string>();
-        keys.back() = key;
-        if (!seen.back().insert(key).second) {
-          std::vector<std::string> named;
-          for (const auto &k : keys)
-            if (!k.empty()) named.push_back(k);
-          throw InputError(path + ": key '" + key_path(named) + "': defined twice");
-        }
-        break;
-      }
-      case json::parse_event_t::value: break;
-    }
-    return true;
-  };
   json document;
   try {
-    document = json::parse(text, strict);
-  } catch (const json::out_of_range &e) {  // a number beyond a double (e.g. 1e400)
-    std::vector<std::string> named;
-    for (const auto &k : keys)
-      if (!k.empty()) named.push_back(k);
-    throw InputError(path + ": key '" + key_path(named) + "': number out of range (overflows a double)");
-  } catch (const json::parse_error &e) {
-    // e.byte counts the characters read up to and including the offending one.
-    std::size_t line = 1, column = 1;
-    const std::size_t end = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-    for (std::size_t i = 0; i < end; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
-    std::string what = e.what();
-    const auto colon = what.find(": ", what.find("parse error"));
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " +
-                     one_line(what));
+    document = coupling::parse_json_input(text, path, kMaxCaseNesting);
+  } catch (const coupling::InputFormatError &e) {
+    throw InputError(e.what());
   }
   if (!document.is_object()) throw InputError(path + ":1:1: invalid JSON: the case must be an object { ... }");
   std::vector<std::string> where;

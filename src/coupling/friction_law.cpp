@@ -1,4 +1,5 @@
 #include "coupling/friction_law.h"
+#include "coupling/json_input.h"
 
 #include <algorithm>
 #include <cmath>
@@ -214,16 +215,7 @@ std::string law_to_json_text(const FrictionLaw &law) {
 
 FrictionLaw law_from_json_text(const std::string &text, const std::string &source_name) {
   using json = nlohmann::json;
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception &e) {  // syntax error, or a number that overflows a double
-    // nlohmann's text after its "[json.exception.<kind>.<id>] " tag: where and what
-    const std::string what = e.what();
-    const auto tag_end = what.find("] ");
-    throw InputFormatError(source_name + ": invalid JSON: " +
-                           (tag_end == std::string::npos ? what : what.substr(tag_end + 2)));
-  }
+  const json doc = parse_json_input(text, source_name);
   if (!doc.is_object()) throw InputFormatError(source_name + ": the law must be a JSON object { ... }");
   // Every value by its JSON pointer; errors name the key as a dotted path.
   const auto fail = [&](const std::string &pointer, const std::string &problem) {
@@ -259,9 +251,10 @@ FrictionLaw law_from_json_text(const std::string &text, const std::string &sourc
     }
     return out;
   };
-  if (text_at("/format") != "runin-friction-law" || !node("/version").is_number_integer() ||
-      node("/version").get<long>() != 1)
-    throw InputFormatError(source_name + ": not a runin-friction-law version 1 file");
+  if (text_at("/format") != "runin-friction-law")
+    throw fail("/format", "not a runin-friction-law file (expected \"runin-friction-law\")");
+  if (!node("/version").is_number_integer() || node("/version").get<long>() != 1)
+    throw fail("/version", "expected the integer 1, got " + node("/version").dump());
   try {
     FrictionLaw law{text_at("/source/file"), text_at("/source/distance_column"), text_at("/source/mu_column"),
                     text_at("/units/distance"), number_at("/units/distance_in_m"),

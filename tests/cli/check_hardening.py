@@ -91,8 +91,12 @@ for label, document, pattern in [
         ("law value of the wrong type", {**law, "units": {**law["units"], "distance_in_m": "1"}},
          r"key 'units.distance_in_m': expected a number, got string"),
         ("law table with a null", {**law, "table": {**law["table"], "mu": law["table"]["mu"][:2] + [None]}},
-         r"key 'table.mu': element 2: expected a finite number")]:
-    path = write("bad_law.json", json.dumps(document))
+         r"key 'table.mu': element 2: expected a finite number"),
+        ("law version as a string", {**law, "version": "1"}, r"key 'version': expected the integer 1, got \"1\""),
+        ("law number beyond a double", "OVERFLOW", r"key 'units.distance_in_m': number out of range")]:
+    text = json.dumps(document) if document != "OVERFLOW" else \
+        json.dumps({**law, "units": {**law["units"], "distance_in_m": 12345.0}}).replace("12345.0", "1e400")
+    path = write("bad_law.json", text)
     expect_refused(label, ["pin-on-disk", case, "--law", path, "--output-dir", "o", "--no-plot"], pattern)
 
 # --- signals and stale staging ---------------------------------------------------------------------------
