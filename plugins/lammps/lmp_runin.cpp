@@ -2,6 +2,7 @@
 // Usage is that of lmp: mpirun -np 2 lmp_runin -in in.deck
 #include "runin_styles.h"
 
+#include "exceptions.h"
 #include "input.h"
 #include "lammps.h"
 #include "plugin.h"
@@ -35,6 +36,10 @@ void LAMMPS_NS::LAMMPS::post_create()
   if (force && modify) runin_lammps::register_styles(this);
 }
 
+namespace {
+void run(int argc, char **argv, bool help);
+}
+
 int main(int argc, char **argv)
 {
   MPI_Init(&argc, &argv);
@@ -55,7 +60,28 @@ int main(int argc, char **argv)
   }
   args.push_back(nullptr);
 
-  auto *lmp = new LAMMPS(static_cast<int>(args.size()) - 1, args.data(), MPI_COMM_WORLD);
+  // As LAMMPS's own main: a library built with exceptions (every release since 2023) throws on ERROR after
+  // printing it; without a catch the process would end in std::terminate (SIGABRT).
+  try {
+    run(static_cast<int>(args.size()) - 1, args.data(), help);
+  } catch (const LAMMPSAbortException &) {    // error->one: the other ranks do not know
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  } catch (const LAMMPSException &) {         // error->all: every rank is here, the message is printed
+    MPI_Barrier(MPI_COMM_WORLD);
+    MPI_Finalize();
+    return 1;
+  } catch (const std::exception &e) {
+    fprintf(stderr, "ERROR: lmp_runin: %s\n", e.what());
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+  MPI_Finalize();
+  return 0;
+}
+
+namespace {
+void run(int argc, char **argv, bool help)
+{
+  auto *lmp = new LAMMPS(argc, argv, MPI_COMM_WORLD);
   runin_lammps::register_styles(lmp);
   (*lmp->input->command_map)["plugin"] = &plugin_command;
 
@@ -74,6 +100,5 @@ int main(int argc, char **argv)
     lmp->input->file();
   }
   delete lmp;
-  MPI_Finalize();
-  return 0;
 }
+}    // namespace
