@@ -3,6 +3,7 @@
 #define LMP_RUNIN_ERRORS_H
 
 #include "error.h"
+#include "exceptions.h"
 #include "lammps.h"
 #include "utils.h"
 
@@ -21,6 +22,8 @@ decltype(auto) kernel_call(LAMMPS_NS::LAMMPS *lmp, const std::string &where, boo
 {
   try {
     return std::forward<Body>(body)();
+  } catch (const LAMMPS_NS::LAMMPSException &) {
+    throw;    // an ERROR already reported by the body (LAMMPS built with exceptions): pass it on, once
   } catch (const std::exception &e) {
     const std::string message = where + ": " + e.what();
     if (collective) lmp->error->all(FLERR, message);
