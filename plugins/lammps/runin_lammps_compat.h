@@ -1,5 +1,5 @@
-// The few LAMMPS API differences between the versions RunIn builds against, in one place.
-// RUNIN_LAMMPS_VERSION (YYYYMMDD) is derived from version.h by CMake.
+// The few LAMMPS API differences between the versions RunIn builds against, in one place. The RUNIN_* feature
+// macros come from CMake's probes of the headers in use (plugins/lammps/CMakeLists.txt), not from dates.
 #pragma once
 
 #include "atom.h"
@@ -9,7 +9,7 @@
 #include "neighbor.h"
 #include "pair.h"
 
-#if RUNIN_LAMMPS_VERSION < 20220324
+#ifndef RUNIN_NEIGHBOR_ADD_REQUEST
 #include "neigh_request.h"
 #endif
 
@@ -18,7 +18,7 @@ namespace runin_compat {
 // A neighbour list sized by particle radius, with per-contact history.
 inline void request_size_history_list(LAMMPS_NS::Pair *pair, LAMMPS_NS::Neighbor *neighbor, int instance)
 {
-#if RUNIN_LAMMPS_VERSION >= 20220324
+#ifdef RUNIN_NEIGHBOR_ADD_REQUEST
   (void) instance;
   neighbor->add_request(pair, LAMMPS_NS::NeighConst::REQ_SIZE | LAMMPS_NS::NeighConst::REQ_HISTORY);
 #else
@@ -30,7 +30,7 @@ inline void request_size_history_list(LAMMPS_NS::Pair *pair, LAMMPS_NS::Neighbor
 
 inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
 {
-#if RUNIN_LAMMPS_VERSION >= 20220324
+#ifdef RUNIN_COMM_OVERLOADS
   comm->reverse_comm(pair);
 #else
   comm->reverse_comm_pair(pair);
@@ -39,7 +39,7 @@ inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
 
 inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
 {
-#if RUNIN_LAMMPS_VERSION >= 20220324
+#ifdef RUNIN_COMM_OVERLOADS
   comm->forward_comm(fix);
 #else
   comm->forward_comm_fix(fix);
@@ -49,7 +49,7 @@ inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
 // utils::logical (LAMMPS 2022 on): yes/no/on/off/true/false/1/0; anything else is an ERROR naming it.
 inline bool logical(LAMMPS_NS::LAMMPS *lmp, const std::string &value, const char *what)
 {
-#if RUNIN_LAMMPS_VERSION >= 20220324
+#ifdef RUNIN_UTILS_LOGICAL
   (void) what;
   return LAMMPS_NS::utils::logical(FLERR, value, false, lmp) == 1;
 #else
