@@ -144,19 +144,12 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
           tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
     } else if (keyword == "friction_model") {
-      try {
-        friction_model_name = values[0];
-        tribo::find_sub_model(tribo::SubModelKind::friction, values[0]);
-      } catch (const std::exception &e) {
-        error->all(FLERR, "fix runin/wall: {}", e.what());
-      }
+      friction_model_name = values[0];
+      runin_lammps::kernel_call(lmp, "fix runin/wall", true,
+                                [&] { tribo::find_sub_model(tribo::SubModelKind::friction, values[0]); });
     } else if (keyword == "normal") {
-      try {
-        choice.index[static_cast<int>(tribo::SubModelKind::normal)] =
-            tribo::find_sub_model(tribo::SubModelKind::normal, values[0]);
-      } catch (const std::exception &e) {
-        error->all(FLERR, "fix runin/wall: {}", e.what());
-      }
+      choice.index[static_cast<int>(tribo::SubModelKind::normal)] = runin_lammps::kernel_call(
+          lmp, "fix runin/wall", true, [&] { return tribo::find_sub_model(tribo::SubModelKind::normal, values[0]); });
     } else if (keyword == "yield") {
       yield_given = true;
       yield_strength = number(0, "S_y");
@@ -207,15 +200,13 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
                    parameters.poisson_ratio);
 
   // the contact model validates its coefficients; the message names the offending one
-  try {
+  runin_lammps::kernel_call(lmp, "fix runin/wall", true, [&] {
     if (!(parameters.hardness_i > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", parameters.hardness_i));
     if (!(parameters.hardness_j > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", parameters.hardness_j));
     model.emplace(choice, tribo::contact_coefficients(choice, parameters), contact_settings);
-  } catch (const std::exception &e) {
-    error->all(FLERR, "fix runin/wall: {}", e.what());
-  }
+  });
 
   vector_flag = 1;
   size_vector = NOUTPUT;
@@ -574,13 +565,11 @@ void FixRuninWall::restart(char *buf)
   last_stiffness = state[5];
   if (!with_model) return;
   const int size = static_cast<int>(state[6]);
-  try {
+  runin_lammps::kernel_call(lmp, "fix runin/wall: restart file", true, [&] {
     const auto stored = tribo::deserialize(state + 7, size);
     if (!(stored.first == choice))
       error->all(FLERR, "fix runin/wall: restart file: {}", tribo::describe_difference(stored.first, choice));
-  } catch (const std::exception &e) {
-    error->all(FLERR, "fix runin/wall: restart file: {}", e.what());
-  }
+  });
 }
 
 void FixRuninWall::grow_arrays(int nmax)

@@ -99,12 +99,8 @@ tribo::ContactCoefficients &PairRuninAsperity::coeff_of(int itype, int jtype)
 
 void PairRuninAsperity::set_sub_model(SubModelKind kind, const std::string &name)
 {
-  int index = 0;
-  try {
-    index = tribo::find_sub_model(kind, name);
-  } catch (const std::exception &e) {
-    error->all(FLERR, "pair_style runin/asperity: {}", e.what());
-  }
+  const int index = runin_lammps::kernel_call(lmp, "pair_style runin/asperity", true,
+                                              [&] { return tribo::find_sub_model(kind, name); });
   if (from_restart && index != choice.of(kind))
     error->all(FLERR,
                "pair_style runin/asperity: the restart file's {} model is '{}', the input asks for '{}'; "
@@ -219,11 +215,8 @@ void PairRuninAsperity::coeff(int narg, char **arg)
                      arg[0], arg[1], tribo::kTaborConstraintFactor, p.yield_strength, p.poisson_ratio);
     c = tribo::contact_coefficients(choice, p);
   }
-  try {
-    tribo::ContactModel(choice, c, contact_settings);    // validates every sub-model's coefficients
-  } catch (const std::exception &e) {
-    error->all(FLERR, "pair_coeff runin/asperity ({}): {}", origin, e.what());
-  }
+  runin_lammps::kernel_call(lmp, fmt::format("pair_coeff runin/asperity ({})", origin), true,
+                            [&] { tribo::ContactModel(choice, c, contact_settings); });    // validates them all
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -258,12 +251,8 @@ tribo::ContactCoefficients PairRuninAsperity::read_keyword_coefficients(int narg
                  arg[iarg]);
     const auto kind = static_cast<SubModelKind>(kind_index);
     if (iarg + 1 >= narg) error->all(FLERR, "pair_coeff runin/asperity: {} needs a model name", arg[iarg]);
-    int model = 0;
-    try {
-      model = tribo::find_sub_model(kind, arg[iarg + 1]);
-    } catch (const std::exception &e) {
-      error->all(FLERR, "pair_coeff runin/asperity: {}", e.what());
-    }
+    const int model = runin_lammps::kernel_call(lmp, "pair_coeff runin/asperity", true,
+                                                [&] { return tribo::find_sub_model(kind, arg[iarg + 1]); });
     if (model != choice.of(kind))
       error->all(FLERR, "pair_coeff runin/asperity: {} model '{}' differs from pair_style's '{}'", arg[iarg],
                  arg[iarg + 1], tribo::registered_sub_models(kind)[choice.of(kind)].name);
@@ -391,20 +380,16 @@ double PairRuninAsperity::init_one(int i, int j)
     // an unset I,J pair is mixed from I,I and J,J (Pair::init has checked those are set), sub-model by
     // sub-model: exact for E* and G*, the geometric mean of LAMMPS GRANULAR for interface values, each
     // body keeping its own wear coefficient and hardness
-    try {
+    runin_lammps::kernel_call(lmp, fmt::format("pair runin/asperity: mixing types {} {}", i, j), true, [&] {
       coeff_of(i, j) = tribo::mix_coefficients(choice, coeff_of(i, i), coeff_of(j, j));
       coeff_of(j, i) = tribo::swap_bodies(choice, coeff_of(i, j));
-    } catch (const std::exception &e) {
-      error->all(FLERR, "pair runin/asperity: mixing types {} {}: {}", i, j, e.what());
-    }
+    });
   }
   const int n = atom->ntypes + 1;
-  try {
+  runin_lammps::kernel_call(lmp, fmt::format("pair runin/asperity: types {} {}", i, j), true, [&] {
     models[i * n + j].emplace(choice, coeff_of(i, j), contact_settings);
     models[j * n + i].emplace(choice, coeff_of(j, i), contact_settings);
-  } catch (const std::exception &e) {
-    error->all(FLERR, "pair runin/asperity: types {} {}: {}", i, j, e.what());
-  }
+  });
   return maxrad[i] + maxrad[j];
 }
 
@@ -836,16 +821,14 @@ void PairRuninAsperity::read_restart(FILE *fp)
       std::vector<double> record(size);
       if (comm->me == 0) utils::sfread(FLERR, record.data(), sizeof(double), size, fp, nullptr, error);
       MPI_Bcast(record.data(), size, MPI_DOUBLE, 0, world);
-      try {
+      runin_lammps::kernel_call(lmp, fmt::format("pair runin/asperity: restart file: types {} {}", i, j), true, [&] {
         const auto stored = tribo::deserialize(record.data(), size);
         if (!(stored.first == choice))
           error->all(FLERR, "pair runin/asperity: restart file: types {} {}: {}", i, j,
                      tribo::describe_difference(stored.first, choice));
         coeff_of(i, j) = stored.second;
         coeff_of(j, i) = tribo::swap_bodies(choice, stored.second);
-      } catch (const std::exception &e) {
-        error->all(FLERR, "pair runin/asperity: restart file: types {} {}: {}", i, j, e.what());
-      }
+      });
     }
   from_restart = true;
 }

@@ -8,6 +8,7 @@
 #include "utils.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <string>
 #include <utility>
@@ -36,8 +37,9 @@ decltype(auto) kernel_call(LAMMPS_NS::LAMMPS *lmp, const std::string &where, boo
 inline double finite_number(LAMMPS_NS::LAMMPS *lmp, const std::string &where, const std::string &name,
                             const char *text)
 {
+  // strtod, not utils::numeric: newer LAMMPS stops on an overflow itself, with a message naming no argument
   if (text && LAMMPS_NS::utils::is_double(text)) {
-    const double value = LAMMPS_NS::utils::numeric(FLERR, text, false, lmp);
+    const double value = std::strtod(text, nullptr);
     if (std::isfinite(value)) return value;
   }
   lmp->error->all(FLERR, where + ": " + name + " must be a finite number, got '" + (text ? text : "") + "'");

@@ -47,16 +47,16 @@ inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
 }
 
 // utils::logical (LAMMPS 2022 on): yes/no/on/off/true/false/1/0; anything else is an ERROR naming it.
+// A word outside the set gives an ERROR naming `what` (utils::logical's own message names no argument).
 inline bool logical(LAMMPS_NS::LAMMPS *lmp, const std::string &value, const char *what)
 {
+  const bool yes = value == "yes" || value == "on" || value == "true" || value == "1";
+  if (!yes && !(value == "no" || value == "off" || value == "false" || value == "0"))
+    lmp->error->all(FLERR, fmt::format("{} must be 'yes' or 'no', got '{}'", what, value));
 #ifdef RUNIN_UTILS_LOGICAL
-  (void) what;
   return LAMMPS_NS::utils::logical(FLERR, value, false, lmp) == 1;
 #else
-  if (value == "yes" || value == "on" || value == "true" || value == "1") return true;
-  if (value == "no" || value == "off" || value == "false" || value == "0") return false;
-  lmp->error->all(FLERR, "{} must be 'yes' or 'no', got '{}'", what, value);
-  return false;
+  return yes;
 #endif
 }
 

@@ -317,7 +317,8 @@ def non_finite_lines(directory, printed):
     """Lines with a non-finite number in printed text (LAMMPS's thermo output; not ERROR/WARNING lines) and in
     the text files a run wrote (VTK files hold binary data: the writer itself refuses non-finite fields)."""
     bad = [l for l in printed.splitlines()
-           if not l.startswith(("ERROR", "WARNING", "Last command", "runin: error")) and NON_FINITE.search(l)]
+           if not l.startswith(("ERROR", "WARNING", "Last command", "Last input line", "runin: error"))
+           and NON_FINITE.search(l)]
     for root, _, names in os.walk(directory):
         for name in names:
             if name.endswith((".csv", ".dat", ".pvd", ".dump")) and "out" in root + name:

@@ -373,7 +373,7 @@ def run_expecting(args):
         command = [args.mpiexec, "-np", str(args.np)] + command
     result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True, timeout=120)
     printed = [line for line in (result.stdout + result.stderr).splitlines()
-               if not line.startswith(("ERROR", "WARNING", "Last command"))]
+               if not line.startswith(("ERROR", "WARNING", "Last command", "Last input line"))]
     written = []
     for name in os.listdir(args.workdir):
         if name.endswith((".dat", ".csv", ".dump")):
