@@ -128,7 +128,7 @@ void ComputeRuninRoughness::compute_vector()
   range.min = -extremes[1];
 
   // reduction 2: power sums about the mean plane and bearing counts below the highest summit
-  try {
+  runin_lammps::kernel_call(lmp, "compute runin/roughness", true, [&] {
     runin::tribo::HeightMoments moments(range.mean(), range.max, depths);
     for (int i = 0; i < nlocal; i++)
       if (mask[i] & groupbit) moments.add(summit(i));
@@ -143,9 +143,7 @@ void ComputeRuninRoughness::compute_vector()
     vector[RV] = stats.Rv;
     vector[RZ] = stats.Rz;
     for (std::size_t k = 0; k < depths.size(); k++) vector[NFIXED + k] = stats.bearing[k];
-  } catch (std::exception &e) {
-    error->all(FLERR, "compute runin/roughness: {}", e.what());
-  }
+  });
 }
 
 void ComputeRuninRoughness::compute_peratom()

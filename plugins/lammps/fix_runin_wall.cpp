@@ -144,19 +144,12 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
           tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
     } else if (keyword == "friction_model") {
-      try {
-        friction_model_name = values[0];
-        tribo::find_sub_model(tribo::SubModelKind::friction, values[0]);
-      } catch (const std::exception &e) {
-        error->all(FLERR, "fix runin/wall: {}", e.what());
-      }
+      friction_model_name = values[0];
+      runin_lammps::kernel_call(lmp, "fix runin/wall", true,
+                                [&] { tribo::find_sub_model(tribo::SubModelKind::friction, values[0]); });
     } else if (keyword == "normal") {
-      try {
-        choice.index[static_cast<int>(tribo::SubModelKind::normal)] =
-            tribo::find_sub_model(tribo::SubModelKind::normal, values[0]);
-      } catch (const std::exception &e) {
-        error->all(FLERR, "fix runin/wall: {}", e.what());
-      }
+      choice.index[static_cast<int>(tribo::SubModelKind::normal)] = runin_lammps::kernel_call(
+          lmp, "fix runin/wall", true, [&] { return tribo::find_sub_model(tribo::SubModelKind::normal, values[0]); });
     } else if (keyword == "yield") {
       yield_given = true;
       yield_strength = number(0, "S_y");
@@ -207,15 +200,13 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
                    parameters.poisson_ratio);
 
   // the contact model validates its coefficients; the message names the offending one
-  try {
+  runin_lammps::kernel_call(lmp, "fix runin/wall", true, [&] {
     if (!(parameters.hardness_i > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", parameters.hardness_i));
     if (!(parameters.hardness_j > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", parameters.hardness_j));
     model.emplace(choice, tribo::contact_coefficients(choice, parameters), contact_settings);
-  } catch (const std::exception &e) {
-    error->all(FLERR, "fix runin/wall: {}", e.what());
-  }
+  });
 
   vector_flag = 1;
   size_vector = NOUTPUT;
@@ -313,6 +304,7 @@ void FixRuninWall::post_run()
     error->warning(FLERR, "fix runin/wall: {} asperity evaluations in this run were past the centre of their summit "
                    "(outside every contact law's validity; the first is reported above)", past_centre_count);
   past_centre_count = 0;
+  contact_range.report(lmp, "fix runin/wall");
 }
 
 void FixRuninWall::reset_dt()
@@ -410,6 +402,8 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
   double local[NLOCAL] = {};
   tagint first_bad = std::numeric_limits<tagint>::max();        // lowest atom ID with a non-finite output
   tagint first_through = std::numeric_limits<tagint>::max();    // lowest atom ID the wall passed the centre of
+  tagint worst_atom = 0;                                         // furthest beyond its normal law's range
+  double worst_range = 1.0, beyond_range = 0.0;                  // its range ratio; contacts beyond (ratio > 1)
   const double pi = std::acos(-1.0);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -450,6 +444,10 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
                            contact.strength.ploughing + contact.wear.lost_a + contact.wear.lost_b;
     local[LOCAL_CHECK] += outputs;
     if (!std::isfinite(outputs)) first_bad = std::min(first_bad, tag[i]);
+    const double range = contact.normal.range_ratio;
+    beyond_range += range > 1.0;
+    worst_atom = range > worst_range ? tag[i] : worst_atom;
+    worst_range = std::max(range, worst_range);
 
     double tor[3];
     MathExtra::cross3(normal, ft, tor);
@@ -495,6 +493,7 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
     }
   }
   for (int k = 0; k < 3; k++) sums.counterface_force[k] = local[LOCAL_FX + k];
+  if (advance && worst_atom > 0) contact_range.note(update->ntimestep, beyond_range, worst_range, worst_atom, 0);
 
   double global[NLOCAL];
   MPI_Allreduce(local, global, NLOCAL, MPI_DOUBLE, MPI_SUM, world);
@@ -574,13 +573,11 @@ void FixRuninWall::restart(char *buf)
   last_stiffness = state[5];
   if (!with_model) return;
   const int size = static_cast<int>(state[6]);
-  try {
+  runin_lammps::kernel_call(lmp, "fix runin/wall: restart file", true, [&] {
     const auto stored = tribo::deserialize(state + 7, size);
     if (!(stored.first == choice))
       error->all(FLERR, "fix runin/wall: restart file: {}", tribo::describe_difference(stored.first, choice));
-  } catch (const std::exception &e) {
-    error->all(FLERR, "fix runin/wall: restart file: {}", e.what());
-  }
+  });
 }
 
 void FixRuninWall::grow_arrays(int nmax)

@@ -99,12 +99,8 @@ tribo::ContactCoefficients &PairRuninAsperity::coeff_of(int itype, int jtype)
 
 void PairRuninAsperity::set_sub_model(SubModelKind kind, const std::string &name)
 {
-  int index = 0;
-  try {
-    index = tribo::find_sub_model(kind, name);
-  } catch (const std::exception &e) {
-    error->all(FLERR, "pair_style runin/asperity: {}", e.what());
-  }
+  const int index =
+      runin_lammps::kernel_call(lmp, "pair_style runin/asperity", true, [&] { return tribo::find_sub_model(kind, name); });
   if (from_restart && index != choice.of(kind))
     error->all(FLERR,
                "pair_style runin/asperity: the restart file's {} model is '{}', the input asks for '{}'; "
@@ -139,13 +135,14 @@ void PairRuninAsperity::settings(int narg, char **arg)
     } else if (keyword == "friction") {
       set_sub_model(SubModelKind::friction, value);
     } else if (keyword == "transfer") {
-      const double fraction = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;
+      const double fraction =
+          runin_lammps::finite_number(lmp, "pair_style runin/asperity", "transfer fraction", value.c_str());
       if (!(fraction >= 0.0 && fraction <= 1.0))
         error->all(FLERR, "pair_style runin/asperity: transfer fraction must be in [0, 1], got '{}'", value);
       contact_settings.transfer_fraction = fraction;
     } else if (keyword == "restick") {
-      const double speed = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;
-      if (!(speed >= 0.0) || !std::isfinite(speed))
+      const double speed = runin_lammps::finite_number(lmp, "pair_style runin/asperity", "restick speed", value.c_str());
+      if (!(speed >= 0.0))
         error->all(FLERR, "pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value);
       contact_settings.restick_speed = speed;
     } else {
@@ -219,11 +216,9 @@ void PairRuninAsperity::coeff(int narg, char **arg)
                      arg[0], arg[1], tribo::kTaborConstraintFactor, p.yield_strength, p.poisson_ratio);
     c = tribo::contact_coefficients(choice, p);
   }
-  try {
-    tribo::ContactModel(choice, c, contact_settings);    // validates every sub-model's coefficients
-  } catch (const std::exception &e) {
-    error->all(FLERR, "pair_coeff runin/asperity ({}): {}", origin, e.what());
-  }
+  // validates every sub-model's coefficients
+  runin_lammps::kernel_call(lmp, fmt::format("pair_coeff runin/asperity ({})", origin), true,
+                            [&] { tribo::ContactModel(choice, c, contact_settings); });
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -258,12 +253,8 @@ tribo::ContactCoefficients PairRuninAsperity::read_keyword_coefficients(int narg
                  arg[iarg]);
     const auto kind = static_cast<SubModelKind>(kind_index);
     if (iarg + 1 >= narg) error->all(FLERR, "pair_coeff runin/asperity: {} needs a model name", arg[iarg]);
-    int model = 0;
-    try {
-      model = tribo::find_sub_model(kind, arg[iarg + 1]);
-    } catch (const std::exception &e) {
-      error->all(FLERR, "pair_coeff runin/asperity: {}", e.what());
-    }
+    const int model = runin_lammps::kernel_call(lmp, "pair_coeff runin/asperity", true,
+                                                [&] { return tribo::find_sub_model(kind, arg[iarg + 1]); });
     if (model != choice.of(kind))
       error->all(FLERR, "pair_coeff runin/asperity: {} model '{}' differs from pair_style's '{}'", arg[iarg],
                  arg[iarg + 1], tribo::registered_sub_models(kind)[choice.of(kind)].name);
@@ -391,20 +382,16 @@ double PairRuninAsperity::init_one(int i, int j)
     // an unset I,J pair is mixed from I,I and J,J (Pair::init has checked those are set), sub-model by
     // sub-model: exact for E* and G*, the geometric mean of LAMMPS GRANULAR for interface values, each
     // body keeping its own wear coefficient and hardness
-    try {
+    runin_lammps::kernel_call(lmp, fmt::format("pair runin/asperity: mixing types {} {}", i, j), true, [&] {
       coeff_of(i, j) = tribo::mix_coefficients(choice, coeff_of(i, i), coeff_of(j, j));
       coeff_of(j, i) = tribo::swap_bodies(choice, coeff_of(i, j));
-    } catch (const std::exception &e) {
-      error->all(FLERR, "pair runin/asperity: mixing types {} {}: {}", i, j, e.what());
-    }
+    });
   }
   const int n = atom->ntypes + 1;
-  try {
+  runin_lammps::kernel_call(lmp, fmt::format("pair runin/asperity: types {} {}", i, j), true, [&] {
     models[i * n + j].emplace(choice, coeff_of(i, j), contact_settings);
     models[j * n + i].emplace(choice, coeff_of(j, i), contact_settings);
-  } catch (const std::exception &e) {
-    error->all(FLERR, "pair runin/asperity: types {} {}: {}", i, j, e.what());
-  }
+  });
   return maxrad[i] + maxrad[j];
 }
 
@@ -548,6 +535,8 @@ void PairRuninAsperity::eval(int eflag)
   double force_sum = 0.0;
   int invalid_contact = -1;      // first contact outside every contact law's validity (see stop_past_centre)
   double invalid_force = 0.0;    // its normal force
+  int worst_contact = -1;        // the contact furthest beyond its normal law's range (a counted WARNING)
+  double worst_range = 1.0, beyond_range = 0.0;    // its range ratio; contacts beyond (ratio > 1)
 
   const int inum = list->inum;
   const int *ilist = list->ilist, *numneigh = list->numneigh;
@@ -622,6 +611,10 @@ void PairRuninAsperity::eval(int eflag)
     const bool first_invalid = invalid & (invalid_contact < 0);
     invalid_contact = first_invalid ? c : invalid_contact;
     invalid_force = first_invalid ? fn : invalid_force;
+    const double range = contact.normal.range_ratio;
+    beyond_range += range > 1.0;
+    worst_contact = range > worst_range ? c : worst_contact;
+    worst_range = std::max(range, worst_range);
 
     const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
     force_sum += fpair[0] + fpair[1] + fpair[2];
@@ -681,6 +674,9 @@ void PairRuninAsperity::eval(int eflag)
   }
 
   if (SUMS) sums = local_sums;
+  if (worst_contact >= 0 && advance)
+    contact_range.note(update->ntimestep, beyond_range, worst_range, tag[touching[worst_contact].i],
+                       tag[touching[worst_contact].j]);
   if (invalid_contact >= 0) {
     const int i = touching[invalid_contact].i, j = touching[invalid_contact].j;
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
@@ -836,16 +832,13 @@ void PairRuninAsperity::read_restart(FILE *fp)
       std::vector<double> record(size);
       if (comm->me == 0) utils::sfread(FLERR, record.data(), sizeof(double), size, fp, nullptr, error);
       MPI_Bcast(record.data(), size, MPI_DOUBLE, 0, world);
-      try {
+      const std::string where = fmt::format("pair runin/asperity: restart file: types {} {}", i, j);
+      runin_lammps::kernel_call(lmp, where, true, [&] {
         const auto stored = tribo::deserialize(record.data(), size);
-        if (!(stored.first == choice))
-          error->all(FLERR, "pair runin/asperity: restart file: types {} {}: {}", i, j,
-                     tribo::describe_difference(stored.first, choice));
+        if (!(stored.first == choice)) error->all(FLERR, "{}: {}", where, tribo::describe_difference(stored.first, choice));
         coeff_of(i, j) = stored.second;
         coeff_of(j, i) = tribo::swap_bodies(choice, stored.second);
-      } catch (const std::exception &e) {
-        error->all(FLERR, "pair runin/asperity: restart file: types {} {}: {}", i, j, e.what());
-      }
+      });
     }
   from_restart = true;
 }

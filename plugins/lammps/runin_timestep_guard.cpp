@@ -43,6 +43,13 @@ void FixRuninFiniteCheck::pre_reverse(int, int)
   if (!pair_checks_itself) check();
 }
 
+// the pair has no end-of-run hook of its own
+void FixRuninFiniteCheck::post_run()
+{
+  if (auto *pair = dynamic_cast<runin_lammps::FiniteForcePair *>(force->pair))
+    pair->contact_range.report(lmp, fmt::format("pair {}", force->pair_style));
+}
+
 namespace {
 
 constexpr int kShown = 4;

@@ -14,6 +14,7 @@ FixStyle(RUNIN/FINITE_CHECK,FixRuninFiniteCheck);
 #define LMP_RUNIN_TIMESTEP_GUARD_H
 
 #include "fix.h"
+#include "runin_contact_range.h"
 
 #include <functional>
 #include <string>
@@ -31,6 +32,7 @@ class FixRuninFiniteCheck : public Fix {
   void init() override;
   void setup_pre_reverse(int, int) override;
   void pre_reverse(int, int) override;
+  void post_run() override;
   std::string style_label = "pair runin/asperity";
 
  private:
@@ -55,10 +57,12 @@ double guard_timestep(LAMMPS_NS::LAMMPS *lmp, const char *style,
                       const std::function<PairModuli(int, int)> &moduli_of);
 
 // Implemented by a pair style whose force loop tests every force it adds (e.g. isfinite of the sum of its
-// pair forces) and calls stop_on_non_finite_force when the test fails.
+// pair forces) and calls stop_on_non_finite_force when the test fails. Its loop also counts the contacts beyond
+// their law's range in contact_range, which FixRuninFiniteCheck reports at the end of each run.
 class FiniteForcePair {
  public:
   virtual ~FiniteForcePair() noexcept(std::is_nothrow_destructible_v<LAMMPS_NS::Pointers>) {}    // see RuninContactSource
+  ContactRangeMonitor contact_range;
 };
 
 // For a force loop that found a non-finite force on this rank: stops the run with the guard's ERROR
