@@ -29,7 +29,8 @@ ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) 
       seen_bearing = true;
       ++iarg;
       while (iarg < narg && utils::is_double(arg[iarg])) {
-        const double depth = runin_lammps::finite_number(lmp, "compute runin/roughness", "bearing depth", arg[iarg]);
+        const double depth =
+            runin_lammps::finite_number(lmp, FLERR, "compute runin/roughness", "bearing depth", arg[iarg]);
         if (!(depth >= 0.0))
           error->all(FLERR, "compute runin/roughness: bearing depth must be >= 0, got {}", arg[iarg]);
         depths.push_back(depth);
@@ -128,7 +129,7 @@ void ComputeRuninRoughness::compute_vector()
   range.min = -extremes[1];
 
   // reduction 2: power sums about the mean plane and bearing counts below the highest summit
-  runin_lammps::kernel_call(lmp, "compute runin/roughness", true, [&] {
+  runin_lammps::kernel_call(lmp, FLERR, "compute runin/roughness", true, [&] {
     runin::tribo::HeightMoments moments(range.mean(), range.max, depths);
     for (int i = 0; i < nlocal; i++)
       if (mask[i] & groupbit) moments.add(summit(i));

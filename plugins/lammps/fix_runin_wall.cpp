@@ -76,7 +76,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix runin/wall: keyword '{}' needs {} value(s), got {}", keyword, nvalues, narg - iarg - 1);
     char **values = &arg[iarg + 1];
     auto number = [&](int k, const char *name) {
-      return runin_lammps::finite_number(lmp, "fix runin/wall", keyword + " " + name, values[k]);
+      return runin_lammps::finite_number(lmp, FLERR, "fix runin/wall", keyword + " " + name, values[k]);
     };
 
     if (keyword == "zplane") {
@@ -145,11 +145,12 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
           tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
     } else if (keyword == "friction_model") {
       friction_model_name = values[0];
-      runin_lammps::kernel_call(lmp, "fix runin/wall", true,
+      runin_lammps::kernel_call(lmp, FLERR, "fix runin/wall", true,
                                 [&] { tribo::find_sub_model(tribo::SubModelKind::friction, values[0]); });
     } else if (keyword == "normal") {
-      choice.index[static_cast<int>(tribo::SubModelKind::normal)] = runin_lammps::kernel_call(
-          lmp, "fix runin/wall", true, [&] { return tribo::find_sub_model(tribo::SubModelKind::normal, values[0]); });
+      choice.index[static_cast<int>(tribo::SubModelKind::normal)] =
+          runin_lammps::kernel_call(lmp, FLERR, "fix runin/wall", true,
+                                    [&] { return tribo::find_sub_model(tribo::SubModelKind::normal, values[0]); });
     } else if (keyword == "yield") {
       yield_given = true;
       yield_strength = number(0, "S_y");
@@ -200,7 +201,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
                    parameters.poisson_ratio);
 
   // the contact model validates its coefficients; the message names the offending one
-  runin_lammps::kernel_call(lmp, "fix runin/wall", true, [&] {
+  runin_lammps::kernel_call(lmp, FLERR, "fix runin/wall", true, [&] {
     if (!(parameters.hardness_i > 0.0))
       throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", parameters.hardness_i));
     if (!(parameters.hardness_j > 0.0))
@@ -246,7 +247,8 @@ void FixRuninWall::parse_setting(Setting &s, const char *arg, const char *keywor
   if (strncmp(arg, "v_", 2) == 0) {
     s.variable = arg + 2;
   } else {
-    s.value = runin_lammps::finite_number(lmp, "fix runin/wall", std::string(keyword) + " (a number or v_name)", arg);
+    s.value =
+        runin_lammps::finite_number(lmp, FLERR, "fix runin/wall", std::string(keyword) + " (a number or v_name)", arg);
     s.variable.clear();
   }
 }
@@ -295,7 +297,7 @@ void FixRuninWall::guard_timestep()
     return i == j && in_group[i]
                ? runin_lammps::PairModuli{model->effective_modulus(), model->effective_shear_modulus()}
                : runin_lammps::PairModuli{};
-  });
+  }, groupbit);
 }
 
 void FixRuninWall::post_run()
@@ -304,6 +306,7 @@ void FixRuninWall::post_run()
     error->warning(FLERR, "fix runin/wall: {} asperity evaluations in this run were past the centre of their summit "
                    "(outside every contact law's validity; the first is reported above)", past_centre_count);
   past_centre_count = 0;
+  contact_range.report(lmp, "fix runin/wall");
 }
 
 void FixRuninWall::reset_dt()
@@ -321,7 +324,7 @@ void FixRuninWall::setup(int)
 void FixRuninWall::post_force(int)
 {
   update_wall_velocity();
-  runin_lammps::kernel_call(lmp, "fix runin/wall", true, [&] { move_wall(); });    // the servo: every rank alike
+  runin_lammps::kernel_call(lmp, FLERR, "fix runin/wall", true, [&] { move_wall(); });    // the servo: every rank alike
   compute_contacts(true);
 }
 
@@ -369,7 +372,7 @@ void FixRuninWall::move_wall()
 
 void FixRuninWall::compute_contacts(bool advance)
 {
-  runin_lammps::kernel_call(lmp, "fix runin/wall", false, [&] {
+  runin_lammps::kernel_call(lmp, FLERR, "fix runin/wall", false, [&] {
     tribo::with_sub_models(choice, [&](auto normal, auto friction) {
       compute_contacts<decltype(normal)::value, decltype(friction)::value>(advance);
     });
@@ -401,6 +404,8 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
   double local[NLOCAL] = {};
   tagint first_bad = std::numeric_limits<tagint>::max();        // lowest atom ID with a non-finite output
   tagint first_through = std::numeric_limits<tagint>::max();    // lowest atom ID the wall passed the centre of
+  tagint worst_atom = 0;                                         // furthest beyond its normal law's range
+  double worst_range = 1.0, beyond_range = 0.0;                  // its range ratio; contacts beyond (ratio > 1)
   const double pi = std::acos(-1.0);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -441,6 +446,10 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
                            contact.strength.ploughing + contact.wear.lost_a + contact.wear.lost_b;
     local[LOCAL_CHECK] += outputs;
     if (!std::isfinite(outputs)) first_bad = std::min(first_bad, tag[i]);
+    const double range = contact.normal.range_ratio;
+    beyond_range += range > 1.0;
+    worst_atom = range > worst_range ? tag[i] : worst_atom;
+    worst_range = std::max(range, worst_range);
 
     double tor[3];
     MathExtra::cross3(normal, ft, tor);
@@ -486,6 +495,7 @@ template <int NORMAL, int FRICTION> void FixRuninWall::compute_contacts(bool adv
     }
   }
   for (int k = 0; k < 3; k++) sums.counterface_force[k] = local[LOCAL_FX + k];
+  if (advance && worst_atom > 0) contact_range.note(update->ntimestep, beyond_range, worst_range, worst_atom, 0);
 
   double global[NLOCAL];
   MPI_Allreduce(local, global, NLOCAL, MPI_DOUBLE, MPI_SUM, world);
@@ -565,7 +575,7 @@ void FixRuninWall::restart(char *buf)
   last_stiffness = state[5];
   if (!with_model) return;
   const int size = static_cast<int>(state[6]);
-  runin_lammps::kernel_call(lmp, "fix runin/wall: restart file", true, [&] {
+  runin_lammps::kernel_call(lmp, FLERR, "fix runin/wall: restart file", true, [&] {
     const auto stored = tribo::deserialize(state + 7, size);
     if (!(stored.first == choice))
       error->all(FLERR, "fix runin/wall: restart file: {}", tribo::describe_difference(stored.first, choice));

@@ -13,6 +13,7 @@ FixStyle(runin/wall,FixRuninWall);
 #define LMP_FIX_RUNIN_WALL_H
 
 #include "fix.h"
+#include "runin_contact_range.h"
 #include "runin_contact_sums.h"
 #include "tribo/contact_model.h"
 
@@ -87,6 +88,7 @@ class FixRuninWall : public Fix, public RuninContactSource {
   double dt;
   double smallest_radius;    // of the group's asperities (init): the wall may not slide further in one step
   bigint past_centre_count = 0;    // asperity evaluations past the summit centre in this run (WARNING)
+  runin_lammps::ContactRangeMonitor contact_range;    // contacts beyond their normal law's range (WARNING)
 
   double **history;
   double totals[NOUTPUT];    // reduced over ranks at every evaluation

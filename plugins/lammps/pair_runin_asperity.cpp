@@ -99,8 +99,9 @@ tribo::ContactCoefficients &PairRuninAsperity::coeff_of(int itype, int jtype)
 
 void PairRuninAsperity::set_sub_model(SubModelKind kind, const std::string &name)
 {
-  const int index = runin_lammps::kernel_call(lmp, "pair_style runin/asperity", true,
-                                              [&] { return tribo::find_sub_model(kind, name); });
+  const int index =
+      runin_lammps::kernel_call(lmp, FLERR, "pair_style runin/asperity", true,
+                                [&] { return tribo::find_sub_model(kind, name); });
   if (from_restart && index != choice.of(kind))
     error->all(FLERR,
                "pair_style runin/asperity: the restart file's {} model is '{}', the input asks for '{}'; "
@@ -135,13 +136,15 @@ void PairRuninAsperity::settings(int narg, char **arg)
     } else if (keyword == "friction") {
       set_sub_model(SubModelKind::friction, value);
     } else if (keyword == "transfer") {
-      const double fraction = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;
+      const double fraction =
+          runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "transfer fraction", value.c_str());
       if (!(fraction >= 0.0 && fraction <= 1.0))
         error->all(FLERR, "pair_style runin/asperity: transfer fraction must be in [0, 1], got '{}'", value);
       contact_settings.transfer_fraction = fraction;
     } else if (keyword == "restick") {
-      const double speed = utils::is_double(value) ? utils::numeric(FLERR, value.c_str(), false, lmp) : -1.0;
-      if (!(speed >= 0.0) || !std::isfinite(speed))
+      const double speed =
+          runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "restick speed", value.c_str());
+      if (!(speed >= 0.0))
         error->all(FLERR, "pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value);
       contact_settings.restick_speed = speed;
     } else {
@@ -187,7 +190,8 @@ void PairRuninAsperity::coeff(int narg, char **arg)
     } else if (narg == 10 || (narg > 10 && !utils::is_double(arg[10]))) {
       const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
       double v[8];
-      for (int k = 0; k < 8; k++) v[k] = runin_lammps::finite_number(lmp, "pair_coeff runin/asperity", names[k], arg[2 + k]);
+      for (int k = 0; k < 8; k++)
+        v[k] = runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", names[k], arg[2 + k]);
       p.effective_modulus = v[0];
       p.effective_shear_modulus = v[1];
       p.restitution = v[2];
@@ -215,8 +219,9 @@ void PairRuninAsperity::coeff(int narg, char **arg)
                      arg[0], arg[1], tribo::kTaborConstraintFactor, p.yield_strength, p.poisson_ratio);
     c = tribo::contact_coefficients(choice, p);
   }
-  runin_lammps::kernel_call(lmp, fmt::format("pair_coeff runin/asperity ({})", origin), true,
-                            [&] { tribo::ContactModel(choice, c, contact_settings); });    // validates them all
+  // validates every sub-model's coefficients
+  runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair_coeff runin/asperity ({})", origin), true,
+                            [&] { tribo::ContactModel(choice, c, contact_settings); });
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -251,7 +256,7 @@ tribo::ContactCoefficients PairRuninAsperity::read_keyword_coefficients(int narg
                  arg[iarg]);
     const auto kind = static_cast<SubModelKind>(kind_index);
     if (iarg + 1 >= narg) error->all(FLERR, "pair_coeff runin/asperity: {} needs a model name", arg[iarg]);
-    const int model = runin_lammps::kernel_call(lmp, "pair_coeff runin/asperity", true,
+    const int model = runin_lammps::kernel_call(lmp, FLERR, "pair_coeff runin/asperity", true,
                                                 [&] { return tribo::find_sub_model(kind, arg[iarg + 1]); });
     if (model != choice.of(kind))
       error->all(FLERR, "pair_coeff runin/asperity: {} model '{}' differs from pair_style's '{}'", arg[iarg],
@@ -267,7 +272,7 @@ tribo::ContactCoefficients PairRuninAsperity::read_keyword_coefficients(int narg
                  info.name, n, names, got);
     for (int k = 0; k < n; k++)
       c.values[kind_index].push_back(runin_lammps::finite_number(
-          lmp, fmt::format("pair_coeff runin/asperity: {} {}", arg[iarg], info.name), info.coefficient_names[k],
+          lmp, FLERR, fmt::format("pair_coeff runin/asperity: {} {}", arg[iarg], info.name), info.coefficient_names[k],
           arg[iarg + 2 + k]));
     given[kind_index] = true;
     iarg += 2 + n;
@@ -289,7 +294,8 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
       error->all(FLERR, "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y or nu)",
                  keyword);
     const double value =
-        runin_lammps::finite_number(lmp, "pair_coeff runin/asperity", keyword, iarg + 1 < narg ? arg[iarg + 1] : "");
+        runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", keyword,
+                                    iarg + 1 < narg ? arg[iarg + 1] : "");
     if (keyword == "tau_s")
       p.shear_strength = value;
     else if (keyword == "plough")
@@ -380,13 +386,13 @@ double PairRuninAsperity::init_one(int i, int j)
     // an unset I,J pair is mixed from I,I and J,J (Pair::init has checked those are set), sub-model by
     // sub-model: exact for E* and G*, the geometric mean of LAMMPS GRANULAR for interface values, each
     // body keeping its own wear coefficient and hardness
-    runin_lammps::kernel_call(lmp, fmt::format("pair runin/asperity: mixing types {} {}", i, j), true, [&] {
+    runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair runin/asperity: mixing types {} {}", i, j), true, [&] {
       coeff_of(i, j) = tribo::mix_coefficients(choice, coeff_of(i, i), coeff_of(j, j));
       coeff_of(j, i) = tribo::swap_bodies(choice, coeff_of(i, j));
     });
   }
   const int n = atom->ntypes + 1;
-  runin_lammps::kernel_call(lmp, fmt::format("pair runin/asperity: types {} {}", i, j), true, [&] {
+  runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair runin/asperity: types {} {}", i, j), true, [&] {
     models[i * n + j].emplace(choice, coeff_of(i, j), contact_settings);
     models[j * n + i].emplace(choice, coeff_of(j, i), contact_settings);
   });
@@ -437,7 +443,7 @@ void PairRuninAsperity::compute(int eflag, int vflag)
                            choice.of(tribo::SubModelKind::friction);
   const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
-  runin_lammps::kernel_call(lmp, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
+  runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
 
   if (track_wear) {
     if (force->newton_pair) runin_compat::reverse_comm(comm, this);
@@ -533,6 +539,8 @@ void PairRuninAsperity::eval(int eflag)
   double force_sum = 0.0;
   int invalid_contact = -1;      // first contact outside every contact law's validity (see stop_past_centre)
   double invalid_force = 0.0;    // its normal force
+  int worst_contact = -1;        // the contact furthest beyond its normal law's range (a counted WARNING)
+  double worst_range = 1.0, beyond_range = 0.0;    // its range ratio; contacts beyond (ratio > 1)
 
   const int inum = list->inum;
   const int *ilist = list->ilist, *numneigh = list->numneigh;
@@ -607,6 +615,10 @@ void PairRuninAsperity::eval(int eflag)
     const bool first_invalid = invalid & (invalid_contact < 0);
     invalid_contact = first_invalid ? c : invalid_contact;
     invalid_force = first_invalid ? fn : invalid_force;
+    const double range = contact.normal.range_ratio;
+    beyond_range += range > 1.0;
+    worst_contact = range > worst_range ? c : worst_contact;
+    worst_range = std::max(range, worst_range);
 
     const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
     force_sum += fpair[0] + fpair[1] + fpair[2];
@@ -666,6 +678,9 @@ void PairRuninAsperity::eval(int eflag)
   }
 
   if (SUMS) sums = local_sums;
+  if (worst_contact >= 0 && advance)
+    contact_range.note(update->ntimestep, beyond_range, worst_range, tag[touching[worst_contact].i],
+                       tag[touching[worst_contact].j]);
   if (invalid_contact >= 0) {
     const int i = touching[invalid_contact].i, j = touching[invalid_contact].j;
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
@@ -750,7 +765,7 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
   const tribo::ContactModel &model = *models[itype * (atom->ntypes + 1) + jtype];
   double energy = 0.0;
   tribo::ContactResult contact;
-  runin_lammps::kernel_call(lmp, "pair runin/asperity: single()", false, [&] {
+  runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity: single()", false, [&] {
     tribo::with_sub_models(choice, [&](auto normal, auto) {
       contact = model.stored_force<decltype(normal)::value>(g, history);
       energy = model.elastic_energy<decltype(normal)::value>(g, history);
@@ -821,11 +836,10 @@ void PairRuninAsperity::read_restart(FILE *fp)
       std::vector<double> record(size);
       if (comm->me == 0) utils::sfread(FLERR, record.data(), sizeof(double), size, fp, nullptr, error);
       MPI_Bcast(record.data(), size, MPI_DOUBLE, 0, world);
-      runin_lammps::kernel_call(lmp, fmt::format("pair runin/asperity: restart file: types {} {}", i, j), true, [&] {
+      const std::string where = fmt::format("pair runin/asperity: restart file: types {} {}", i, j);
+      runin_lammps::kernel_call(lmp, FLERR, where, true, [&] {
         const auto stored = tribo::deserialize(record.data(), size);
-        if (!(stored.first == choice))
-          error->all(FLERR, "pair runin/asperity: restart file: types {} {}: {}", i, j,
-                     tribo::describe_difference(stored.first, choice));
+        if (!(stored.first == choice)) error->all(FLERR, "{}: {}", where, tribo::describe_difference(stored.first, choice));
         coeff_of(i, j) = stored.second;
         coeff_of(j, i) = tribo::swap_bodies(choice, stored.second);
       });

@@ -18,8 +18,10 @@ namespace runin_lammps {
 // Runs `body` and returns its result; an exception from the RunIn kernels (a bad coefficient, a failed
 // calibration) becomes one ERROR "<where>: <what>" instead of std::terminate. `collective`: every rank runs
 // `body` on the same input (parsing, init), so error->all; otherwise (a rank's own contacts) error->one.
+// `file`, `line`: the caller's FLERR, so the ERROR points at the call site.
 template <class Body>
-decltype(auto) kernel_call(LAMMPS_NS::LAMMPS *lmp, const std::string &where, bool collective, Body &&body)
+decltype(auto) kernel_call(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &where,
+                           bool collective, Body &&body)
 {
   try {
     return std::forward<Body>(body)();
@@ -27,22 +29,22 @@ decltype(auto) kernel_call(LAMMPS_NS::LAMMPS *lmp, const std::string &where, boo
     throw;    // an ERROR already reported by the body (LAMMPS built with exceptions): pass it on, once
   } catch (const std::exception &e) {
     const std::string message = where + ": " + e.what();
-    if (collective) lmp->error->all(FLERR, message);
-    lmp->error->one(FLERR, message);
+    if (collective) lmp->error->all(file, line, message);
+    lmp->error->one(file, line, message);
   }
 }
 
 // utils::numeric for a named argument that must be a finite number: "1e999" (inf), "nan" or a word give one
-// ERROR "<where>: <name> must be a finite number, got '<text>'".
-inline double finite_number(LAMMPS_NS::LAMMPS *lmp, const std::string &where, const std::string &name,
-                            const char *text)
+// ERROR "<where>: <name> must be a finite number, got '<text>'" at the caller's FLERR.
+inline double finite_number(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &where,
+                            const std::string &name, const char *text)
 {
   // strtod, not utils::numeric: newer LAMMPS stops on an overflow itself, with a message naming no argument
   if (text && LAMMPS_NS::utils::is_double(text)) {
     const double value = std::strtod(text, nullptr);
     if (std::isfinite(value)) return value;
   }
-  lmp->error->all(FLERR, where + ": " + name + " must be a finite number, got '" + (text ? text : "") + "'");
+  lmp->error->all(file, line, where + ": " + name + " must be a finite number, got '" + (text ? text : "") + "'");
 }
 
 }    // namespace runin_lammps

@@ -6,6 +6,7 @@
 #include "tokenizer.h"
 #include "utils.h"
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -16,7 +17,7 @@ namespace tribo = runin::tribo;
 
 namespace {
 
-constexpr int kPairValues = 5;    // e mu_s mu_k d_c k
+constexpr std::array<const char *, 5> kPairValues{"e", "mu_s", "mu_k", "d_c", "k"};
 
 // Parses the whole file; returns an empty string or the problem, naming file and line.
 std::string parse(FILE *fp, const std::string &file, const std::string &name_a, const std::string &name_b,
@@ -31,29 +32,37 @@ std::string parse(FILE *fp, const std::string &file, const std::string &name_a, 
       lineno++;
       ValueTokenizer words(utils::trim_comment(line));
       if (!words.has_next()) continue;
+      // 1e999 reads as inf: refused here, by name and line, before it surfaces renamed as E* or mu
+      auto number = [&words](const std::string &what) {
+        const double value = words.next_double();
+        if (!std::isfinite(value))
+          throw TokenizerException(fmt::format("{} must be a finite number, got {}", what, value), "");
+        return value;
+      };
       const std::string kind = words.next_string();
       if (kind == "material") {
         if (words.count() != 6 && words.count() != 7)
           throw TokenizerException("material needs NAME E nu rho H [S_y]", "");
         const std::string name = words.next_string();
         tribo::Material m;
-        m.youngs_modulus = words.next_double();
-        m.poisson_ratio = words.next_double();
-        words.next_double();    // density: the timestep guard takes it from the atoms' rmass
-        m.hardness = words.next_double();
+        m.youngs_modulus = number("material " + name + ": E");
+        m.poisson_ratio = number("material " + name + ": nu");
+        number("material " + name + ": rho");    // density: the timestep guard takes it from the atoms' rmass
+        m.hardness = number("material " + name + ": H");
         if (words.has_next()) {
-          m.yield_strength = words.next_double();
-          if (!(m.yield_strength > 0.0) || !std::isfinite(m.yield_strength))
+          m.yield_strength = number("material " + name + ": S_y");
+          if (!(m.yield_strength > 0.0))
             throw TokenizerException(fmt::format("material {}: S_y must be > 0 and finite", name), "");
         }
         m.validate(fmt::format("{} line {}: material {}", file, lineno, name));
         materials[name] = m;
       } else if (kind == "pair") {
-        if (words.count() != 3 + kPairValues) throw TokenizerException("pair needs A B e mu_s mu_k d_c k", "");
+        if (words.count() != 3 + kPairValues.size()) throw TokenizerException("pair needs A B e mu_s mu_k d_c k", "");
         const std::string a = words.next_string(), b = words.next_string();
         if ((a == name_a && b == name_b) || (a == name_b && b == name_a)) {
           std::vector<double> values;
-          for (int k = 0; k < kPairValues; k++) values.push_back(words.next_double());
+          for (const char *what : kPairValues)
+            values.push_back(number(fmt::format("pair {} {}: {}", a, b, what)));
           pair_values = values;
         }
       } else {

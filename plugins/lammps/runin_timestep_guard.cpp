@@ -43,6 +43,13 @@ void FixRuninFiniteCheck::pre_reverse(int, int)
   if (!pair_checks_itself) check();
 }
 
+// the pair has no end-of-run hook of its own
+void FixRuninFiniteCheck::post_run()
+{
+  if (auto *pair = dynamic_cast<runin_lammps::FiniteForcePair *>(force->pair))
+    pair->contact_range.report(lmp, fmt::format("pair {}", force->pair_style));
+}
+
 namespace {
 
 constexpr int kShown = 4;
@@ -99,6 +106,46 @@ void FixRuninFiniteCheck::check()
 
 namespace runin_lammps {
 
+namespace {
+// The largest |v| dt / radius of the group (once per run): above 1, ERROR naming the atom.
+void guard_displacement(LAMMPS *lmp, const char *style, int groupbit)
+{
+  Atom *atom = lmp->atom;
+  const double dt = lmp->update->dt;
+  struct {
+    double ratio;
+    int rank;
+  } mine{0.0, lmp->comm->me}, worst{};
+  int culprit = -1;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || !(atom->radius[i] > 0.0)) continue;
+    const double *v = atom->v[i];
+    const double ratio = std::hypot(v[0], v[1], v[2]) * dt / atom->radius[i];
+    if (!(ratio <= mine.ratio)) {    // NaN too: it counts as infinitely fast
+      mine.ratio = std::isnan(ratio) ? std::numeric_limits<double>::infinity() : ratio;
+      culprit = i;
+    }
+  }
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, lmp->world);
+  if (!(worst.ratio > 1.0)) return;
+  double info[3] = {0.0, 0.0, 0.0};    // atom ID, speed, radius, from the rank that holds it
+  if (lmp->comm->me == worst.rank) {
+    const double *v = atom->v[culprit];
+    info[0] = static_cast<double>(atom->tag[culprit]);
+    info[1] = std::hypot(v[0], v[1], v[2]);
+    info[2] = atom->radius[culprit];
+  }
+  MPI_Bcast(info, 3, MPI_DOUBLE, worst.rank, lmp->world);
+  if (!std::isfinite(info[1]))
+    lmp->error->all(FLERR, fmt::format("{}: at step {} atom {:.0f} has a velocity that is not finite ({} m/s)", style,
+                                       lmp->update->ntimestep, info[0], info[1]));
+  lmp->error->all(FLERR, fmt::format("{}: at step {} atom {:.0f} moves {:.4g} m per step (speed {:.4g} m/s, dt = {} s), "
+                                     "more than its radius {:.4g} m: contacts are not resolved in time (lower the "
+                                     "velocity or the timestep)", style, lmp->update->ntimestep, info[0],
+                                     info[1] * dt, info[1], dt, info[2]));
+}
+}    // namespace
+
 void stop_on_non_finite_force(LAMMPS *lmp, const std::string &style)
 {
   const std::string message = non_finite_message(lmp, style, non_finite_atoms(lmp->atom));
@@ -108,11 +155,13 @@ void stop_on_non_finite_force(LAMMPS *lmp, const std::string &style)
     lmp->error->one(FLERR, message);
 }
 
-double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairModuli(int, int)> &moduli_of)
+double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairModuli(int, int)> &moduli_of,
+                      int groupbit)
 {
   if (!(lmp->update->dt > 0.0) || !std::isfinite(lmp->update->dt))
     lmp->error->all(FLERR, fmt::format("{}: timestep {} s must be positive and finite", style, lmp->update->dt));
   Atom *atom = lmp->atom;
+  guard_displacement(lmp, style, groupbit);
   const int ntypes = atom->ntypes;
   const double inf = std::numeric_limits<double>::infinity();
   // per type: smallest radius and smallest density (both shorten the Rayleigh time)
@@ -136,7 +185,7 @@ double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairMo
       // every rank sees the same moduli and reduced radii: a failure is collective
       const std::string where = fmt::format("{}: timestep guard for types {} {} (E* = {:.4g}, G* = {:.4g})", style, i, j,
                                             moduli.effective_modulus, moduli.effective_shear_modulus);
-      runin_lammps::kernel_call(lmp, where, true, [&] {
+      runin_lammps::kernel_call(lmp, FLERR, where, true, [&] {
         const tribo::Material equivalent =
             tribo::equivalent_material(moduli.effective_modulus, moduli.effective_shear_modulus, 0.3);
         for (int t : {i, j}) {

@@ -14,6 +14,7 @@ FixStyle(RUNIN/FINITE_CHECK,FixRuninFiniteCheck);
 #define LMP_RUNIN_TIMESTEP_GUARD_H
 
 #include "fix.h"
+#include "runin_contact_range.h"
 
 #include <functional>
 #include <string>
@@ -31,6 +32,7 @@ class FixRuninFiniteCheck : public Fix {
   void init() override;
   void setup_pre_reverse(int, int) override;
   void pre_reverse(int, int) override;
+  void post_run() override;
   std::string style_label = "pair runin/asperity";
 
  private:
@@ -50,15 +52,19 @@ struct PairModuli {
 // Compares update->dt with the smallest Rayleigh time of the asperities in contact-capable type pairs
 // (radius and density per atom from radius/rmass, G and nu from the pair's E* and G*): WARNING above
 // TimeStepPolicy::warn_fraction t_R, ERROR above fail_factor t_R. Installs the finite-force check.
-// Returns the smallest Rayleigh time (0 if there are no atoms).
+// Returns the smallest Rayleigh time (0 if there are no atoms). Also an ERROR (naming the atom) when an atom of
+// `groupbit` would move more than its radius in one step at its current velocity (e.g. 'velocity ... 1e308'):
+// contacts are not resolved in time, and it would fly off before any contact check sees it.
 double guard_timestep(LAMMPS_NS::LAMMPS *lmp, const char *style,
-                      const std::function<PairModuli(int, int)> &moduli_of);
+                      const std::function<PairModuli(int, int)> &moduli_of, int groupbit = 1);
 
 // Implemented by a pair style whose force loop tests every force it adds (e.g. isfinite of the sum of its
-// pair forces) and calls stop_on_non_finite_force when the test fails.
+// pair forces) and calls stop_on_non_finite_force when the test fails. Its loop also counts the contacts beyond
+// their law's range in contact_range, which FixRuninFiniteCheck reports at the end of each run.
 class FiniteForcePair {
  public:
   virtual ~FiniteForcePair() noexcept(std::is_nothrow_destructible_v<LAMMPS_NS::Pointers>) {}    // see RuninContactSource
+  ContactRangeMonitor contact_range;
 };
 
 // For a force loop that found a non-finite force on this rank: stops the run with the guard's ERROR

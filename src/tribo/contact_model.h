@@ -77,6 +77,9 @@ struct NormalContact {
   double residual_increment = 0.0;
   // Full-stick critical load L_c of the equivalent sphere (Brizmer et al.; elastic-plastic models) [N]
   double stick_critical_load = 0.0;
+  // Interference over the largest the law is checked to (elastic/plastic, on loading: omega / (1000
+  // omega_c)); above 1 the contact is beyond the law's range and the hosts count it (a WARNING)
+  double range_ratio = 0.0;
 };
 
 // ---------------------------------------------------------------------------------------------------
@@ -175,6 +178,7 @@ class ElasticPlasticNormalModel {
       // the Jackson-Green curve
       const ContactPoint p = unit_.evaluate(omega);
       const double x = omega * inv_omega_c_;
+      out.range_ratio = x * (1.0 / JacksonGreen::kCheckedRange);
       if (x > 1.0) {
         const double log_x = std::log(x);
         residual = ElasticPlasticUnloading::residual_ratio_of_log(log_x) * omega;

@@ -72,6 +72,9 @@ class JacksonGreen {
                         HertzToFitTransition transition = HertzToFitTransition::kSmooth);
 
   static constexpr double kFitStart = 1.9;    // omega* from which JG use their fit
+  // omega* up to which the curve is tested (monotone, positive stiffness); the JG and EKK fits reach 110,
+  // beyond that they are extrapolated. Hosts warn above it (NormalContact::range_ratio).
+  static constexpr double kCheckedRange = 1000.0;
 
   const ElasticPlasticCoefficients &coefficients() const { return c_; }
   HertzToFitTransition transition() const { return transition_; }

@@ -1,6 +1,7 @@
 #include "tribo/stability.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace runin::tribo {
@@ -11,6 +12,22 @@ constexpr double kPi = 3.14159265358979323846;
 void require_positive(double value, const char *what)
 {
   if (!(value > 0.0) || !std::isfinite(value)) throw InvalidCoefficient(std::string(what) + " must be > 0");
+}
+
+// E = 2 (1 - nu^2) E* of the like pair; an E* near the largest double overflows it (E* = 1e308 did, and was
+// then reported as a shear modulus that is not > 0)
+Material like_pair_material(double e_eff, double nu)
+{
+  Material m;
+  m.poisson_ratio = nu;
+  m.youngs_modulus = 2.0 * (1.0 - nu * nu) * e_eff;
+  if (!std::isfinite(m.youngs_modulus)) {
+    char message[160];
+    std::snprintf(message, sizeof message,
+                  "E*: effective modulus %.4g is too large (its Young's modulus 2 (1 - nu^2) E* overflows)", e_eff);
+    throw InvalidCoefficient(message);
+  }
+  return m;
 }
 }    // namespace
 
@@ -79,10 +96,7 @@ Material equivalent_material(double e_eff, double g_eff)
   // nu in (-1, 0.5) maps to r in (1/6, 1/3)
   if (!(r > 1.0 / 6.0 && r < 1.0 / 3.0))
     throw InvalidCoefficient("G*/E*: must be in (1/6, 1/3) for an isotropic material, got " + std::to_string(r));
-  Material m;
-  m.poisson_ratio = (1.0 - 4.0 * r) / (1.0 - 2.0 * r);
-  m.youngs_modulus = 2.0 * (1.0 - m.poisson_ratio * m.poisson_ratio) * e_eff;
-  return m;
+  return like_pair_material(e_eff, (1.0 - 4.0 * r) / (1.0 - 2.0 * r));
 }
 
 Material equivalent_material(double e_eff, double g_eff, double fallback_nu)
@@ -91,10 +105,7 @@ Material equivalent_material(double e_eff, double g_eff, double fallback_nu)
   const double r = g_eff / e_eff;
   if (r > 1.0 / 6.0 && r < 1.0 / 3.0) return equivalent_material(e_eff, g_eff);
   if (!(fallback_nu > -1.0 && fallback_nu < 0.5)) throw InvalidCoefficient("nu: Poisson ratio must be in (-1, 0.5)");
-  Material m;
-  m.poisson_ratio = fallback_nu;
-  m.youngs_modulus = 2.0 * (1.0 - fallback_nu * fallback_nu) * e_eff;
-  return m;
+  return like_pair_material(e_eff, fallback_nu);
 }
 
 TimeStepVerdict judge_time_step(double dt, double rayleigh)

@@ -125,6 +125,12 @@ def run_case(args, tag, material, radius, sigma, spacing, separations, runs):
         if beyond:
             print(f"note: {tag} {normal} {deck}: summits pressed past their centre (reported by the fix)")
             warnings = [w for w in warnings if w not in beyond]
+        # likewise the Gaussian tail's deepest summits beyond the law's checked 1000 omega_c (omega* reaches ~1900
+        # at psi = 17.7): the sums compare the law with itself there, the fix counts them
+        extrapolated = [w for w in warnings if "beyond the range of the elastic/plastic law" in w]
+        if extrapolated:
+            print(f"note: {tag} {normal} {deck}: summits beyond 1000 omega_c (reported by the fix)")
+            warnings = [w for w in warnings if w not in extrapolated]
         if warnings:    # e.g. the Tabor fallback for S_y, the timestep guard
             fail(f"{tag} {normal} {deck}: unexpected warning: {warnings[0]}")
         sums = expected(args, "sum", material["Estar"], radius, material["Sy"], material["nu"], data + ".heights",

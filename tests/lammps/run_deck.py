@@ -389,14 +389,14 @@ def expect_error(args):
 
 
 def expect_warning(args):
-    """The deck runs to the end and prints exactly one WARNING matching the pattern per run."""
+    """The deck runs to the end and prints exactly --count WARNING lines matching the pattern (default one)."""
     result = run_expecting(args)
     output = result.stdout + result.stderr
     if result.returncode != 0:
         fail(f"lmp_runin exited with {result.returncode}\n{output}")
     matching = [line for line in output.splitlines() if line.startswith("WARNING") and re.search(args.pattern, line)]
-    if len(matching) != 1:
-        fail(f"expected one WARNING matching {args.pattern!r}, got {matching}\n{output}")
+    if len(matching) != args.count:
+        fail(f"expected {args.count} WARNING(s) matching {args.pattern!r}, got {matching}\n{output}")
     if "Loop time" not in output:
         fail("the run did not finish")
     print("ok: " + matching[0])
@@ -690,6 +690,8 @@ def main():
         p.add_argument("--var", nargs=2, action="append", metavar=("NAME", "VALUE"), help="-var NAME VALUE")
         p.add_argument("--np", type=int, default=1)
         p.add_argument("--mpiexec", default="mpiexec")
+        if kind == "expect-warning":
+            p.add_argument("--count", type=int, default=1, help="matching WARNING lines expected (e.g. one per run)")
     p = sub.add_parser("materials")
     for name in ("--lmp", "--deck", "--workdir"):
         p.add_argument(name, required=True)

@@ -5,6 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
 
 using namespace runin::tribo;
 
@@ -197,6 +201,48 @@ TEST(RestitutionCalibration, HertzImpactReboundsWithTheInputRestitution)
   EXPECT_EQ(RestitutionDamping::hertz_restitution(0.0), 1.0);
   const double elastic = measured_restitution(RestitutionDamping(1.0), e_eff, r_eff, mass, 1.0);
   EXPECT_NEAR(elastic, 1.0, 1e-6);
+}
+
+// The style pages quote the calibrated damping factors, what Tsuji's linear-spring mapping would give instead,
+// and the range of e: they must stay what the code does (the wall page once gave Tsuji's form).
+TEST(RestitutionCalibration, DocPagesQuoteTheCodesFactorsAndRange)
+{
+  const auto page = [](const char *name) {
+    std::ifstream in(std::string(RUNIN_SOURCE_DIR) + "/doc/" + name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  // |quoted - value| within half a unit of the quoted number's last digit
+  const auto agrees = [](const std::string &quoted, double value) {
+    const auto dot = quoted.find('.');
+    const int decimals = dot == std::string::npos ? 0 : static_cast<int>(quoted.size() - dot - 1);
+    return std::fabs(std::stod(quoted) - value) <= 0.5 * std::pow(10.0, -decimals);
+  };
+  const std::regex zeta(R"(zeta` = ([0-9.]+), ([0-9.]+), ([0-9.]+) for\s+\*e\* = ([0-9.]+), ([0-9.]+), ([0-9.]+))");
+  for (const char *name : {"pair_runin_asperity.rst", "fix_runin_wall.rst"}) {
+    const std::string text = page(name);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(text, m, zeta)) << name << ": no calibrated factors quoted";
+    for (int k = 1; k <= 3; ++k) {
+      const double e = std::stod(m[k + 3]);
+      const double factor = RestitutionDamping(e).force(1.0, 1.0, -1.0);    // F = -factor sqrt(k m) v_n
+      EXPECT_TRUE(agrees(m[k], factor)) << name << ": e = " << e << " quoted " << m[k] << ", code " << factor;
+    }
+    EXPECT_NE(text.find("1e-6 <= e <= 1"), std::string::npos) << name << ": range of e";
+    EXPECT_EQ(kMinimumRestitution, 1e-6);
+  }
+  const std::string pair = page("pair_runin_asperity.rst");
+  std::smatch m;
+  const std::regex tsuji(R"(Tsuji et al. \(1992\),[\s\S]*?gives \*e\* = ([0-9.]+), ([0-9.]+), ([0-9.]+) instead)");
+  ASSERT_TRUE(std::regex_search(pair, m, tsuji)) << "pair page: Tsuji's rebounds not quoted";
+  int k = 1;
+  for (double e : {0.1, 0.5, 0.9}) {
+    const double log_e = std::log(e);
+    const double factor = -2.0 * std::sqrt(5.0 / 6.0) * log_e / std::sqrt(log_e * log_e + M_PI * M_PI);
+    EXPECT_TRUE(agrees(m[k], RestitutionDamping::hertz_restitution(factor))) << "Tsuji e = " << e;
+    ++k;
+  }
 }
 
 // --- Fast paths of the force loops: they must agree with the validated kernels ---
