@@ -34,7 +34,7 @@ decltype(auto) kernel_call(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, c
   }
 }
 
-// utils::numeric for a named argument that must be a finite number: "1e999" (inf), "nan" or a word give one
+// A named argument that must be a finite number: "1e999" (inf), "nan" or a word give one
 // ERROR "<where>: <name> must be a finite number, got '<text>'" at the caller's FLERR.
 inline double finite_number(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &where,
                             const std::string &name, const char *text)
