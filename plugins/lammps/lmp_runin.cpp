@@ -2,6 +2,7 @@
 // Usage is that of lmp: mpirun -np 2 lmp_runin -in in.deck
 #include "runin_styles.h"
 
+#include "error.h"
 #include "exceptions.h"
 #include "input.h"
 #include "lammps.h"
@@ -12,14 +13,32 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 using namespace LAMMPS_NS;
 
 namespace {
+// LAMMPS's plugin command, except that 'plugin load FILE' of a file that cannot be loaded is an ERROR:
+// LAMMPS only logs "Open of file ... failed" and goes on, and the deck then stops later at the first style
+// the plugin should have brought, far from the cause.
+class CheckedPlugin : public Plugin {
+ public:
+  using Plugin::Plugin;
+  void command(int narg, char **arg) override
+  {
+    if (narg >= 2 && strcmp(arg[0], "load") == 0) {
+      void *handle = dlopen(arg[1], RTLD_NOW | RTLD_GLOBAL);
+      if (!handle) error->all(FLERR, std::string("plugin load: cannot load '") + arg[1] + "': " + dlerror());
+      dlclose(handle);
+    }
+    Plugin::command(narg, arg);
+  }
+};
+
 Command *plugin_command(LAMMPS *lmp)
 {
-  return new Plugin(lmp);
+  return new CheckedPlugin(lmp);
 }
 }    // namespace
 

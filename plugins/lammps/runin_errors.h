@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -34,16 +35,23 @@ decltype(auto) kernel_call(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, c
   }
 }
 
-// A named argument that must be a finite number: "1e999" (inf), "nan" or a word give one
-// ERROR "<where>: <name> must be a finite number, got '<text>'" at the caller's FLERR.
+// `text` as a finite number, or nothing ("1e999" reads as inf, "nan", a word). strtod, not
+// utils::numeric or ValueTokenizer::next_double: newer LAMMPS stops on an overflow itself, with a
+// message naming no argument, so every host would word the same mistake differently.
+inline std::optional<double> parse_finite(const char *text)
+{
+  if (!text || !LAMMPS_NS::utils::is_double(text)) return std::nullopt;
+  const double value = std::strtod(text, nullptr);
+  if (!std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+// A named argument that must be a finite number: one ERROR
+// "<where>: <name> must be a finite number, got '<text>'" at the caller's FLERR.
 inline double finite_number(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &where,
                             const std::string &name, const char *text)
 {
-  // strtod, not utils::numeric: newer LAMMPS stops on an overflow itself, with a message naming no argument
-  if (text && LAMMPS_NS::utils::is_double(text)) {
-    const double value = std::strtod(text, nullptr);
-    if (std::isfinite(value)) return value;
-  }
+  if (const auto value = parse_finite(text)) return *value;
   lmp->error->all(file, line, where + ": " + name + " must be a finite number, got '" + (text ? text : "") + "'");
 }
 

@@ -1,5 +1,7 @@
 #include "runin_material_file.h"
 
+#include "runin_errors.h"
+
 #include "comm.h"
 #include "error.h"
 #include "lammps.h"
@@ -32,12 +34,11 @@ std::string parse(FILE *fp, const std::string &file, const std::string &name_a, 
       lineno++;
       ValueTokenizer words(utils::trim_comment(line));
       if (!words.has_next()) continue;
-      // 1e999 reads as inf: refused here, by name and line, before it surfaces renamed as E* or mu
+      // 1e999 (inf) is refused here, by name and line, before it surfaces renamed as E* or mu
       auto number = [&words](const std::string &what) {
-        const double value = words.next_double();
-        if (!std::isfinite(value))
-          throw TokenizerException(fmt::format("{} must be a finite number, got {}", what, value), "");
-        return value;
+        const std::string text = words.next_string();
+        if (const auto value = runin_lammps::parse_finite(text.c_str())) return *value;
+        throw TokenizerException(fmt::format("{} must be a finite number, got '{}'", what, text), "");
       };
       const std::string kind = words.next_string();
       if (kind == "material") {
