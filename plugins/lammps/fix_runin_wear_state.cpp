@@ -50,8 +50,7 @@ FixRuninWearState::FixRuninWearState(LAMMPS *lmp, int narg, char **arg) :
 
 FixRuninWearState *FixRuninWearState::find(Modify *modify)
 {
-  const int ifix = modify->find_fix(default_id);
-  return ifix >= 0 ? dynamic_cast<FixRuninWearState *>(modify->fix[ifix]) : nullptr;
+  return dynamic_cast<FixRuninWearState *>(runin_compat::fix_by_id(modify, default_id));
 }
 
 FixRuninWearState *FixRuninWearState::find_or_create(Modify *modify)

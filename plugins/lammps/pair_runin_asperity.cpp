@@ -67,7 +67,7 @@ PairRuninAsperity::~PairRuninAsperity()
   if (copymode) return;
   if (fix_history)
     modify->delete_fix(kHistoryId);
-  else if (modify->find_fix(kDummyId) >= 0)
+  else if (runin_compat::fix_by_id(modify, kDummyId))
     modify->delete_fix(kDummyId);
   if (allocated) {
     memory->destroy(setflag);

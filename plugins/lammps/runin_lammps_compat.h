@@ -5,9 +5,13 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix.h"
+#include "modify.h"
 #include "utils.h"
 #include "neighbor.h"
 #include "pair.h"
+
+#include <string>
 
 #ifndef RUNIN_NEIGHBOR_ADD_REQUEST
 #include "neigh_request.h"
@@ -65,6 +69,18 @@ inline bool logical(LAMMPS_NS::LAMMPS *lmp, const std::string &value, const char
 inline bool sphere_atoms(const LAMMPS_NS::Atom *atom)
 {
   return atom->radius_flag && atom->rmass_flag && atom->omega_flag && atom->torque_flag;
+}
+
+// The fix with this ID, or nullptr: Modify::get_fix_by_id (LAMMPS 2022+) where the headers have it, since
+// Modify::find_fix is deprecated there.
+inline LAMMPS_NS::Fix *fix_by_id(LAMMPS_NS::Modify *modify, const std::string &id)
+{
+#ifdef RUNIN_MODIFY_GET_FIX_BY_ID
+  return modify->get_fix_by_id(id);
+#else
+  const int index = modify->find_fix(id);
+  return index >= 0 ? modify->fix[index] : nullptr;
+#endif
 }
 
 }    // namespace runin_compat

@@ -1,5 +1,6 @@
 #include "runin_timestep_guard.h"
 #include "runin_errors.h"
+#include "runin_lammps_compat.h"
 
 #include "tribo/stability.h"
 
@@ -198,7 +199,7 @@ double guard_timestep(LAMMPS *lmp, const char *style, const std::function<PairMo
       });
     }
 
-  if (lmp->modify->find_fix(LAMMPS_NS::FixRuninFiniteCheck::default_id) < 0) {
+  if (!runin_compat::fix_by_id(lmp->modify, LAMMPS_NS::FixRuninFiniteCheck::default_id)) {
     auto *fix = dynamic_cast<LAMMPS_NS::FixRuninFiniteCheck *>(lmp->modify->add_fix(
         fmt::format("{} all RUNIN/FINITE_CHECK", LAMMPS_NS::FixRuninFiniteCheck::default_id)));
     if (fix) fix->style_label = style;
