@@ -106,7 +106,7 @@ int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int
     buf[m++] = values[list[k]][WEAR_DEPTH];
     buf[m++] = values[list[k]][FLAT_RADIUS];
   }
-  return m;
+  return kGeometryColumns;    // LIGGGHTS's Comm::forward_comm_fix takes the count per atom
 }
 
 void FixRuninWearStateLiggghts::unpack_comm(int n, int first, double *buf)
