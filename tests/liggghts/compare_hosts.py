@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Cross-host tests of the LIGGGHTS host (ctest labels liggghts, lammps; standard library only).
 
-  compare_hosts.py scene   --liggghts LG --lmp LMP --mpiexec MPIEXEC --np N --scene NAME --workdir DIR
+  compare_hosts.py scene   --liggghts LG --lmp LMP --mpiexec MPIEXEC --np N --scene NAME --workdir DIR [--set V=X]
   compare_hosts.py bad     --liggghts LG --workdir DIR --pattern REGEX -- <deck lines>
 
 scene: runs the scene's LAMMPS deck (inputs/) with lmp_runin and its LIGGGHTS deck (tests/liggghts/decks/)
@@ -75,6 +75,10 @@ def strip(name):
 
 def scene(args):
     lammps_deck, liggghts_deck, variables = SCENES[args.scene]
+    variables = dict(variables)
+    for item in args.set or []:
+        name, _, value = item.partition("=")
+        variables[name] = value
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
     os.symlink(os.path.join(SOURCE_DIR, "potentials"), os.path.join(args.workdir, "potentials"))
@@ -150,6 +154,7 @@ def main():
     p.add_argument("--np", type=int, default=1)
     p.add_argument("--scene", required=True, choices=sorted(SCENES))
     p.add_argument("--workdir", required=True)
+    p.add_argument("--set", action="append", metavar="NAME=VALUE", help="override a deck variable of the scene")
     p = sub.add_parser("bad")
     p.add_argument("--liggghts", required=True)
     p.add_argument("--workdir", required=True)
