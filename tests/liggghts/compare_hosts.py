@@ -161,6 +161,9 @@ def main():
     p.add_argument("--pattern", required=True)
     p.add_argument("lines", nargs="+")
     args = parser.parse_args()
+    args.liggghts = os.path.abspath(args.liggghts)
+    if getattr(args, "lmp", None):
+        args.lmp = os.path.abspath(args.lmp)
     {"scene": scene, "bad": bad}[args.mode](args)
 
 
