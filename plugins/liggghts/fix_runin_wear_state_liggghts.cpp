@@ -1,0 +1,124 @@
+#include "fix_runin_wear_state_liggghts.h"
+
+#include "runin_liggghts_errors.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "memory.h"
+#include "modify.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+constexpr int kGeometryColumns = 2;    // WEAR_DEPTH, FLAT_RADIUS: all the force needs from a ghost
+}
+
+FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), values(nullptr)
+{
+  if (narg > 3)
+    runin_liggghts::all(lmp, FLERR, "fix RUNIN/WEAR_STATE: takes no keywords in LIGGGHTS (a start from a given "
+                                    "worn state is LAMMPS-only)");
+  create_attribute = 1;
+  peratom_flag = 1;
+  size_peratom_cols = NCOLUMNS;
+  peratom_freq = 1;
+  comm_forward = kGeometryColumns;
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);    // grow
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+FixRuninWearStateLiggghts::~FixRuninWearStateLiggghts()
+{
+  atom->delete_callback(id, 0);
+  memory->destroy(values);
+}
+
+FixRuninWearStateLiggghts *FixRuninWearStateLiggghts::find(Modify *modify)
+{
+  const int ifix = modify->find_fix(default_id);
+  return ifix >= 0 ? dynamic_cast<FixRuninWearStateLiggghts *>(modify->fix[ifix]) : nullptr;
+}
+
+FixRuninWearStateLiggghts *FixRuninWearStateLiggghts::find_or_create(Modify *modify)
+{
+  if (FixRuninWearStateLiggghts *existing = find(modify)) return existing;
+  char id[] = "RUNIN_WEAR_STATE", group[] = "all", style[] = "RUNIN/WEAR_STATE";
+  char *args[] = {id, group, style};
+  modify->add_fix(3, args);
+  return find(modify);
+}
+
+void FixRuninWearStateLiggghts::refresh_geometry_all()
+{
+  for (int i = 0; i < atom->nlocal; i++) refresh_geometry(i, atom->radius ? atom->radius[i] : 0.0);
+}
+
+void FixRuninWearStateLiggghts::forward_geometry()
+{
+  comm->forward_comm_fix(this);
+}
+
+double FixRuninWearStateLiggghts::local_sum(Column column, int groupbit) const
+{
+  double sum = 0.0;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) sum += values[i][column];
+  return sum;
+}
+
+void FixRuninWearStateLiggghts::grow_arrays(int nmax)
+{
+  memory->grow(values, nmax, NCOLUMNS, "runin/wear_state:values");
+  array_atom = values;
+}
+
+void FixRuninWearStateLiggghts::copy_arrays(int i, int j, int)
+{
+  for (int c = 0; c < NCOLUMNS; c++) values[j][c] = values[i][c];
+}
+
+void FixRuninWearStateLiggghts::set_arrays(int i)
+{
+  for (int c = 0; c < NCOLUMNS; c++) values[i][c] = 0.0;
+}
+
+int FixRuninWearStateLiggghts::pack_exchange(int i, double *buf)
+{
+  for (int c = 0; c < NCOLUMNS; c++) buf[c] = values[i][c];
+  return NCOLUMNS;
+}
+
+int FixRuninWearStateLiggghts::unpack_exchange(int nlocal, double *buf)
+{
+  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = buf[c];
+  return NCOLUMNS;
+}
+
+int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int *)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    buf[m++] = values[list[k]][WEAR_DEPTH];
+    buf[m++] = values[list[k]][FLAT_RADIUS];
+  }
+  return kGeometryColumns;    // LIGGGHTS's Comm::forward_comm_fix takes the count per atom
+}
+
+void FixRuninWearStateLiggghts::unpack_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    values[i][WEAR_DEPTH] = buf[m++];
+    values[i][FLAT_RADIUS] = buf[m++];
+  }
+}
+
+double FixRuninWearStateLiggghts::memory_usage()
+{
+  return static_cast<double>(atom->nmax) * NCOLUMNS * sizeof(double);
+}

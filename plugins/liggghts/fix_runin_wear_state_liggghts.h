@@ -1,0 +1,63 @@
+// Per-atom wear state of RunIn asperities in LIGGGHTS (internal fix RUNIN_WEAR_STATE, created by
+// pair runin/asperity): the columns and the geometry update of plugins/lammps/fix_runin_wear_state.h
+// (FixRuninWearState::refresh_geometry and flattened_volume are the same src/tribo calls). The state follows
+// atoms across ranks and its geometry columns go to ghosts; it is not written to restart files in LIGGGHTS.
+#ifndef LMP_FIX_RUNIN_WEAR_STATE_LIGGGHTS_H
+#define LMP_FIX_RUNIN_WEAR_STATE_LIGGGHTS_H
+
+#include "fix.h"
+#include "tribo/asperity_geometry.h"
+
+namespace LAMMPS_NS {
+
+class FixRuninWearStateLiggghts : public Fix {
+ public:
+  enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, VOLUME_FLATTENED, NCOLUMNS };
+  static constexpr const char *default_id = "RUNIN_WEAR_STATE";
+  static constexpr const char *style_name = "RUNIN/WEAR_STATE";
+  static FixRuninWearStateLiggghts *find(class Modify *modify);
+  static FixRuninWearStateLiggghts *find_or_create(class Modify *modify);
+
+  FixRuninWearStateLiggghts(class LAMMPS *, int, char **);
+  ~FixRuninWearStateLiggghts();
+  int setmask() override { return 0; }
+
+  double **state() { return values; }
+  double local_sum(Column column, int groupbit) const;
+  void refresh_geometry(int i, double radius)
+  {
+    if (!(radius > 0.0)) {
+      values[i][WEAR_DEPTH] = values[i][FLAT_RADIUS] = 0.0;
+      return;
+    }
+    const runin::tribo::WornAsperity worn = runin::tribo::worn_asperity(
+        radius, values[i][VOLUME_LOST] + values[i][VOLUME_FLATTENED], values[i][VOLUME_GAINED],
+        values[i][WEAR_DEPTH]);
+    values[i][WEAR_DEPTH] = worn.summit_drop;
+    values[i][FLAT_RADIUS] = worn.flat_radius;
+  }
+  static double flattened_volume(double radius, double drop, double depth)
+  {
+    constexpr double kPiThird = 3.14159265358979323846 / 3.0;
+    const double h0 = drop > 0.0 ? drop : 0.0, h1 = h0 + depth;
+    return kPiThird * (h1 * h1 * (3.0 * radius - h1) - h0 * h0 * (3.0 * radius - h0));
+  }
+  void refresh_geometry_all();
+  void forward_geometry();
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_comm(int, int *, double *, int, int *) override;
+  void unpack_comm(int, int, double *) override;
+  double memory_usage() override;
+
+ private:
+  double **values;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

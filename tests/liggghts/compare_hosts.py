@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+"""Cross-host tests of the LIGGGHTS host (ctest labels liggghts, lammps; standard library only).
+
+  compare_hosts.py scene   --liggghts LG --lmp LMP --mpiexec MPIEXEC --np N --scene NAME --workdir DIR [--set V=X]
+  compare_hosts.py bad     --liggghts LG --workdir DIR --pattern REGEX -- <deck lines>
+
+scene: runs the scene's LAMMPS deck (inputs/) with lmp_runin and its LIGGGHTS deck (tests/liggghts/decks/)
+with liggghts_runin, both at N ranks with the same variables, and compares every thermo column both print
+(the mu, wear and roughness entries of compute runin/friction and runin/roughness, the forces on the counter-body)
+row by row: relative difference <= 1e-10 (absolute below 1e-300 for zeros).
+bad: one deck with a wrong style argument must stop with exit 1 and one ERROR line matching REGEX, no crash.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+TOLERANCE = 1e-10
+
+SCENES = {
+    # LAMMPS deck, LIGGGHTS deck, variables (shortened runs)
+    "rough_slider": ("inputs/in.rough_slider", "tests/liggghts/decks/in.rough_slider",
+                     {"nsettle": 600, "nslide": 1400, "thermo_every": 100}),
+}
+
+
+def mpi_env():
+    env = dict(os.environ)
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+    env.setdefault("OMP_NUM_THREADS", "1")
+    return env
+
+
+def fail(message):
+    print(f"FAIL: {message}")
+    sys.exit(1)
+
+
+def run(command, workdir, log, np, mpiexec, variables, extra=()):
+    command = list(command) + ["-in", "DECK", "-log", log, "-screen", "none"] + list(extra)
+    for name, value in variables.items():
+        command += ["-var", name, str(value)]
+    if np > 1:
+        command = [mpiexec, "-np", str(np)] + command
+    return command
+
+
+def thermo_blocks(text):
+    """Each run's thermo table as a list of dicts; LIGGGHTS drops the c_/v_/f_ prefixes of the header
+    names (and cuts them at 8 characters), so rows are keyed by position against the LAMMPS names."""
+    blocks, header, rows = [], None, []
+    for line in text.splitlines():
+        words = line.split()
+        if words and words[0] == "Step":
+            header, rows = words, []
+            continue
+        if header is not None:
+            if words and re.fullmatch(r"-?\d+", words[0]) and len(words) == len(header):
+                rows.append(words)
+                continue
+            if rows:
+                blocks.append((header, rows))
+            header = None
+    return blocks
+
+
+def strip(name):
+    return re.sub(r"^[cvf]_", "", name)[:8]
+
+
+def scene(args):
+    lammps_deck, liggghts_deck, variables = SCENES[args.scene]
+    variables = dict(variables)
+    for item in args.set or []:
+        name, _, value = item.partition("=")
+        variables[name] = value
+    shutil.rmtree(args.workdir, ignore_errors=True)
+    os.makedirs(args.workdir)
+    os.symlink(os.path.join(SOURCE_DIR, "potentials"), os.path.join(args.workdir, "potentials"))
+    logs = {}
+    for host, exe, deck, extra in (("lammps", args.lmp, lammps_deck, ()),
+                                   ("liggghts", args.liggghts, liggghts_deck, ("-st",))):
+        command = run([exe], args.workdir, f"log.{host}", args.np, args.mpiexec, variables, extra)
+        command[command.index("DECK")] = os.path.join(SOURCE_DIR, deck)
+        result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+        log = os.path.join(args.workdir, f"log.{host}")
+        text = open(log).read() if os.path.exists(log) else ""
+        if result.returncode != 0:
+            fail(f"{host}: {' '.join(command)} exited with {result.returncode}\n{result.stdout[-1500:]}\n"
+                 f"{result.stderr[-1500:]}\n{text[-1500:]}")
+        if f"{args.np} by" not in text and args.np > 1:
+            fail(f"{host}: the run did not use {args.np} MPI ranks")
+        logs[host] = thermo_blocks(text)
+    if len(logs["lammps"]) != len(logs["liggghts"]):
+        fail(f"thermo tables: LAMMPS {len(logs['lammps'])}, LIGGGHTS {len(logs['liggghts'])}")
+    worst, compared = 0.0, 0
+    for (lh, lrows), (gh, grows) in zip(logs["lammps"], logs["liggghts"]):
+        gindex = {strip(name): k for k, name in enumerate(gh)}
+        columns = [(name, k, gindex[strip(name)]) for k, name in enumerate(lh)
+                   if strip(name) in gindex and name not in ("Step",)]
+        if len(lrows) != len(grows):
+            fail(f"rows: LAMMPS {len(lrows)}, LIGGGHTS {len(grows)}")
+        for lrow, grow in zip(lrows, grows):
+            if lrow[0] != grow[0]:
+                fail(f"steps differ: {lrow[0]} vs {grow[0]}")
+            for name, kl, kg in columns:
+                a, b = float(lrow[kl]), float(grow[kg])
+                scale = max(abs(a), abs(b))
+                rel = abs(a - b) / scale if scale > 1e-300 else 0.0
+                compared += 1
+                if rel > worst:
+                    worst = rel
+                if rel > TOLERANCE:
+                    fail(f"step {lrow[0]} {name}: LAMMPS {a!r}, LIGGGHTS {b!r} (relative {rel:.3g} > {TOLERANCE})")
+    needed = {"c_fric[3]", "c_fric[5]", "c_fric[16]", "c_rough[2]", "c_rough[3]"}
+    seen = {name for header, _ in logs["lammps"] for name in header}
+    if not needed <= seen:
+        fail(f"the LAMMPS deck does not print {sorted(needed - seen)}")
+    print(f"{args.scene} at {args.np} rank(s): {compared} values in {len(logs['lammps'])} thermo tables, worst "
+          f"relative difference {worst:.3g} (tolerance {TOLERANCE})")
+
+
+def bad(args):
+    shutil.rmtree(args.workdir, ignore_errors=True)
+    os.makedirs(args.workdir)
+    deck = os.path.join(args.workdir, "in.bad")
+    with open(deck, "w") as f:
+        f.write("\n".join(args.lines) + "\n")
+    result = subprocess.run([args.liggghts, "-st", "-in", deck, "-log", "none"], cwd=args.workdir, env=mpi_env(),
+                            capture_output=True, text=True, errors="replace")
+    out = result.stdout + result.stderr
+    errors = [line for line in out.splitlines() if line.startswith("ERROR")]
+    if result.returncode != 1:
+        fail(f"exit code {result.returncode} (expected 1)\n{out[-2000:]}")
+    if len(errors) != 1 or not re.search(args.pattern, errors[0]):
+        fail(f"expected one ERROR line matching '{args.pattern}', got {errors}\n{out[-2000:]}")
+    if re.search(r"Segmentation|signal|core dumped|MPI_ABORT", out):
+        fail(f"crash output:\n{out[-2000:]}")
+    print(f"ok: {errors[0]}")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    sub = parser.add_subparsers(dest="mode", required=True)
+    p = sub.add_parser("scene")
+    p.add_argument("--liggghts", required=True)
+    p.add_argument("--lmp", required=True)
+    p.add_argument("--mpiexec", default="mpiexec")
+    p.add_argument("--np", type=int, default=1)
+    p.add_argument("--scene", required=True, choices=sorted(SCENES))
+    p.add_argument("--workdir", required=True)
+    p.add_argument("--set", action="append", metavar="NAME=VALUE", help="override a deck variable of the scene")
+    p = sub.add_parser("bad")
+    p.add_argument("--liggghts", required=True)
+    p.add_argument("--workdir", required=True)
+    p.add_argument("--pattern", required=True)
+    p.add_argument("lines", nargs="+")
+    args = parser.parse_args()
+    args.liggghts = os.path.abspath(args.liggghts)
+    if getattr(args, "lmp", None):
+        args.lmp = os.path.abspath(args.lmp)
+    {"scene": scene, "bad": bad}[args.mode](args)
+
+
+if __name__ == "__main__":
+    main()
