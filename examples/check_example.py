@@ -305,7 +305,8 @@ def run_steps(spec, args, run_dir):
         else:
             if not args.runin and step.get("needs_runin"):
                 fail("this example needs the runin CLI: pass --runin")
-            env = dict(env, LMP=shlex.join(lmp), MPIEXEC=args.mpiexec, NP=str(args.np), RUNIN=args.runin or "runin")
+            env = dict(env, LMP=shlex.join(lmp), MPIEXEC=args.mpiexec, NP=str(args.np), RUNIN=args.runin or "runin",
+                       PYTHON=sys.executable)
             command = ["bash", step["script"]]
         try:
             result = subprocess.run(command, cwd=run_dir, env=env, capture_output=True, text=True,
