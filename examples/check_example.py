@@ -22,8 +22,8 @@
 
 Comparison: for each key column, |run - reference| / scale <= rtol at every row of the table, where scale is
 the largest |value| of that column in the reference table (so a column that crosses zero, e.g. Rsk, is judged
-relative to its size, not to a value near 0). rtol comes from check.json (the README of each example gives
-the measured 1-vs-4-rank difference it sits above). The run fails on: a non-zero exit, an ERROR line, a log
+relative to its size, not to a value near 0). rtol comes from check.json, one number or one per output (the
+README of each example gives the measured 1-vs-4-rank difference it sits above). The run fails on: a non-zero exit, an ERROR line, a log
 that did not finish ('Total wall time') or did not run on N ranks, a non-finite value anywhere in a thermo
 table or key file, a missing or extra table, a missing key column, a different number of rows or different
 Step values, a key number outside the tolerance, or a failed closed-form check.
@@ -361,8 +361,8 @@ def check(args):
             shutil.copyfile(os.path.join(run_dir, file_name), target)
             print(f"  reference written: {os.path.relpath(target, SOURCE_DIR)}")
         return
-    rtol = float(spec["rtol"])
     for stem, wanted in spec["compare"].items():
+        rtol = float(spec["rtol"][stem] if isinstance(spec["rtol"], dict) else spec["rtol"])
         kind, _ = outputs[stem]
         ref_path = reference_file(args.name, stem, kind, args.np)
         reference = read_output(ref_path, kind, args.np if kind == "log" else None)

@@ -65,12 +65,14 @@ out += [("micro_slide_m", last["v_slide"]), ("micro_mu_body", last["c_fric[16]"]
 fit = json.load(open("friction_law.json"))["fit"]
 out += [("law_mu_0", fit["mu_0"]), ("law_mu_ss", fit["mu_ss"]), ("law_s0_m", fit["s0"]), ("law_s_peak_m", fit["s_peak"]),
         ("law_rms_residual", fit["rms_residual"])]
-# macro: the pin-on-disk state at t_end, and its wear against Archard k W s / H (pin_on_disk.toml's values)
+# macro: the pin-on-disk state at t_end; mu - alpha V (the law part) and the wear against Archard k W s / H
+# (k, W, H, alpha: pin_on_disk.toml's values)
 rows = list(csv.DictReader(open("pin_on_disk/pin_on_disk.csv")))
 end = rows[-1]
-k, load, hardness = 1e-4, 0.981, 0.9e9
+k, load, hardness, alpha = 1e-4, 0.981, 0.9e9, 0.68
 slide, wear = float(end["sliding_distance_m"]), float(end["wear_volume_m3"])
 out += [("pod_t_s", float(end["t_s"])), ("pod_mu", float(end["mu"])), ("pod_mu_law", float(end["mu_law"])),
+        ("pod_mu_minus_speed_term", float(end["mu"]) - alpha * float(end["speed_m_s"])),
         ("pod_speed_m_s", float(end["speed_m_s"])), ("pod_sliding_distance_m", slide), ("pod_wear_m3", wear),
         ("pod_archard_ratio", wear / (k * load * slide / hardness)),
         ("pod_contact_radius_m", float(end["contact_radius_m"])), ("pod_mean_pressure_Pa", float(end["mean_pressure_Pa"]))]
