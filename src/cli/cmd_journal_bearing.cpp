@@ -179,7 +179,7 @@ int run(const Options &o, const PlotRunner &plot) {
   for (double mu0 : c.sweep_mu0) sweep.push_back(run_case(c, friction_with_mu0(c, mu0), false, o.max_wear_updates));
   // What the second bearing half changes: the same case with one contact (bearing.halves = 1).
   std::optional<Curve> one_contact;
-  if (c.parameters.halves == 2) {
+  if (c.parameters.halves == 2 && c.one_contact_comparison) {
     JournalBearingCase single = c;
     single.parameters.halves = 1;
     single.parameters.second_half_load = 0.0;
@@ -256,7 +256,14 @@ int run(const Options &o, const PlotRunner &plot) {
              "G = E / (2 (1 + nu)), J = pi d^4 / 32)\n",
              c.stiffness_overridden ? "drive.stiffness overrides the" : "from the", c.shaft_stiffness,
              1e3 * c.shaft_diameter, 1e3 * c.shaft_length);
-  fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
+  const auto &first = main_curve.samples.front();
+  fmt::print("  break-away        {}{}\n", or_none(s.breakaway_time),
+             s.breakaway_time == 0.0 && std::abs(first.coupling_torque) > std::abs(first.friction_torque)
+                 ? fmt::format(" (at once: the coupling torque at the start, the damper's c w_d = {:.4g} N m, exceeds "
+                               "the static limit {:.4g} N m; spring alone: mu_s N R / (k w_d) = {:.3g} s)",
+                               std::abs(first.coupling_torque), std::abs(first.friction_torque),
+                               std::abs(first.friction_torque) / (p.coupling_stiffness * std::abs(p.drive_speed(0.0))))
+                 : std::string());
   fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
   fmt::print("  start friction    {:.6g} N (largest |F| up to the first slip sample)\n", s.start_friction_force);
   fmt::print("  steady state      {} (friction force and journal speed within {:g} % of final values from then on)\n",

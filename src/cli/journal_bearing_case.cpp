@@ -20,7 +20,7 @@ const Schema kSchema = {
     {"run", {"t_end", "output_interval", "frame_times"}},
     {"solver", {"method", "rtol", "atol", "max_steps"}},
     {"sweep", {"mu0"}},
-    {"output", {"axial_points"}},
+    {"output", {"axial_points", "one_contact_comparison"}},
 };
 
 }  // namespace
@@ -132,6 +132,7 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
     }
   }
   c.axial_points = static_cast<int>(reader.positive_integer("output.axial_points", 11));
+  c.one_contact_comparison = reader.choice("output.one_contact_comparison", {"run", "skip"}, std::string("run")) == "run";
   if (c.axial_points < 2 || c.axial_points > 1000) reader.fail("output.axial_points", "must be in [2, 1000]");
 
   try {
