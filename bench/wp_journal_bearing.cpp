@@ -5,6 +5,8 @@
 // Also times the long wear run-in: 1000 wear updates on a 512-node arc.
 //   build-bench/bench/wp_journal_bearing [OUT.csv]   (default wp_journal_bearing.csv; PNG beside it)
 // Wall time: timed by Google Benchmark (median of 5 repetitions, wall time; Euler h = 1e-6 and wear: 3), one core.
+// Bearing halves: 2 (the thesis's two loaded halves, two contacts), RUNIN_BENCH_HALVES=1 for the single
+// contact (the model before issue 14). The wear benchmark wears one contact either way.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -30,6 +32,8 @@ JournalBearingParameters thesis(int nodes = 256) {
   p.coupling_damping = 2.0 * 0.3 * std::sqrt(0.5 * 6e-5);
   p.wear_coefficient = 1e-3;
   p.hardness = 1.2e9;
+  const char *halves = std::getenv("RUNIN_BENCH_HALVES");
+  p.halves = halves && std::string(halves) == "1" ? 1 : 2;
   return p;
 }
 
@@ -59,9 +63,14 @@ std::vector<double> cvode_distance(const JournalBearingParameters &p, const Slid
 std::vector<double> euler_distance(const JournalBearingParameters &p, const SlidingFriction &f, double h) {
   JournalBearingSystem system(p, f);
   const auto &contact = system.contact();
-  std::vector<double> wear(contact.nodes(), 0.0);
-  ConformalSolution sol = contact.solve(system.load_per_length());
-  double normal = sol.normal_force_per_length * p.bore.axial_width;
+  const int halves = p.halves;
+  std::vector<std::vector<double>> wear(halves, std::vector<double>(contact.nodes(), 0.0));
+  std::vector<ConformalSolution> sol;
+  double normal = 0.0;  // summed over the halves (same mu on both: no state per half in this baseline)
+  for (int h = 0; h < halves; ++h) {
+    sol.push_back(contact.solve(system.load_per_length(h)));
+    normal += sol[h].normal_force_per_length * p.bore.axial_width;
+  }
   const double wear_step = 0.5 * system.wear_law().stable_slip_step(contact.contact_stiffness_per_area());
   double s_update = 0.0, next_wear = wear_step;
   const double r = p.bore.shaft_radius;
@@ -91,10 +100,13 @@ std::vector<double> euler_distance(const JournalBearingParameters &p, const Slid
     t = n * h;
     if (s >= next_wear) {
       const double ds = s - s_update;
-      for (int i = 0; i < contact.nodes(); ++i) wear[i] += system.wear_law().depth_rate(sol.pressure[i]) * ds;
-      const auto previous = sol.pressure;
-      sol = contact.solve(system.load_per_length(), wear, &previous);
-      normal = sol.normal_force_per_length * p.bore.axial_width;
+      normal = 0.0;
+      for (int h = 0; h < halves; ++h) {
+        for (int i = 0; i < contact.nodes(); ++i) wear[h][i] += system.wear_law().depth_rate(sol[h].pressure[i]) * ds;
+        const auto previous = sol[h].pressure;
+        sol[h] = contact.solve(system.load_per_length(h), wear[h], &previous);
+        normal += sol[h].normal_force_per_length * p.bore.axial_width;
+      }
       s_update = s;
       next_wear = s + wear_step;
     }

@@ -56,6 +56,9 @@ def curve(args):
 
     bottom.plot(t, d["peak_pressure_Pa"] / 1e6, color="tab:purple", label="peak pressure")
     bottom.plot(t, d["mean_pressure_Pa"] / 1e6, color="tab:purple", linestyle="--", label="mean pressure")
+    if "upper_peak_pressure_Pa" in d.dtype.names:  # two bearing halves: the upper half's own contact
+        bottom.plot(t, d["upper_peak_pressure_Pa"] / 1e6, color="tab:pink", linestyle="-.",
+                    label="peak pressure, upper half")
     bottom.set_ylabel("pressure (MPa)", color="tab:purple")
     bottom.set_xlabel("time (s)")
     bottom.legend(loc="upper left", fontsize=8)

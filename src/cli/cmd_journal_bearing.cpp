@@ -79,8 +79,9 @@ Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &fr
       p.coupling_stiffness * std::abs(p.drive_angle(c.run.t_end)) +
       p.coupling_damping * std::max(std::abs(p.ramp_angle / p.ramp_time), std::abs(p.run_speed));
   const bool fixed_static_limit = c.friction_model == "constant" || c.friction_model == "static_kinetic";
+  const double total_load = p.load + (p.halves == 2 ? p.half_load(1) : 0.0);
   const bool may_slip =
-      !fixed_static_limit || max_coupling_torque >= friction.static_coefficient() * p.load * p.bore.shaft_radius;
+      !fixed_static_limit || max_coupling_torque >= friction.static_coefficient() * total_load * p.bore.shaft_radius;
   if (wearing && may_slip && drive_distance / step > static_cast<double>(max_wear_updates))
     throw std::runtime_error(cap_message(fmt::format("about {:.3g}", drive_distance / step)) +
                              fmt::format(" (sliding distance ~ R theta_drive = {:.4g} m)", drive_distance));
@@ -111,20 +112,39 @@ const char *kColumns =
     "mu,mu_law,sliding_speed_m_s,sliding_distance_m,wear_volume_m3,contact_half_angle_rad,peak_pressure_Pa,"
     "mean_pressure_Pa,state_slip,roughness";
 
+// Per-half columns, appended with two bearing halves.
+const char *kHalfColumns[] = {"friction_torque_N_m", "normal_force_N", "mu", "roughness", "wear_volume_m3",
+                              "contact_half_angle_rad", "peak_pressure_Pa"};
+
+std::string columns(int halves) {
+  std::string text = kColumns;
+  if (halves == 2)
+    for (const char *half : {"lower_", "upper_"})
+      for (const char *name : kHalfColumns) text += std::string(",") + half + name;
+  return text;
+}
+
 std::string row(const JournalBearingSample &s) {
+  std::string halves;
+  if (s.halves == 2)
+    for (const auto &h : s.half)
+      halves += fmt::format(",{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}", h.friction_torque, h.normal_force,
+                            h.mu, h.roughness, h.wear_volume, h.contact_half_angle, h.peak_pressure);
   return fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},"
                      "{:.12g},{:.12g},{:.12g},{},{:.12g}",
                      s.t, s.drive_angle, s.drive_speed, s.journal_speed, s.coupling_torque, s.friction_torque, s.friction_force,
                      s.normal_force, s.mu, s.mu_law, s.sliding_speed, s.distance, s.wear_volume, s.contact_half_angle,
-                     s.peak_pressure, s.mean_pressure, s.state == continuum::ContactState::Slip ? 1 : 0, s.roughness);
+                     s.peak_pressure, s.mean_pressure, s.state == continuum::ContactState::Slip ? 1 : 0, s.roughness) +
+         halves;
 }
 
 std::string or_none(double t) { return t < 0.0 ? std::string("not reached") : fmt::format("{:.6g} s", t); }
 
 #ifdef RUNIN_HAVE_VTK
-// Bore surface (worn radius) over the arc x axial width, theta = 0 at the loaded bottom.
+// Bore surface (worn radius) over the arc x axial width, theta = 0 at the loaded bottom (lower half)
+// or at the top (upper half, pressed down onto the shaft).
 std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, const continuum::ConformalContact &contact,
-                                                   const std::vector<JournalBearingFrame> &frames) {
+                                                   const std::vector<JournalBearingFrame> &frames, bool upper = false) {
   const auto &b = c.parameters.bore;
   const int nu = contact.nodes(), nv = c.axial_points;
   std::vector<coupling::SurfaceFrame> out;
@@ -137,10 +157,12 @@ std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, 
     for (int j = 0; j < nv; ++j) {
       const double z = b.axial_width * (j / double(nv - 1) - 0.5);
       for (int i = 0; i < nu; ++i) {
-        const double theta = contact.node_angle(i), r = b.shaft_radius + b.clearance + f.wear_depth[i];
-        s.points.push_back({r * std::sin(theta), -r * std::cos(theta), z});
-        pressure[i + nu * j] = f.pressure[i];
-        wear[i + nu * j] = f.wear_depth[i];
+        const auto &depth = upper ? f.upper_wear_depth : f.wear_depth;
+        const auto &p = upper ? f.upper_pressure : f.pressure;
+        const double theta = contact.node_angle(i), r = b.shaft_radius + b.clearance + depth[i];
+        s.points.push_back({r * std::sin(theta), (upper ? r : -r) * std::cos(theta), z});
+        pressure[i + nu * j] = p[i];
+        wear[i + nu * j] = depth[i];
       }
     }
     s.fields = {{"pressure", pressure}, {"wear_depth", wear}};
@@ -155,18 +177,27 @@ int run(const Options &o, const PlotRunner &plot) {
   const Curve main_curve = run_case(c, *c.friction, true, o.max_wear_updates);
   std::vector<Curve> sweep;
   for (double mu0 : c.sweep_mu0) sweep.push_back(run_case(c, friction_with_mu0(c, mu0), false, o.max_wear_updates));
+  // What the second bearing half changes: the same case with one contact (bearing.halves = 1).
+  std::optional<Curve> one_contact;
+  if (c.parameters.halves == 2 && c.one_contact_comparison) {
+    JournalBearingCase single = c;
+    single.parameters.halves = 1;
+    single.parameters.second_half_load = 0.0;
+    one_contact = run_case(single, *c.friction, false, o.max_wear_updates);
+  }
 
   // Everything is computed; the output set is staged and moved in only when complete.
   StagedOutput out(o.output_dir, {"journal_bearing.csv", "journal_bearing.png", "journal_bearing_sweep.csv",
                                   "journal_bearing_sweep_summary.csv", "journal_bearing_mu0.png", "vtk/bore.pvd",
-                                  "vtk/bore_*.vts"});
-  std::string text = std::string(kColumns) + "\n";
+                                  "vtk/bore_*.vts", "vtk/bore_upper.pvd"});
+  const int halves = c.parameters.halves;
+  std::string text = columns(halves) + "\n";
   for (const auto &s : main_curve.samples) text += row(s) + "\n";
   out.write("journal_bearing.csv", text);
   std::vector<std::string> written = {"journal_bearing.csv"};
 
   if (!sweep.empty()) {
-    std::string t = std::string("mu0,") + kColumns + "\n";
+    std::string t = "mu0," + columns(halves) + "\n";
     std::string summary = "mu0,peak_friction_force_N,peak_time_s,breakaway_time_s,steady_time_s,steady_mu,wear_volume_m3\n";
     for (std::size_t k = 0; k < sweep.size(); ++k) {
       for (const auto &s : sweep[k].samples) t += fmt::format("{:.12g},", c.sweep_mu0[k]) + row(s) + "\n";
@@ -196,6 +227,11 @@ int run(const Options &o, const PlotRunner &plot) {
   const auto vtk_written = coupling::write_surface_series(surface_frames(c, contact, main_curve.frames),
                                                           (out.staging() / "vtk").string(), "bore");
   vtk_note = fmt::format("{} ({} frame(s))", out.destination_of(vtk_written.back()).string(), main_curve.frames.size());
+  if (halves == 2) {
+    const auto upper_written = coupling::write_surface_series(surface_frames(c, contact, main_curve.frames, true),
+                                                              (out.staging() / "vtk").string(), "bore_upper");
+    vtk_note += fmt::format(", upper half {}", out.destination_of(upper_written.back()).string());
+  }
 #endif
   out.commit();
 
@@ -208,9 +244,26 @@ int run(const Options &o, const PlotRunner &plot) {
   fmt::print("  bearing           R = {:g} mm, c = {:g} um, L = {:g} mm, W = {:g} N; arc +-{:g} rad on {} nodes\n",
              1e3 * p.bore.shaft_radius, 1e6 * p.bore.clearance, 1e3 * p.bore.axial_width, p.load,
              p.bore.arc_half_angle, p.bore.nodes);
-  fmt::print("  drive             {:g} rad linear over {:g} s, then {:g} rad/s; coupling k = {:g} N m/rad, c = {:.3g} N m s/rad\n",
+  if (halves == 2)
+    fmt::print("  bearing halves    2, pressed on the shaft in opposite directions with W = {:g} N (lower) and {:g} N "
+               "(upper): two contacts, each its own pressure, wear and friction state\n",
+               p.half_load(0), p.half_load(1));
+  else
+    fmt::print("  bearing halves    1 (single-contact model; the thesis loads two halves: bearing.halves = 2)\n");
+  fmt::print("  drive             {:g} rad linear over {:g} s, then {:g} rad/s; coupling k = {:.6g} N m/rad, c = {:.3g} N m s/rad\n",
              p.ramp_angle, p.ramp_time, p.run_speed, p.coupling_stiffness, p.coupling_damping);
-  fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
+  fmt::print("  drive stiffness   {} shaft torsion G J / L = {:.6g} N m/rad (d = {:g} mm, L = {:g} mm, "
+             "G = E / (2 (1 + nu)), J = pi d^4 / 32)\n",
+             c.stiffness_overridden ? "drive.stiffness overrides the" : "from the", c.shaft_stiffness,
+             1e3 * c.shaft_diameter, 1e3 * c.shaft_length);
+  const auto &first = main_curve.samples.front();
+  fmt::print("  break-away        {}{}\n", or_none(s.breakaway_time),
+             s.breakaway_time == 0.0 && std::abs(first.coupling_torque) > std::abs(first.friction_torque)
+                 ? fmt::format(" (at once: the coupling torque at the start, the damper's c w_d = {:.4g} N m, exceeds "
+                               "the static limit {:.4g} N m; spring alone: mu_s N R / (k w_d) = {:.3g} s)",
+                               std::abs(first.coupling_torque), std::abs(first.friction_torque),
+                               std::abs(first.friction_torque) / (p.coupling_stiffness * std::abs(p.drive_speed(0.0))))
+                 : std::string());
   fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
   fmt::print("  start friction    {:.6g} N (largest |F| up to the first slip sample)\n", s.start_friction_force);
   fmt::print("  steady state      {} (friction force and journal speed within {:g} % of final values from then on)\n",
@@ -223,6 +276,27 @@ int run(const Options &o, const PlotRunner &plot) {
              1e9 * s.wear_volume, last.distance, r.wear_updates, r.stable_wear_step);
   fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", r.steps, r.breakaway_times.size(),
              r.restick_times.size());
+  if (halves == 2) {
+    const auto &lower = last.half[0], &upper = last.half[1];
+    fmt::print("  halves at end     lower: T_f = {:.6g} N m, N = {:.6g} N, wear {:.6g} mm^3, peak {:.4g} MPa; "
+               "upper: T_f = {:.6g} N m, N = {:.6g} N, wear {:.6g} mm^3, peak {:.4g} MPa\n",
+               lower.friction_torque, lower.normal_force, 1e9 * lower.wear_volume, 1e-6 * lower.peak_pressure,
+               upper.friction_torque, upper.normal_force, 1e9 * upper.wear_volume, 1e-6 * upper.peak_pressure);
+  }
+  if (one_contact) {
+    const auto &o1 = one_contact->summary;
+    const auto ratio = [](double a, double b) { return b != 0.0 ? fmt::format("x{:.4g}", a / b) : std::string("n/a"); };
+    const auto initial_normal = [](const Curve &k) { return k.samples.front().normal_force; };
+    fmt::print("  second half       vs one contact (same case, bearing.halves = 1): N {:.6g} -> {:.6g} N ({}), "
+               "peak friction {:.6g} -> {:.6g} N ({}), break-away {} -> {}, steady state {} -> {}, "
+               "steady mu {:.6g} -> {:.6g}, wear volume {:.6g} -> {:.6g} mm^3 ({}), re-sticks {} -> {}\n",
+               initial_normal(*one_contact), initial_normal(main_curve),
+               ratio(initial_normal(main_curve), initial_normal(*one_contact)), o1.peak_friction_force,
+               s.peak_friction_force, ratio(s.peak_friction_force, o1.peak_friction_force), or_none(o1.breakaway_time),
+               or_none(s.breakaway_time), or_none(o1.steady_time), or_none(s.steady_time), o1.steady_mu, s.steady_mu,
+               1e9 * o1.wear_volume, 1e9 * s.wear_volume, ratio(s.wear_volume, o1.wear_volume),
+               one_contact->report.restick_times.size(), r.restick_times.size());
+  }
   if (!sweep.empty()) {
     fmt::print("  mu0 sweep         {:>6} {:>12} {:>12} {:>12} {:>10}\n", "mu0", "peak F (N)", "break-away", "steady",
                "steady mu");

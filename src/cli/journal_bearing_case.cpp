@@ -9,8 +9,10 @@ namespace runin::cli {
 namespace {
 
 const Schema kSchema = {
-    {"", {"title", "bearing", "contact", "drive", "wear", "friction", "run", "solver", "sweep", "output"}},
-    {"bearing", {"shaft_radius", "clearance", "length", "youngs_modulus", "poisson_ratio", "load"}},
+    {"", {"title", "bearing", "shaft", "contact", "drive", "wear", "friction", "run", "solver", "sweep", "output"}},
+    {"bearing", {"shaft_radius", "clearance", "length", "youngs_modulus", "poisson_ratio", "load", "halves",
+                 "second_half_load"}},
+    {"shaft", {"diameter", "length", "youngs_modulus", "poisson_ratio"}},
     {"contact", {"arc_half_angle", "nodes"}},
     {"drive", {"ramp_angle", "ramp_time", "run_speed", "inertia", "stiffness", "damping_ratio"}},
     {"wear", {"coefficient", "hardness", "form", "step_fraction", "fixed_step"}},
@@ -18,7 +20,7 @@ const Schema kSchema = {
     {"run", {"t_end", "output_interval", "frame_times"}},
     {"solver", {"method", "rtol", "atol", "max_steps"}},
     {"sweep", {"mu0"}},
-    {"output", {"axial_points"}},
+    {"output", {"axial_points", "one_contact_comparison"}},
 };
 
 }  // namespace
@@ -44,6 +46,16 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   if (!(b.poisson_ratio > -1.0 && b.poisson_ratio < 0.5))
     reader.fail("bearing.poisson_ratio", "must be in (-1, 0.5), got " + CaseReader::format(b.poisson_ratio));
   p.load = reader.positive("bearing.load");
+  // Thesis ch. 5: "a 1 kg vertical load is applied equally and in opposite directions to each bearing half".
+  const long halves = reader.positive_integer("bearing.halves", 2);
+  if (halves != 1 && halves != 2)
+    reader.fail("bearing.halves", "must be 2 (two opposite bearing halves, the thesis) or 1 (one contact), got " +
+                                      std::to_string(halves));
+  p.halves = static_cast<int>(halves);
+  if (reader.has("bearing.second_half_load")) {
+    if (p.halves != 2) reader.fail("bearing.second_half_load", "needs bearing.halves = 2");
+    p.second_half_load = reader.positive("bearing.second_half_load");
+  }
 
   b.arc_half_angle = reader.positive("contact.arc_half_angle", 0.5);
   if (!(b.arc_half_angle < 0.5 * M_PI))
@@ -56,7 +68,18 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   p.ramp_time = reader.positive("drive.ramp_time", 2.0);
   p.run_speed = reader.number("drive.run_speed", 0.0);
   p.inertia = reader.positive("drive.inertia");
-  p.coupling_stiffness = reader.positive("drive.stiffness");
+  // Drive stiffness: the shaft's torsion between the drive and the bearing, k = G J / L with
+  // G = E / (2 (1 + nu)) and J = pi d^4 / 32, unless drive.stiffness overrides it.
+  c.shaft_diameter = reader.positive("shaft.diameter", 2.0 * b.shaft_radius);
+  c.shaft_length = reader.positive("shaft.length", 0.2);
+  const double shaft_modulus = reader.positive("shaft.youngs_modulus", b.youngs_modulus);
+  const double shaft_poisson = reader.number("shaft.poisson_ratio", b.poisson_ratio);
+  if (!(shaft_poisson > -1.0 && shaft_poisson < 0.5))
+    reader.fail("shaft.poisson_ratio", "must be in (-1, 0.5), got " + CaseReader::format(shaft_poisson));
+  c.shaft_stiffness =
+      continuum::shaft_torsional_stiffness(c.shaft_diameter, c.shaft_length, shaft_modulus, shaft_poisson);
+  c.stiffness_overridden = reader.has("drive.stiffness");
+  p.coupling_stiffness = c.stiffness_overridden ? reader.positive("drive.stiffness") : c.shaft_stiffness;
   const double damping_ratio = reader.non_negative("drive.damping_ratio", 0.0);
   p.coupling_damping = 2.0 * damping_ratio * std::sqrt(p.coupling_stiffness * p.inertia);
 
@@ -109,6 +132,7 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
     }
   }
   c.axial_points = static_cast<int>(reader.positive_integer("output.axial_points", 11));
+  c.one_contact_comparison = reader.choice("output.one_contact_comparison", {"run", "skip"}, std::string("run")) == "run";
   if (c.axial_points < 2 || c.axial_points > 1000) reader.fail("output.axial_points", "must be in [2, 1000]");
 
   try {

@@ -20,6 +20,10 @@ struct JournalBearingCase {
   double alpha = 0.0;
   std::vector<double> sweep_mu0;        // [sweep] mu0, empty if absent
   int axial_points = 11;                // VTK grid across the bearing length
+  double shaft_diameter = 0.0, shaft_length = 0.0;  // m, [shaft] (defaults: 2 R and 0.2 m)
+  double shaft_stiffness = 0.0;         // N m/rad, G J / L of the shaft
+  bool stiffness_overridden = false;    // drive.stiffness given: it replaces G J / L
+  bool one_contact_comparison = true;   // output.one_contact_comparison: re-run with one contact for the summary
 };
 
 // `law_path` is the --law option; required exactly when friction.model = "law_file".

@@ -14,9 +14,21 @@ int sign_of(double x) { return x > 0.0 ? 1 : (x < 0.0 ? -1 : 0); }
 bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
 }  // namespace
 
+double shaft_torsional_stiffness(double diameter, double length, double youngs_modulus, double poisson_ratio) {
+  require(std::isfinite(diameter) && diameter > 0.0, "shaft diameter must be positive");
+  require(std::isfinite(length) && length > 0.0, "shaft length must be positive");
+  require(std::isfinite(youngs_modulus) && youngs_modulus > 0.0, "shaft youngs_modulus must be positive");
+  require(poisson_ratio > -1.0 && poisson_ratio < 0.5, "shaft poisson_ratio must be in (-1, 0.5)");
+  const double shear_modulus = youngs_modulus / (2.0 * (1.0 + poisson_ratio));
+  const double polar_moment = M_PI * std::pow(diameter, 4) / 32.0;
+  return shear_modulus * polar_moment / length;
+}
+
 void JournalBearingParameters::validate() const {
   bore.validate();
   require(std::isfinite(load) && load > 0.0, "load must be positive");
+  require(halves == 1 || halves == 2, "halves must be 1 or 2");
+  require(finite_non_negative(second_half_load), "second_half_load must be >= 0 (0: equal to load)");
   require(std::isfinite(ramp_angle), "ramp_angle must be finite");
   require(std::isfinite(ramp_time) && ramp_time > 0.0, "ramp_time must be positive");
   require(std::isfinite(run_speed), "run_speed must be finite");
@@ -63,11 +75,12 @@ struct Surface {
   double committed_volume = 0.0;
 };
 
-bool solve_contact(const JournalBearingSystem &sys, Surface &surface, std::string &message) {
+bool solve_contact(const JournalBearingSystem &sys, Surface &surface, std::string &message, int half = 0) {
   const std::vector<double> previous = surface.contact.pressure;
-  surface.contact = sys.contact().solve(sys.load_per_length(), surface.wear, previous.empty() ? nullptr : &previous);
+  surface.contact = sys.contact().solve(sys.load_per_length(half), surface.wear, previous.empty() ? nullptr : &previous);
   if (!surface.contact.ok()) {
-    message = std::string("contact solver: ") + to_string(surface.contact.status) +
+    message = std::string("contact solver") + (sys.parameters().halves == 2 ? (half ? " (upper half)" : " (lower half)") : "") +
+              ": " + to_string(surface.contact.status) +
               (surface.contact.status == ConformalStatus::ArcTooShort ? " (increase contact.arc_half_angle)" : "");
     return false;
   }
@@ -89,14 +102,16 @@ void apply_wear(const JournalBearingSystem &sys, Surface &surface, double distan
 }  // namespace
 
 namespace {
-// y = (theta, w, s, R); R is the friction law's state (feedback roughness), constant otherwise.
-// The pressure is frozen between wear updates, which are an extra root (s = next_wear) in slip.
+// y = (theta, w, s, R_0[, R_1]); R_h is half h's friction-law state (feedback roughness), constant
+// otherwise. Both halves slide over the same shaft surface, so s and the wear-update points are
+// shared; pressure, wear and R are per half. The pressures are frozen between wear updates, which
+// are an extra root (s = next_wear) in slip and update every half.
 struct JournalBearingHooks : StickSlipHooksBase {
   const JournalBearingSystem &system;
   const JournalBearingParameters &p;
   const SlidingFriction &friction;
   const double radius;
-  Surface &surface;
+  std::vector<Surface> &surfaces;
   JournalBearingReport &report;
   const double wear_step;
   double next_wear;
@@ -107,10 +122,10 @@ struct JournalBearingHooks : StickSlipHooksBase {
   const double round_off;
   static constexpr std::size_t speed_index = 1;
 
-  JournalBearingHooks(const JournalBearingSystem &sys, Surface &surf, JournalBearingReport &rep, double step,
+  JournalBearingHooks(const JournalBearingSystem &sys, std::vector<Surface> &surf, JournalBearingReport &rep, double step,
                       bool wearing, const JournalBearingObserver &obs, const JournalBearingFrameObserver &fr,
                       const JournalBearingRun &run)
-      : system(sys), p(sys.parameters()), friction(sys.friction()), radius(p.bore.shaft_radius), surface(surf),
+      : system(sys), p(sys.parameters()), friction(sys.friction()), radius(p.bore.shaft_radius), surfaces(surf),
         report(rep), wear_step(step), next_wear(wearing ? step : HUGE_VAL), observer(obs), frames(fr),
         frame_times(run.frame_times), round_off(64.0 * std::numeric_limits<double>::epsilon() * run.t_end) {
     std::sort(frame_times.begin(), frame_times.end());
@@ -119,21 +134,34 @@ struct JournalBearingHooks : StickSlipHooksBase {
   double coupling_torque(double t, const double *y) const {
     return p.coupling_stiffness * (p.drive_angle(t) - y[0]) + p.coupling_damping * (p.drive_speed(t) - y[1]);
   }
-  double static_limit(const double *y) const { return friction.static_coefficient(y[3]) * surface.normal_force * radius; }
+  std::size_t halves() const { return surfaces.size(); }
+  double half_static_limit(const double *y, std::size_t h) const {
+    return friction.static_coefficient(y[3 + h]) * surfaces[h].normal_force * radius;
+  }
+  double half_slip_torque(const double *y, int dir, std::size_t h) const {
+    return dir * friction.kinetic(y[2], radius * y[1], y[3 + h]) * surfaces[h].normal_force * radius;
+  }
+  double static_limit(const double *y) const {
+    double sum = 0.0;
+    for (std::size_t h = 0; h < halves(); ++h) sum += half_static_limit(y, h);
+    return sum;
+  }
   double slip_torque(const double *y, int dir) const {
-    return dir * friction.kinetic(y[2], radius * y[1], y[3]) * surface.normal_force * radius;
+    double sum = 0.0;
+    for (std::size_t h = 0; h < halves(); ++h) sum += half_slip_torque(y, dir, h);
+    return sum;
   }
 
   void rhs(double t, const double *y, double *dy, ContactState state, int dir) const {
     if (state == ContactState::Stick) {
       dy[0] = dy[1] = dy[2] = 0.0;
-      dy[3] = friction.state_rate(y[3], 0.0, false);
+      for (std::size_t h = 0; h < halves(); ++h) dy[3 + h] = friction.state_rate(y[3 + h], 0.0, false);
       return;
     }
     dy[0] = y[1];
     dy[1] = (coupling_torque(t, y) - slip_torque(y, dir)) / p.inertia;
     dy[2] = dir * radius * y[1];  // = R|w| before the re-stick root, smooth through it
-    dy[3] = friction.state_rate(y[3], radius * y[1], true);
+    for (std::size_t h = 0; h < halves(); ++h) dy[3 + h] = friction.state_rate(y[3 + h], radius * y[1], true);
   }
   double breakaway_function(double t, const double *y) const {
     return std::abs(coupling_torque(t, y)) - static_limit(y);
@@ -149,10 +177,13 @@ struct JournalBearingHooks : StickSlipHooksBase {
   }
   bool on_extra_roots(StickSlipState &s, const std::vector<int> &found, std::string &message) {
     if (s.state != ContactState::Slip || found[1] == 0) return true;
-    apply_wear(system, surface, s.y[2]);
     ++report.wear_updates;
     next_wear = s.y[2] + wear_step;
-    return solve_contact(system, surface, message);
+    for (std::size_t h = 0; h < halves(); ++h) {
+      apply_wear(system, surfaces[h], s.y[2]);
+      if (!solve_contact(system, surfaces[h], message, static_cast<int>(h))) return false;
+    }
+    return true;
   }
 
   void emit(const StickSlipState &st) {
@@ -164,28 +195,56 @@ struct JournalBearingHooks : StickSlipHooksBase {
     s.drive_speed = p.drive_speed(t);
     s.journal_speed = st.state == ContactState::Stick ? 0.0 : y[1];
     s.coupling_torque = coupling_torque(t, y.data());
-    s.friction_torque = st.state == ContactState::Stick ? s.coupling_torque : slip_torque(y.data(), st.direction);
+    const bool stick = st.state == ContactState::Stick;
+    s.halves = static_cast<int>(halves());
+    const double limit = stick ? static_limit(y.data()) : 0.0;
+    // In stick the contact carries the coupling torque, up to its static limit: the coupling torque
+    // exceeds it only in the sample just before an immediate break-away at the start (a damper torque
+    // c w_d above mu_s N R), where the contact carries its limit.
+    s.friction_torque = stick ? std::clamp(s.coupling_torque, -limit, limit) : slip_torque(y.data(), st.direction);
+    double loaded = 0.0, loaded_force = 0.0;
+    for (std::size_t h = 0; h < halves(); ++h) {
+      const Surface &surface = surfaces[h];
+      JournalBearingHalfSample &half = s.half[h];
+      // Stick is statically indeterminate between the halves: shared in proportion to their static limits.
+      half.friction_torque = stick ? (limit > 0.0 ? s.friction_torque * half_static_limit(y.data(), h) / limit
+                                                  : s.friction_torque / static_cast<double>(halves()))
+                                   : half_slip_torque(y.data(), st.direction, h);
+      half.normal_force = surface.normal_force;
+      half.mu = half.friction_torque / (radius * surface.normal_force);
+      half.roughness = y[3 + h];
+      half.wear_volume =
+          surface.committed_volume + system.wear_law().volume(surface.normal_force, y[2] - surface.distance_at_update);
+      half.contact_half_angle = surface.contact.contact_half_angle;
+      half.peak_pressure = surface.contact.peak_pressure;
+      half.mean_pressure = surface.contact.mean_pressure;
+      s.normal_force += half.normal_force;
+      s.wear_volume += half.wear_volume;
+      s.contact_half_angle = std::max(s.contact_half_angle, half.contact_half_angle);
+      s.peak_pressure = std::max(s.peak_pressure, half.peak_pressure);
+      loaded += surface.contact.active_nodes;
+      loaded_force += surface.contact.mean_pressure * surface.contact.active_nodes;
+    }
+    s.mean_pressure = loaded > 0.0 ? loaded_force / loaded : 0.0;
     s.friction_force = s.friction_torque / radius;
-    s.normal_force = surface.normal_force;
-    s.mu = s.friction_force / surface.normal_force;
+    s.mu = s.friction_force / s.normal_force;
     s.mu_law = friction.kinetic(y[2], 0.0, y[3]);
     s.roughness = y[3];
     s.sliding_speed = radius * s.journal_speed;
     s.distance = y[2];
-    s.wear_volume = surface.committed_volume + system.wear_law().volume(surface.normal_force, y[2] - surface.distance_at_update);
-    s.contact_half_angle = surface.contact.contact_half_angle;
-    s.peak_pressure = surface.contact.peak_pressure;
-    s.mean_pressure = surface.contact.mean_pressure;
     s.state = st.state;
     observer(s);
     while (frames && next_frame < frame_times.size() && t >= frame_times[next_frame] - round_off) {
       JournalBearingFrame f;
       f.t = t;
-      f.pressure = surface.contact.pressure;
-      f.wear_depth = surface.wear;
-      const double pending = y[2] - surface.distance_at_update;
-      for (std::size_t i = 0; i < f.wear_depth.size(); ++i)
-        f.wear_depth[i] += system.wear_law().depth_rate(f.pressure[i]) * pending;
+      for (std::size_t h = 0; h < halves(); ++h) {
+        const Surface &surface = surfaces[h];
+        std::vector<double> pressure = surface.contact.pressure, depth = surface.wear;
+        const double pending = y[2] - surface.distance_at_update;
+        for (std::size_t i = 0; i < depth.size(); ++i) depth[i] += system.wear_law().depth_rate(pressure[i]) * pending;
+        (h == 0 ? f.pressure : f.upper_pressure) = std::move(pressure);
+        (h == 0 ? f.wear_depth : f.upper_wear_depth) = std::move(depth);
+      }
       frames(f);
       ++next_frame;
     }
@@ -199,21 +258,24 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
   const auto &p = system.parameters();
 
   JournalBearingReport report;
-  Surface surface;
-  surface.wear.assign(system.contact().nodes(), 0.0);
-  if (!solve_contact(system, surface, report.message)) {
-    report.status = SolveStatus::IntegratorFailure;
-    return report;
+  std::vector<Surface> surfaces(static_cast<std::size_t>(p.halves));
+  for (std::size_t h = 0; h < surfaces.size(); ++h) {
+    surfaces[h].wear.assign(system.contact().nodes(), 0.0);
+    if (!solve_contact(system, surfaces[h], report.message, static_cast<int>(h))) {
+      report.status = SolveStatus::IntegratorFailure;
+      return report;
+    }
   }
   report.stable_wear_step = system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
   const double wear_step = run.fixed_wear_step > 0.0 ? run.fixed_wear_step : run.wear_step_fraction * report.stable_wear_step;
   const bool wearing = p.wear_coefficient > 0.0 && std::isfinite(wear_step);
 
-  CvodeIntegrator integrator(4, run.integrator);
+  CvodeIntegrator integrator(3 + surfaces.size(), run.integrator);
   StickSlipState start;
-  start.y = {0.0, 0.0, 0.0, system.friction().initial_state()};
+  start.y = {0.0, 0.0, 0.0};
+  for (std::size_t h = 0; h < surfaces.size(); ++h) start.y.push_back(system.friction().initial_state());
   const StickSlipGrid grid{run.t_end, run.output_interval, p.ramp_time, run.max_events};
-  JournalBearingHooks hooks(system, surface, report, wear_step, wearing, observer, frames, run);
+  JournalBearingHooks hooks(system, surfaces, report, wear_step, wearing, observer, frames, run);
   StickSlipLoop<JournalBearingHooks> loop(hooks, grid, integrator, std::move(start), report);
 
   const auto &s = loop.state();

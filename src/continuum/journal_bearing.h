@@ -1,12 +1,16 @@
 // Dry journal bearing (thesis ch. 5): a shaft of radius R turns in a fixed bore under a radial
-// load W. The drive end follows a prescribed rotation (linear ramp to `ramp_angle` at
+// load W. Thesis set-up (the default, halves = 2): "a 1 kg vertical load is applied equally and in
+// opposite directions to each bearing half": two opposite bore halves (lower, upper) are each pressed
+// onto the shaft with W, so there are two conformal contacts, each with its own pressure, wear and
+// friction-law state; the shaft sees the sum of their friction torques (and the net radial force
+// cancels). halves = 1 is the single-contact model (one bore pressed with W). The drive end follows a prescribed rotation (linear ramp to `ramp_angle` at
 // `ramp_time`, then an optional constant speed); it turns the journal through a torsional
 // coupling (stiffness k, damping c), so the resisting torque of the contact is finite:
 //   J dw/dt = T_c - T_f,   T_c = k (theta_drive - theta) + c (w_drive - w),   ds/dt = R |w|
-//   stick: w = 0, T_f = T_c        while |T_c| < mu_static(R) N R
-//   slip:  T_f = sign(w) mu(s, R|w|, R) N R,   N = integral of the contact pressure (>= W)
+//   stick: w = 0, T_f = T_c        while |T_c| < sum_h mu_static(R_h) N_h R
+//   slip:  T_f = sign(w) sum_h mu(s, R|w|, R_h) N_h R,   N_h = integral of half h's contact pressure (>= W)
 // The shaft lags the prescribed drive angle by the coupling wind-up |T_c| / k <= mu_static N R / k.
-// CVODE integrates (theta, w, s, R) (R: the friction law's state, feedback roughness) with break-away / re-stick events (root finding). Between wear
+// CVODE integrates (theta, w, s, R_h...) (R_h: half h's friction-law state, feedback roughness) with break-away / re-stick events (root finding). Between wear
 // updates the pressure is frozen; a wear update (root s = s_next) applies Archard wear
 // dw_i = (k/H) p_i ds to the bore and re-solves the conformal contact (conformal_contact.h).
 // The wear step ds is a fraction of ArchardWear::stable_slip_step(k_c), or fixed if asked.
@@ -24,9 +28,15 @@
 
 namespace runin::continuum {
 
+// Torsional stiffness of a solid round shaft between the drive and the bearing:
+//   k = G J / L,   G = E / (2 (1 + nu)),   J = pi d^4 / 32   (N m/rad).
+double shaft_torsional_stiffness(double diameter, double length, double youngs_modulus, double poisson_ratio);
+
 struct JournalBearingParameters {
   BoreGeometry bore;
-  double load = 0.0;                 // N, radial load W on the journal
+  double load = 0.0;                 // N, radial load W pressing each bearing half onto the journal
+  int halves = 2;                    // 2: two opposite bearing halves (thesis ch. 5); 1: one contact
+  double second_half_load = 0.0;     // N, load on the upper half; 0: = load (the thesis's symmetric set-up)
   double ramp_angle = 1.0;           // rad, drive rotation reached at ramp_time (linear from 0)
   double ramp_time = 2.0;            // s
   double run_speed = 0.0;            // rad/s of the drive after the ramp (0: drive stops)
@@ -38,10 +48,23 @@ struct JournalBearingParameters {
   tribo::ArchardForm archard_form = tribo::ArchardForm::plain;
 
   void validate() const;  // throws std::invalid_argument naming the field
+  double half_load(int half) const { return half == 1 && second_half_load > 0.0 ? second_half_load : load; }
   double drive_speed(double t) const;
   double drive_angle(double t) const;
 };
 
+// One bearing half's share of a sample (lower: index 0, upper: index 1).
+struct JournalBearingHalfSample {
+  double friction_torque = 0.0;   // N m; in stick the total in proportion to the halves' static limits
+  double normal_force = 0.0;      // N, integral of this half's pressure
+  double mu = 0.0;                // friction_torque / (normal_force R)
+  double roughness = 0.0;         // this half's friction-law state
+  double wear_volume = 0.0;       // m^3, this half's bore
+  double contact_half_angle = 0.0;  // rad
+  double peak_pressure = 0.0, mean_pressure = 0.0;  // Pa
+};
+
+// Totals over the bearing halves unless noted.
 struct JournalBearingSample {
   double t = 0.0;
   double drive_angle = 0.0, drive_speed = 0.0, journal_speed = 0.0;  // rad, rad/s, rad/s
@@ -50,19 +73,22 @@ struct JournalBearingSample {
   double friction_force = 0.0;    // N, friction_torque / R
   double normal_force = 0.0;      // N, integral of the pressure over the contact
   double mu = 0.0;                // mobilised F / N (stick: below mu_static)
-  double mu_law = 0.0;            // law value at s without the speed term
-  double roughness = 0.0;         // friction-law state R (feedback model), 0 without one
+  double mu_law = 0.0;            // law value at s without the speed term (lower half's state)
+  double roughness = 0.0;         // friction-law state R (feedback model) of the lower half, 0 without one
   double sliding_speed = 0.0;     // m/s, R w
   double distance = 0.0;          // m, sliding distance s
   double wear_volume = 0.0;       // m^3, bore
-  double contact_half_angle = 0.0;  // rad
-  double peak_pressure = 0.0, mean_pressure = 0.0;  // Pa
+  double contact_half_angle = 0.0;  // rad, largest of the halves
+  double peak_pressure = 0.0, mean_pressure = 0.0;  // Pa; peak: largest of the halves, mean: over all loaded panels
   ContactState state = ContactState::Stick;
+  int halves = 1;
+  JournalBearingHalfSample half[2];  // [0] lower, [1] upper (only with halves = 2)
 };
 
 struct JournalBearingFrame {
   double t = 0.0;
-  std::vector<double> pressure, wear_depth;  // per arc node
+  std::vector<double> pressure, wear_depth;  // per arc node, lower half
+  std::vector<double> upper_pressure, upper_wear_depth;  // upper half (empty with one half)
 };
 
 struct JournalBearingRun {
@@ -91,7 +117,7 @@ class JournalBearingSystem {
   const SlidingFriction &friction() const { return friction_; }
   const ConformalContact &contact() const { return contact_; }
   const tribo::ArchardWear &wear_law() const { return wear_; }
-  double load_per_length() const { return p_.load / p_.bore.axial_width; }
+  double load_per_length(int half = 0) const { return p_.half_load(half) / p_.bore.axial_width; }
 
  private:
   JournalBearingParameters p_;
@@ -108,7 +134,7 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
                               const JournalBearingObserver &observer,
                               const JournalBearingFrameObserver &frames = nullptr);
 
-// Explicit Archard wear of the bore under a fixed load, without dynamics: `steps` updates of
+// Explicit Archard wear of the (lower half's) bore under a fixed load, without dynamics: `steps` updates of
 // slip `ds` each (the pressure re-solved after every update). Returns the pressures after
 // each update. Used for the wear-step stability study and the wear benchmark.
 struct WearHistory {

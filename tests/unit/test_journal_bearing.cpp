@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "continuum/journal_bearing.h"
@@ -66,19 +68,112 @@ int extrema(const std::vector<double> &p) {
 }  // namespace
 
 TEST(JournalBearing, BreakAwayWhenTheCouplingTorqueReachesTheStaticLimit) {
-  // Stick: T_c = k w_d t + c w_d, so t_b = (mu_s N R - c w_d) / (k w_d), N the pressure integral.
-  const auto p = thesis_bearing();
-  const auto r = run(p, SlidingFriction::static_kinetic(0.95, 0.76), 1.0);
+  // Stick: T_c = k w_d t + c w_d, so t_b = (mu_s N R - c w_d) / (k w_d), N the pressure integral
+  // (summed over both bearing halves with two). Both readings, and the geometric drive stiffness G J / L
+  // with a damping ratio low enough for the damper torque c w_d to stay below mu_s N R.
+  const double shaft_k = shaft_torsional_stiffness(25e-3, 0.2, 200e9, 0.29);
+  for (auto [halves, k, zeta] : {std::tuple{1, 0.5, 0.3}, std::tuple{2, 0.5, 0.3}, std::tuple{2, shaft_k, 0.05}}) {
+    auto p = thesis_bearing(k, zeta);
+    p.halves = halves;
+    const auto r = run(p, SlidingFriction::static_kinetic(0.95, 0.76), 1.0);
+    ASSERT_TRUE(r.report.ok()) << r.report.message;
+    const double n = r.samples.front().normal_force, wd = p.ramp_angle / p.ramp_time;
+    const double expected = (0.95 * n * p.bore.shaft_radius - p.coupling_damping * wd) / (p.coupling_stiffness * wd);
+    ASSERT_GT(expected, 0.0);
+    ASSERT_FALSE(r.report.breakaway_times.empty());
+    EXPECT_NEAR(r.report.breakaway_times.front(), expected, 1e-6 * expected) << halves << " halves, k " << k;
+    const auto at_breakaway = std::find_if(r.samples.begin(), r.samples.end(), [](const auto &s) {
+      return s.state == ContactState::Slip;
+    });
+    ASSERT_NE(at_breakaway, r.samples.begin());
+    EXPECT_NEAR((at_breakaway - 1)->friction_force, 0.95 * n, 1e-6 * n);  // the stick sample at the event
+  }
+}
+
+TEST(JournalBearing, ShaftTorsionalStiffnessIsGJOverL) {
+  // By hand: G = 200e9 / (2 x 1.29) = 7.7519e10 Pa, J = pi 0.025^4 / 32 = 3.83495e-8 m^4,
+  // G J / L = 2972.83 N m^2 / 0.2 m = 14864.15 N m/rad (issue 14: "about 1.5e4 N m/rad for 25 x 200 mm").
+  EXPECT_NEAR(shaft_torsional_stiffness(25e-3, 0.2, 200e9, 0.29), 14864.15, 0.01);
+  // k ~ d^4 / L
+  EXPECT_NEAR(shaft_torsional_stiffness(50e-3, 0.4, 200e9, 0.29), 8.0 * 14864.15, 0.08);
+  EXPECT_THROW(shaft_torsional_stiffness(0.0, 0.2, 200e9, 0.29), std::invalid_argument);
+  EXPECT_THROW(shaft_torsional_stiffness(25e-3, -0.2, 200e9, 0.29), std::invalid_argument);
+  EXPECT_THROW(shaft_torsional_stiffness(25e-3, 0.2, 0.0, 0.29), std::invalid_argument);
+}
+
+TEST(JournalBearing, TwoSymmetricHalvesGiveTwiceOneContactsTorqueBeforeWear) {
+  // Same load W on each half, same bore: before the first wear update each half carries exactly the
+  // one-contact pressure, so N and the slip friction torque are twice the single contact's, and the
+  // static limit (the friction at break-away) too. Feedback law: each half's roughness state starts at
+  // R0 and stays equal. Compared in slip (T_f = mu N R does not depend on the speed here) and at break-away.
+  const runin::tribo::FeedbackModel law({0.04, 0.01, 1.0, 1.0, 125.0, 125.0}, runin::tribo::FeedbackKind::dry);
+  for (const auto &f : {SlidingFriction::constant(0.3), SlidingFriction::static_kinetic(0.95, 0.76),
+                        SlidingFriction::feedback(law, SlidingFriction::feedback_roughness_for(law, 0.55), true)}) {
+    auto p = thesis_bearing();
+    p.halves = 1;
+    const JournalBearingSystem one_system(p, f);
+    const double first_wear = 0.5 * one_system.wear_law().stable_slip_step(one_system.contact().contact_stiffness_per_area());
+    const auto one = run(p, f, 2.0);
+    p.halves = 2;
+    const auto two = run(p, f, 2.0);
+    ASSERT_TRUE(one.report.ok() && two.report.ok());
+    EXPECT_NEAR(two.samples.front().normal_force, 2.0 * one.samples.front().normal_force,
+                1e-10 * two.samples.front().normal_force);
+    EXPECT_NEAR(two.summary.start_friction_force, 2.0 * one.summary.start_friction_force,
+                1e-10 * two.summary.start_friction_force);
+    const auto slip_torques = [&](const Result &r) {  // (s, T_f) in slip before the first wear update
+      std::vector<std::pair<double, double>> out;
+      for (const auto &s : r.samples)
+        if (s.state == ContactState::Slip && s.distance < first_wear) out.push_back({s.distance, s.friction_torque});
+      return out;
+    };
+    const auto one_slip = slip_torques(one), two_slip = slip_torques(two);
+    ASSERT_GT(two_slip.size(), 5u);
+    int compared = 0;
+    for (const auto &s : two.samples) {
+      if (s.state != ContactState::Slip || s.distance >= first_wear) continue;
+      EXPECT_NEAR(s.half[0].friction_torque, s.half[1].friction_torque, 1e-12 * std::abs(s.friction_torque));
+      EXPECT_EQ(s.half[0].peak_pressure, s.half[1].peak_pressure);
+      // The one-contact torque at this sliding distance: constant and static/kinetic laws do not depend
+      // on s; the feedback law through R(s), the same function of s in both runs: take a matching sample.
+      if (f.initial_state() == 0.0) {
+        EXPECT_NEAR(s.friction_torque, 2.0 * one_slip.front().second, 1e-10 * std::abs(s.friction_torque));
+        ++compared;
+      }
+    }
+    if (f.initial_state() != 0.0) {
+      // Feedback: mu(R(s)) is integrated by CVODE in each run (equal to rtol only across runs), so within
+      // the two-halves run: T_f = 2 mu_half N_one R, N_one the single contact's pressure integral.
+      const double n1 = one.samples.front().normal_force;
+      for (const auto &s : two.samples)
+        if (s.state == ContactState::Slip && s.distance < first_wear) {
+          const double mu_two = s.friction_torque / (s.normal_force * p.bore.shaft_radius);
+          EXPECT_NEAR(s.half[0].mu, mu_two, 1e-12);
+          EXPECT_NEAR(s.friction_torque, 2.0 * s.half[0].mu * n1 * p.bore.shaft_radius, 1e-10 * std::abs(s.friction_torque));
+          ++compared;
+        }
+    }
+    EXPECT_GT(compared, 5);
+  }
+}
+
+TEST(JournalBearing, UnequalHalvesKeepTheirOwnPressureAndWear) {
+  // The upper half pressed with 2 W: its own contact (wider arc, higher peak), its own wear
+  // V_h = (k/H) int N_h ds, and the shaft sees the sum of the two friction torques.
+  auto p = thesis_bearing(0.5, 0.7);
+  p.run_speed = 2.0;
+  p.second_half_load = 2.0 * p.load;
+  const auto r = run(p, SlidingFriction::constant(0.5), 4.0, 1e-2);
   ASSERT_TRUE(r.report.ok()) << r.report.message;
-  const double n = r.samples.front().normal_force, wd = p.ramp_angle / p.ramp_time;
-  const double expected = (0.95 * n * p.bore.shaft_radius - p.coupling_damping * wd) / (p.coupling_stiffness * wd);
-  ASSERT_FALSE(r.report.breakaway_times.empty());
-  EXPECT_NEAR(r.report.breakaway_times.front(), expected, 1e-6 * expected);
-  const auto at_breakaway = std::find_if(r.samples.begin(), r.samples.end(), [](const auto &s) {
-    return s.state == ContactState::Slip;
-  });
-  ASSERT_NE(at_breakaway, r.samples.begin());
-  EXPECT_NEAR((at_breakaway - 1)->friction_force, 0.95 * n, 1e-6 * n);  // the stick sample at the event
+  ASSERT_GT(r.report.wear_updates, 10);
+  const auto &last = r.samples.back();
+  EXPECT_GT(last.half[1].peak_pressure, last.half[0].peak_pressure);
+  EXPECT_GT(r.samples.front().half[1].contact_half_angle, r.samples.front().half[0].contact_half_angle);
+  EXPECT_NEAR(last.half[1].wear_volume / last.half[0].wear_volume, last.half[1].normal_force / last.half[0].normal_force,
+              0.01);
+  EXPECT_NEAR(last.friction_torque, last.half[0].friction_torque + last.half[1].friction_torque,
+              1e-12 * last.friction_torque);
+  EXPECT_NEAR(last.wear_volume, last.half[0].wear_volume + last.half[1].wear_volume, 1e-12 * last.wear_volume);
 }
 
 TEST(JournalBearing, SteadySlidingBalancesTheCouplingAndFollowsTheLaw) {
