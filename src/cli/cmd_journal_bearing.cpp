@@ -202,9 +202,10 @@ int run(const Options &o, const PlotRunner &plot) {
     for (std::size_t k = 0; k < sweep.size(); ++k) {
       for (const auto &s : sweep[k].samples) t += fmt::format("{:.12g},", c.sweep_mu0[k]) + row(s) + "\n";
       const auto &m = sweep[k].summary;
+      // an empty cell: never broke away / not steady within the run (not a number the CSV check would refuse)
       summary += fmt::format("{:.12g},{:.12g},{:.12g},{},{},{:.12g},{:.12g}\n", c.sweep_mu0[k], m.peak_friction_force,
-                             m.peak_time, m.breakaway_time < 0 ? "nan" : fmt::format("{:.12g}", m.breakaway_time),
-                             m.steady_time < 0 ? "nan" : fmt::format("{:.12g}", m.steady_time), m.steady_mu,
+                             m.peak_time, m.breakaway_time < 0 ? "" : fmt::format("{:.12g}", m.breakaway_time),
+                             m.steady_time < 0 ? "" : fmt::format("{:.12g}", m.steady_time), m.steady_mu,
                              m.wear_volume);
     }
     out.write("journal_bearing_sweep.csv", t);

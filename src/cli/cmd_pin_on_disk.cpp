@@ -204,9 +204,11 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
         curves += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", run.mu0, r.s.t,
                               r.s.friction_force, r.s.mu, r.s.speed, r.s.distance, r.wear_volume);
       const auto &s = run.curve.summary;
-      table += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", run.mu0, run.torque,
-                           s.breakaway_time, s.peak_friction_force, s.peak_time, s.steady_time, s.steady_mu,
-                           run.curve.rows.back().wear_volume);
+      // an empty cell: never broke away / not steady within the run (the summary's -1 is no time)
+      const auto time_or_empty = [](double t) { return t < 0.0 ? std::string() : fmt::format("{:.12g}", t); };
+      table += fmt::format("{:.12g},{:.12g},{},{:.12g},{:.12g},{},{:.12g},{:.12g}\n", run.mu0, run.torque,
+                           time_or_empty(s.breakaway_time), s.peak_friction_force, s.peak_time,
+                           time_or_empty(s.steady_time), s.steady_mu, run.curve.rows.back().wear_volume);
     }
     out.write("pin_on_disk_mu0.csv", curves);
     out.write("pin_on_disk_mu0_summary.csv", table);

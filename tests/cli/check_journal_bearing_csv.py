@@ -5,6 +5,7 @@ usage: check_journal_bearing_csv.py DIR --t-end T [--halves 1|2] [--symmetric] [
                                     [--claim3] [--archard K_OVER_H] [--vtk N] [--png]
 """
 import argparse
+import math
 import os
 import re
 import sys
@@ -32,6 +33,8 @@ def main():
     parser.add_argument("--symmetric", action="store_true", help="both halves equal at every row (1e-12)")
     parser.add_argument("--mu-static", type=float, help="friction force at break-away = mu_static N (rel 1e-6)")
     parser.add_argument("--sweep", type=int, help="number of mu0 values")
+    parser.add_argument("--unsettled", type=int, default=0,
+                        help="sweep rows not steady within the run: an empty steady_time_s cell (default 0)")
     parser.add_argument("--claims", type=float, nargs=3, metavar=("PEAK", "TIME", "START"),
                         help="thesis claims 2 and 3 on the sweep curves with these relative margins "
                              "(tests/cli/thesis_claims.py)")
@@ -111,6 +114,11 @@ def main():
         for lower, higher in zip(table, table[1:]):
             if not (higher[3] > lower[3] or higher[3] == lower[3] == 0.0):
                 problems.append(f"break-away not later at mu0 {higher[0]} than at {lower[0]}")
+        unsettled = sum(1 for r in table if math.isnan(r[4]))
+        if unsettled != args.unsettled:
+            problems.append(f"{unsettled} sweep rows without a steady time, expected {args.unsettled}")
+        if any(r[4] < 0.0 for r in table if not math.isnan(r[4])):
+            problems.append("a steady time is negative (not reached is an empty cell)")
         print("sweep break-away times (s):", ", ".join(f"mu0 {r[0]:g}: {r[3]:.6g}" for r in table))
         if args.claims:
             sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))

@@ -7,6 +7,7 @@ usage: check_pin_on_disk_csv.py DIR --t-end T [--breakaway T_B] [--final-speed V
 """
 import argparse
 import csv
+import math
 import os
 import sys
 
@@ -83,7 +84,7 @@ def main():
             reader = csv.reader(f)
             if next(reader) != SWEEP:
                 problems.append("sweep summary header")
-            table = sorted([[float(x) for x in row] for row in reader])
+            table = sorted([[float(x) if x != "" else math.nan for x in row] for row in reader])
         if len(table) != args.sweep:
             problems.append(f"{len(table)} sweep rows, expected {args.sweep}")
         # Higher mu0 -> higher peak friction force (by > 20 %) and a later (or equal: speed drive at

@@ -12,13 +12,14 @@ def close(a, b, rel):
 
 
 def read_csv(path, header=None):
-    """Rows of a numeric CSV as lists of floats; exits if `header` is given and the file's differs."""
+    """Rows of a numeric CSV as lists of floats (an empty cell, "not reached" in a sweep summary, reads as
+    nan); exits if `header` is given and the file's differs."""
     with open(path, newline="") as f:
         reader = csv.reader(f)
         got = next(reader)
         if header is not None and got != header:
             sys.exit(f"{path}: header {got} != {header}")
-        return [[float(x) for x in row] for row in reader]
+        return [[float(x) if x != "" else math.nan for x in row] for row in reader]
 
 
 def time_series_problems(rows, t_end, min_rows=100):
