@@ -13,6 +13,7 @@
 
 #include "cli/case_file.h"
 #include "cli/journal_bearing_case.h"
+#include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/journal_bearing.h"
 #ifdef RUNIN_HAVE_VTK
@@ -44,6 +45,10 @@ struct Curve {
   continuum::JournalBearingReport report;
   continuum::JournalBearingSummary summary;
 };
+
+RunSummary key_numbers(const continuum::JournalBearingSummary &s) {
+  return {s.peak_friction_force, s.peak_time, s.breakaway_time, s.steady_time, s.steady_mu, s.wear_volume};
+}
 
 double wear_step(const JournalBearingCase &c, const continuum::JournalBearingSystem &system) {
   if (c.run.fixed_wear_step > 0.0) return c.run.fixed_wear_step;
@@ -187,26 +192,23 @@ int run(const Options &o, const PlotRunner &plot) {
   }
 
   // Everything is computed; the output set is staged and moved in only when complete.
-  StagedOutput out(o.output_dir, {"journal_bearing.csv", "journal_bearing.png", "journal_bearing_sweep.csv",
+  StagedOutput out(o.output_dir, {"journal_bearing.csv", "journal_bearing_summary.csv", "journal_bearing.png", "journal_bearing_sweep.csv",
                                   "journal_bearing_sweep_summary.csv", "journal_bearing_mu0.png", "vtk/bore.pvd",
                                   "vtk/bore_*.vts", "vtk/bore_upper.pvd"});
   const int halves = c.parameters.halves;
   std::string text = columns(halves) + "\n";
   for (const auto &s : main_curve.samples) text += row(s) + "\n";
   out.write("journal_bearing.csv", text);
-  std::vector<std::string> written = {"journal_bearing.csv"};
+  out.write("journal_bearing_summary.csv",
+            std::string(kRunSummaryHeader) + "\n" + run_summary_row(key_numbers(main_curve.summary)) + "\n");
+  std::vector<std::string> written = {"journal_bearing.csv", "journal_bearing_summary.csv"};
 
   if (!sweep.empty()) {
     std::string t = "mu0," + columns(halves) + "\n";
-    std::string summary = "mu0,peak_friction_force_N,peak_time_s,breakaway_time_s,steady_time_s,steady_mu,wear_volume_m3\n";
+    std::string summary = std::string("mu0,") + kRunSummaryHeader + "\n";
     for (std::size_t k = 0; k < sweep.size(); ++k) {
       for (const auto &s : sweep[k].samples) t += fmt::format("{:.12g},", c.sweep_mu0[k]) + row(s) + "\n";
-      const auto &m = sweep[k].summary;
-      // an empty cell: never broke away / not steady within the run (not a number the CSV check would refuse)
-      summary += fmt::format("{:.12g},{:.12g},{:.12g},{},{},{:.12g},{:.12g}\n", c.sweep_mu0[k], m.peak_friction_force,
-                             m.peak_time, m.breakaway_time < 0 ? "" : fmt::format("{:.12g}", m.breakaway_time),
-                             m.steady_time < 0 ? "" : fmt::format("{:.12g}", m.steady_time), m.steady_mu,
-                             m.wear_volume);
+      summary += fmt::format("{:.12g},", c.sweep_mu0[k]) + run_summary_row(key_numbers(sweep[k].summary)) + "\n";
     }
     out.write("journal_bearing_sweep.csv", t);
     out.write("journal_bearing_sweep_summary.csv", summary);

@@ -1,0 +1,269 @@
+#include "cli/cmd_sweep.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/core.h>
+#include <toml++/toml.h>
+
+#include "cli/case_file.h"
+#include "cli/case_reader.h"
+#include "cli/run_summary.h"
+#include "cli/staged_file.h"
+
+extern char **environ;
+
+namespace runin::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Element {
+  const char *command, *prefix;
+  std::vector<const char *> free_parameters;  // swept when no --key is given and the case sets them
+};
+
+// The parameters the thesis does not fix and RunIn chose (doc/validation.md): coupling stiffness and damping,
+// the run-in law's relaxation (feedback A and B: length 1 / (2 A K1)), and the geometry that sets a stiffness
+// computed from it (shaft length for the journal bearing's G J / L).
+const std::vector<Element> &elements() {
+  static const std::vector<Element> list = {
+      {"pin-on-disk", "pin_on_disk", {"friction.A", "friction.B", "pin.mass"}},
+      {"journal-bearing", "journal_bearing",
+       {"drive.stiffness", "shaft.length", "drive.damping_ratio", "friction.A", "friction.B"}},
+      {"piston-ring", "piston_ring",
+       {"ring.land_stiffness", "ring.land_damping_ratio", "friction.A", "friction.B"}},
+  };
+  return list;
+}
+
+struct Options {
+  std::string element, case_path, output_dir;
+  std::vector<std::string> keys;
+  std::optional<std::string> law_path;
+  double span = 10.0;
+  int points = 3;
+  bool no_plot = false;
+};
+
+struct Run {
+  std::string key;  // "" for the base case
+  double factor = 1.0, value = 0.0;
+  std::string case_name;
+  std::optional<RunSummary> summary;
+  std::string problem;  // why the run failed
+  double seconds = 0.0;
+};
+
+std::optional<double> number_at(const toml::table &root, const std::string &key) {
+  const toml::node *node = root.at_path(key).node();
+  if (!node) return std::nullopt;
+  if (const auto *v = node->as_floating_point()) return v->get();
+  return std::nullopt;
+}
+
+void set_number(toml::table &root, const std::string &key, double value) {
+  const auto dot = key.rfind('.');
+  toml::table *table = dot == std::string::npos ? &root : root.at_path(key.substr(0, dot)).as_table();
+  table->insert_or_assign(dot == std::string::npos ? key : key.substr(dot + 1), value);
+}
+
+std::string to_toml(const toml::table &root) {
+  std::ostringstream text;
+  text << toml::toml_formatter(root) << "\n";
+  return text.str();
+}
+
+// The cell as a time: empty = not reached (-1, as in the element's own summary).
+double parse_time(const std::string &cell) { return cell.empty() ? -1.0 : std::stod(cell); }
+
+RunSummary read_summary(const fs::path &file) {
+  std::ifstream in(file);
+  std::string header, row;
+  if (!std::getline(in, header) || header != kRunSummaryHeader || !std::getline(in, row))
+    throw std::runtime_error("no run summary in " + file.string());
+  std::vector<std::string> cells;
+  std::stringstream split(row);
+  for (std::string cell; std::getline(split, cell, ',');) cells.push_back(cell);
+  if (row.back() == ',') cells.emplace_back();
+  if (cells.size() != 6) throw std::runtime_error("malformed run summary in " + file.string());
+  return {std::stod(cells[0]), std::stod(cells[1]), parse_time(cells[2]), parse_time(cells[3]), std::stod(cells[4]),
+          std::stod(cells[5])};
+}
+
+// This runin, as a child process on one case file; its stderr goes to `log`. Returns the exit status.
+int run_element(const Options &o, const fs::path &case_file, const fs::path &run_dir, const fs::path &log) {
+  const std::string self = fs::read_symlink("/proc/self/exe").string();
+  std::vector<std::string> args = {self, o.element, case_file.string(), "--output-dir", run_dir.string(), "--no-plot"};
+  if (o.law_path) args.insert(args.end(), {"--law", *o.law_path});
+  std::vector<char *> argv;
+  for (auto &a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, self.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) throw std::runtime_error("cannot start " + self);
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) throw std::runtime_error("lost the run of " + case_file.string());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string last_line(const fs::path &file) {
+  std::ifstream in(file);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
+}
+
+std::string csv_quote(const std::string &text) {
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+int run_sweep(const Options &o, const PlotRunner &plot) {
+  const Element *element = nullptr;
+  for (const auto &e : elements())
+    if (o.element == e.command) element = &e;
+  if (!element) throw InputError("sweep: unknown element '" + o.element + "'");
+  if (!(o.span > 1.0) || !std::isfinite(o.span)) throw InputError("--span: must be a finite number > 1");
+  if (o.points < 3 || o.points > 9 || o.points % 2 == 0) throw InputError("--points: must be odd, 3 to 9");
+
+  toml::table base = parse_toml(o.case_path);
+  base.erase("sweep");  // one run per case file: the element's own mu0 sweep is not part of this study
+  std::vector<std::string> keys = o.keys;
+  if (keys.empty())
+    for (const char *key : element->free_parameters)
+      if (number_at(base, key)) keys.emplace_back(key);
+  if (keys.empty())
+    throw InputError(fmt::format("{}: sets none of the {} free parameters; name keys with --key", o.case_path,
+                                 element->command));
+  for (const auto &key : keys) {
+    const toml::node *node = base.at_path(key).node();
+    if (!node)
+      throw InputError(fmt::format("{}: key '{}': not set in the case file; a sweep varies a value the case sets",
+                                   o.case_path, key));
+    if (!node->is_floating_point())
+      throw InputError(fmt::format("{}: key '{}': is {}, a sweep varies a real number (write it with a decimal point)",
+                                   o.case_path, key, type_name(*node)));
+    if (!(*number_at(base, key) > 0.0))
+      throw InputError(fmt::format("{}: key '{}': a sweep over decades needs a positive value", o.case_path, key));
+  }
+
+  std::vector<double> factors;  // log-spaced over one span, centred on 1
+  for (int i = 0; i < o.points; ++i)
+    factors.push_back(std::pow(o.span, (static_cast<double>(i) / (o.points - 1)) - 0.5));
+
+  StagedOutput out(o.output_dir, {"sweep.csv", "sweep_tornado.png", "cases/*.toml"});
+  std::vector<Run> runs;
+  runs.push_back({"", 1.0, 0.0, "cases/base.toml", std::nullopt, "", 0.0});
+  for (const auto &key : keys)
+    for (int i = 0; i < o.points; ++i)
+      if (i != o.points / 2)
+        runs.push_back({key, factors[i], *number_at(base, key) * factors[i], fmt::format("cases/{}_{}.toml", key, i),
+                        std::nullopt, "", 0.0});
+
+  // The base case first: it validates every key, so a bad case stops here with the element's own message.
+  for (std::size_t n = 0; n < runs.size(); ++n) {
+    Run &r = runs[n];
+    toml::table variant = base;
+    if (!r.key.empty()) set_number(variant, r.key, r.value);
+    out.write(r.case_name, to_toml(variant));
+    const fs::path run_dir = out.scratch(fmt::format("runs/{}", n)), log = out.scratch(fmt::format("runs/{}.log", n));
+    fs::create_directories(run_dir.parent_path());
+    const auto start = std::chrono::steady_clock::now();
+    const int status = run_element(o, out.file(r.case_name), run_dir, log);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (status == 0) {
+      r.summary = read_summary(run_dir / (std::string(element->prefix) + "_summary.csv"));
+    } else {
+      r.problem = last_line(log);
+      if (r.key.empty()) {
+        if (status == 2) throw InputError("sweep: the base case: " + r.problem);
+        throw std::runtime_error("sweep: the base case failed: " + r.problem);
+      }
+    }
+    fmt::print("runin sweep: [{}/{}] {} {} ({:.2f} s)\n", n + 1, runs.size(),
+               r.key.empty() ? std::string("base case") : fmt::format("{} = {:.6g} (x {:.4g})", r.key, r.value, r.factor),
+               r.summary ? "ok" : "FAILED: " + r.problem, r.seconds);
+    std::fflush(stdout);
+  }
+
+  std::string csv = std::string("key,factor,value,") + kRunSummaryHeader + ",case,status\n";
+  int failed = 0;
+  auto add_row = [&](const std::string &key, double factor, double value, const Run &r) {
+    csv += fmt::format("{},{:.12g},{:.12g},", key, factor, value);
+    csv += r.summary ? run_summary_row(*r.summary) : std::string(",,,,,");
+    csv += fmt::format(",{},{}\n", r.case_name, r.summary ? std::string("ok") : csv_quote("failed: " + r.problem));
+  };
+  for (const auto &key : keys) {
+    for (int i = 0; i < o.points; ++i) {
+      if (i == o.points / 2) {
+        add_row(key, 1.0, *number_at(base, key), runs.front());
+        continue;
+      }
+      for (const auto &r : runs)
+        if (r.key == key && r.factor == factors[i]) {
+          add_row(key, r.factor, r.value, r);
+          failed += !r.summary;
+        }
+    }
+  }
+  out.write("sweep.csv", csv);
+  std::vector<std::string> written = {"sweep.csv"};
+  if (!o.no_plot) {
+    plot("plot_sweep.py", {out.file("sweep.csv").string(), out.file("sweep_tornado.png").string(), "--title",
+                           o.element + ": " + fs::path(o.case_path).filename().string()});
+    written.push_back("sweep_tornado.png");
+  }
+  out.commit();
+  fmt::print("runin sweep: {} keys x {} values of {} ({} runs, {} failed); each row's case file reruns it directly\n",
+             keys.size(), o.points, o.case_path, runs.size(), failed);
+  fmt::print("  wrote            ");
+  for (std::size_t i = 0; i < written.size(); ++i) fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
+  fmt::print(", {}\n", out.destination("cases").string());
+  return failed ? 1 : 0;
+}
+
+}  // namespace
+
+Subcommand add_sweep_command(CLI::App &app, PlotRunner plot) {
+  auto o = std::make_shared<Options>();
+  auto *cmd = app.add_subcommand(
+      "sweep", "Sensitivity of peak friction, break-away and steady time to each free parameter (a decade each)");
+  std::vector<std::string> names;
+  for (const auto &e : elements()) names.emplace_back(e.command);
+  cmd->add_option("element", o->element, "machine element")->required()->check(CLI::IsMember(names));
+  cmd->add_option("case", o->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
+  cmd->add_option("--output-dir", o->output_dir, "directory for sweep.csv, sweep_tornado.png and cases/")
+      ->required()
+      ->check(non_empty_path());
+  cmd->add_option("--key", o->keys,
+                  "a real-valued case key to vary (repeatable); default: the element's free parameters the case sets");
+  cmd->add_option("--span", o->span, "ratio of the largest to the smallest value of each key")->capture_default_str();
+  cmd->add_option("--points", o->points, "values per key, log-spaced, the case's own in the middle (odd, 3-9)")
+      ->capture_default_str();
+  cmd->add_option("--law", o->law_path, "law file from fit-law, passed to every run");
+  cmd->add_flag("--no-plot", o->no_plot, "write the CSV and case files only");
+  return {cmd, [o, plot] { return run_sweep(*o, plot); }};
+}
+
+}  // namespace runin::cli
