@@ -130,7 +130,12 @@ LineContactResult solve_line_contact(const Eigen::MatrixXd &compliance, const Ei
       }
     }
     if (removed) continue;
-    const Eigen::VectorXd gap = rigid_gap - e * direction + compliance * p;
+    // The loaded panels only (the contiguous block of a cached solve; the full product otherwise,
+    // which keeps the bore arc's round-off as it was).
+    const Eigen::VectorXd gap =
+        block ? Eigen::VectorXd(rigid_gap - e * direction +
+                                compliance.middleCols(index.front(), m) * p.segment(index.front(), m))
+              : Eigen::VectorXd(rigid_gap - e * direction + compliance * p);
     bool added = false;
     for (int i = 0; i < n; ++i)
       if (!active[i] && gap[i] < -tolerance) {
