@@ -65,6 +65,13 @@ const Eigen::LLT<Eigen::MatrixXd> *ToeplitzBlockCache::get(const Eigen::MatrixXd
   return slot.get();
 }
 
+const Eigen::VectorXd &ToeplitzBlockCache::ones_solution(int size) {
+  if (static_cast<int>(ones_.size()) < size) ones_.resize(size);
+  auto &v = ones_[size - 1];
+  if (v.size() != size) v = llt_[size - 1]->solve(Eigen::VectorXd::Ones(size));
+  return v;
+}
+
 LineContactResult solve_line_contact(const Eigen::MatrixXd &compliance, const Eigen::VectorXd &rigid_gap,
                                      const Eigen::VectorXd &direction, double panel_length, double load_per_length,
                                      double tolerance, std::vector<char> &active, ToeplitzBlockCache *cache) {
@@ -102,7 +109,10 @@ LineContactResult solve_line_contact(const Eigen::MatrixXd &compliance, const Ei
     const Eigen::LLT<Eigen::MatrixXd> *block = cache && contiguous ? cache->get(compliance, m) : nullptr;
     if (block) {
       u = block->solve(b);
-      v = block->solve(c);
+      if ((c.array() == 1.0).all())
+        v = cache->ones_solution(m);  // the flat ring face: the same for every block of this size
+      else
+        v = block->solve(c);
     } else {
       Eigen::MatrixXd kaa(m, m);
       for (int a = 0; a < m; ++a)
@@ -130,18 +140,27 @@ LineContactResult solve_line_contact(const Eigen::MatrixXd &compliance, const Ei
       }
     }
     if (removed) continue;
-    // The loaded panels only (the contiguous block of a cached solve; the full product otherwise,
-    // which keeps the bore arc's round-off as it was).
-    const Eigen::VectorXd gap =
-        block ? Eigen::VectorXd(rigid_gap - e * direction +
-                                compliance.middleCols(index.front(), m) * p.segment(index.front(), m))
-              : Eigen::VectorXd(rigid_gap - e * direction + compliance * p);
     bool added = false;
-    for (int i = 0; i < n; ++i)
-      if (!active[i] && gap[i] < -tolerance) {
-        active[i] = 1;
-        added = true;
+    if (block) {
+      // Gaps of the unloaded panels only, from the loaded block (K symmetric: column i is row i).
+      const int first = index.front();
+      for (int i = 0; i < n; ++i) {
+        if (active[i]) continue;
+        const double gap =
+            rigid_gap[i] - e * direction[i] + compliance.col(i).segment(first, m).dot(p.segment(first, m));
+        if (gap < -tolerance) {
+          active[i] = 1;
+          added = true;
+        }
       }
+    } else {  // the full product keeps the bore arc's round-off as it was
+      const Eigen::VectorXd gap = rigid_gap - e * direction + compliance * p;
+      for (int i = 0; i < n; ++i)
+        if (!active[i] && gap[i] < -tolerance) {
+          active[i] = 1;
+          added = true;
+        }
+    }
     if (!added) {
       result.converged = true;
       break;

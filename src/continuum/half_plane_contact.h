@@ -37,9 +37,12 @@ double smallest_eigenvalue_bound(const Eigen::MatrixXd &compliance);
 class ToeplitzBlockCache {
  public:
   const Eigen::LLT<Eigen::MatrixXd> *get(const Eigen::MatrixXd &compliance, int size);
+  // K_m^-1 (1, ..., 1) of the block of that size (after get() succeeded for it).
+  const Eigen::VectorXd &ones_solution(int size);
 
  private:
   std::vector<std::unique_ptr<Eigen::LLT<Eigen::MatrixXd>>> llt_;
+  std::vector<Eigen::VectorXd> ones_;
 };
 
 struct LineContactResult {
