@@ -524,9 +524,9 @@ int run(const Options &o, const PlotRunner &plot) {
                                 rp.land_stiffness, ring.land->land, ring.land->ring, 1e3 * ring.groove_diameter,
                                 1e3 * ring.land_width)
                   : fmt::format("land k = {:.4g} N/m (set by hand)", rp.land_stiffness);
-    fmt::print("  ring {}{}W = {:.6g} N from {:.4g} MPa ring tension{}; m = {:.4g} kg, {}, zeta = {:g} ({:.4g} Hz); "
-               "at {:g} mm; crown {:g} um\n",
-               ring.name, pack ? "            " : "            ", rp.elastic_pressure * rp.contact_area(),
+    fmt::print("  ring {}            W = {:.6g} N from {:.4g} MPa ring tension{}; m = {:.4g} kg, {}, zeta = {:g} "
+               "({:.4g} Hz); at {:g} mm; crown {:g} um\n",
+               ring.name, rp.elastic_pressure * rp.contact_area(),
                1e-6 * rp.elastic_pressure, p.gas.empty() ? "" : " + gas table", rp.ring_mass, land,
                c.land_damping_ratio, natural, 1e3 * ring.position, 1e6 * ring.wear_settings.crown_height);
   }
