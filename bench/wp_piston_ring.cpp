@@ -244,6 +244,79 @@ int main(int argc, char **argv) {
     state.counters["updates"] = static_cast<double>(updates);
   }), 5);
 
+  // Issue 14: the thesis case as RunIn models it now (inputs/piston_ring.toml): two rings in grooves
+  // A and B with the land stiffness from the land and ring geometry (2.36e9 and 2.16e9 N/m), tensions
+  // 0.2 and 0.15 MPa, next to the former one-ring model (k = 1e7 N/m); CVODE BDF rtol 1e-8 / atol
+  // 1e-12 as the CLI, mu0 = 0.95, mu_k = 0.7 mu0. And the long wear pass above on the half-plane ring
+  // face (BEM, 64 cells as the long case), one ring and two rings sharing the liner (ring B 15 mm
+  // below A on the same trajectory, 0.75 of its load: timing only).
+  static std::vector<PistonRingParameters> pack;
+  {
+    const double grooves[2] = {0.0815, 0.0805}, tensions[2] = {0.2e6, 0.15e6};
+    for (int k = 0; k < 2; ++k) {
+      auto q = p;
+      q.land_stiffness = land_stiffness({0.1, grooves[k], 0.005, 0.01, 0.01, 66e9, 0.27}).total;
+      q.land_damping = 2.0 * 0.5 * std::sqrt(q.land_stiffness * q.ring_mass);
+      q.elastic_pressure = tensions[k];
+      pack.push_back(q);
+    }
+  }
+  auto thesis_run = [](const std::vector<PistonRingParameters> &rings) {
+    long steps = 0;
+    for (const auto &q : rings) {
+      const PistonRingSystem sys(q, SlidingFriction::static_kinetic(0.95, 0.665));
+      PistonRingRun run;
+      run.t_end = kEnd;
+      run.output_interval = 5e-4;  // as inputs/piston_ring.toml
+      run.integrator.rtol = 1e-8;
+      run.integrator.atol = 1e-12;
+      steps += simulate(sys, run, [](const PistonRingSample &) {}).steps;
+    }
+    return steps;
+  };
+  runin::bench::timed(benchmark::RegisterBenchmark("thesis/one_ring_k1e7", [thesis_run](benchmark::State &state) {
+    long steps = 0;
+    for (auto _ : state) steps = thesis_run({p});
+    state.counters["steps"] = static_cast<double>(steps);
+  }));
+  runin::bench::timed(benchmark::RegisterBenchmark("thesis/ring_pack_k_geometry", [thesis_run](benchmark::State &state) {
+    long steps = 0;
+    for (auto _ : state) steps = thesis_run(pack);
+    state.counters["steps"] = static_cast<double>(steps);
+  }));
+  static RingLinerWearSettings hs = ws;
+  hs.contact = FaceContact::HalfPlane;
+  hs.contact_modulus = 66e9 / (2.0 * (1.0 - 0.27 * 0.27));
+  hs.liner_begin -= 0.015;
+  auto half_plane_pass = [](int rings) {
+    std::vector<RingLinerWear> wear;
+    wear.reserve(rings);
+    for (int k = 0; k < rings; ++k) wear.emplace_back(hs, runin::tribo::ArchardWear(1e-3, 2e9));
+    for (int k = 1; k < rings; ++k) wear[k].share_liner(wear[0]);
+    for (std::size_t i = 1; i < samples.size(); ++i)
+      for (int k = 0; k < rings; ++k) {
+        const double offset = -0.015 * k, scale = k ? 0.75 : 1.0;
+        wear[k].slide(samples[i - 1].ring_position + offset, samples[i].ring_position + offset,
+                      scale * samples[i - 1].normal_load, scale * samples[i].normal_load);
+        wear[k].pressure(samples[i].ring_position + offset, scale * samples[i].normal_load);
+      }
+    long updates = 0;
+    for (const auto &w : wear) updates += w.updates();
+    return updates;
+  };
+  runin::bench::timed_once(benchmark::RegisterBenchmark("long/wear_pass_half_plane", [half_plane_pass](benchmark::State &state) {
+    if (samples.empty()) dynamics();
+    long updates = 0;
+    for (auto _ : state) updates = half_plane_pass(1);
+    state.counters["updates"] = static_cast<double>(updates);
+  }), 5);
+  runin::bench::timed_once(benchmark::RegisterBenchmark("long/wear_pass_half_plane_two_rings", [half_plane_pass](benchmark::State &state) {
+    if (samples.empty()) dynamics();
+    long updates = 0;
+    for (auto _ : state) updates = half_plane_pass(2);
+    state.counters["updates"] = static_cast<double>(updates);
+  }), 5);
+
   runin::bench::MedianReporter reporter;
   runin::bench::run_benchmarks(reporter);
 
@@ -278,6 +351,23 @@ int main(int argc, char **argv) {
     std::printf("long run-in: dynamics (100 revolutions, %zu samples) %.3f s; wear %ld updates on 512 liner cells "
                 "%.3f s = %.4f s per 1000 updates\n",
                 samples.size(), dyn->seconds, updates, wear->seconds, 1e3 * wear->seconds / updates);
+  }
+
+  {
+    const auto *one = reporter.find("thesis/one_ring_k1e7");
+    const auto *two = reporter.find("thesis/ring_pack_k_geometry");
+    if (one && two)
+      std::printf("thesis dynamics (2 s, BDF 1e-8): one ring k = 1e7 %.3f ms (%g steps), ring pack %.3f ms (%g steps), "
+                  "ratio %.2f\n",
+                  1e3 * one->seconds, one->counter("steps"), 1e3 * two->seconds, two->counter("steps"),
+                  two->seconds / one->seconds);
+    const auto *w1 = reporter.find("long/wear_pass");
+    const auto *h1 = reporter.find("long/wear_pass_half_plane");
+    const auto *h2 = reporter.find("long/wear_pass_half_plane_two_rings");
+    if (w1 && h1 && h2)
+      std::printf("long wear pass: Winkler %.3f s, half-plane %.3f s (ratio %.2f), half-plane two rings %.3f s "
+                  "(ratio %.2f)\n",
+                  w1->seconds, h1->seconds, h1->seconds / w1->seconds, h2->seconds, h2->seconds / w1->seconds);
   }
 
   const std::string plot = std::string("/usr/bin/python3 ") + RUNIN_SOURCE_DIR + "/tools/plot_piston_ring.py wp " +

@@ -50,20 +50,68 @@ struct Curve {
   continuum::PistonRingSummary summary;
 };
 
-Curve run_dynamics(const PistonRingCase &c, const continuum::SlidingFriction &friction) {
+Curve run_dynamics(const PistonRingCase &c, const PistonRingOfPack &ring, const continuum::SlidingFriction &friction) {
   const continuum::PistonRingSystem system = [&] {
     try {
-      return continuum::PistonRingSystem(c.parameters, friction);
+      return continuum::PistonRingSystem(ring.parameters, friction);
     } catch (const std::invalid_argument &e) {
-      throw InputError(c.path + ": key 'ring': " + e.what());
+      throw InputError(c.path + ": key '" + (c.rings.size() > 1 ? "ring_pack" : "ring") + "': " + e.what());
     }
   }();
   Curve curve;
   curve.report = continuum::simulate(system, c.run, [&](const PistonRingSample &s) { curve.samples.push_back(s); });
   if (!curve.report.ok())
-    throw std::runtime_error(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
+    throw std::runtime_error((c.rings.size() > 1 ? "ring " + ring.name + ": " : std::string()) +
+                             continuum::to_string(curve.report.status) + ": " + curve.report.message);
   curve.summary = continuum::summarise(system, curve.samples);
+  for (auto &sample : curve.samples) sample.ring_position += ring.position;  // groove centre on the piston
   return curve;
+}
+
+// The rings' samples on one time grid: the union of their sample times (each ring's events are its
+// samples), every ring linearly interpolated between its own samples (no event in between, so the
+// ring moves monotonically and stays in one phase there). One ring: its own samples, unchanged.
+std::vector<std::vector<PistonRingSample>> common_grid(const std::vector<const std::vector<PistonRingSample> *> &rings) {
+  if (rings.size() == 1) return {*rings.front()};
+  std::vector<double> times;
+  for (const auto *r : rings)
+    for (const auto &s : *r) times.push_back(s.t);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  std::vector<std::vector<PistonRingSample>> out(rings.size());
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    const auto &own = *rings[k];
+    std::size_t j = 0;
+    for (double t : times) {
+      while (j + 1 < own.size() && own[j + 1].t <= t) ++j;
+      if (own[j].t == t || j + 1 >= own.size()) {
+        out[k].push_back(own[j]);
+        out[k].back().t = t;
+        continue;
+      }
+      const auto &a = own[j], &b = own[j + 1];
+      const double f = (t - a.t) / (b.t - a.t);
+      auto mix = [f](double x, double y) { return x + f * (y - x); };
+      PistonRingSample s = a;
+      s.t = t;
+      s.crank_angle = mix(a.crank_angle, b.crank_angle);
+      s.piston_position = mix(a.piston_position, b.piston_position);
+      s.piston_velocity = mix(a.piston_velocity, b.piston_velocity);
+      s.ring_position = mix(a.ring_position, b.ring_position);
+      s.speed = mix(a.speed, b.speed);
+      s.distance = mix(a.distance, b.distance);
+      s.friction_force = mix(a.friction_force, b.friction_force);
+      s.land_force = mix(a.land_force, b.land_force);
+      s.normal_load = mix(a.normal_load, b.normal_load);
+      s.mu = s.normal_load > 0.0 ? std::abs(s.friction_force) / s.normal_load : 0.0;
+      s.mu_law = mix(a.mu_law, b.mu_law);
+      s.roughness = mix(a.roughness, b.roughness);
+      s.state = a.speed == 0.0 && b.speed == 0.0 ? continuum::ContactState::Stick : continuum::ContactState::Slip;
+      if (s.state == continuum::ContactState::Stick) s.speed = 0.0;
+      out[k].push_back(s);
+    }
+  }
+  return out;
 }
 
 // Wear along the computed trajectory (wear changes the pressure distribution, not W or mu, so it
@@ -85,36 +133,44 @@ WearSnapshot snapshot(const continuum::RingLinerWear &wear, const PistonRingSamp
   return snap;
 }
 
-WearPass run_wear(continuum::RingLinerWear &wear, const std::vector<PistonRingSample> &samples,
-                  const std::vector<double> &vtk_times) {
-  WearPass pass;
+// All rings slide sample by sample (they share the liner, so they wear it in time order).
+std::vector<WearPass> run_wear(std::vector<continuum::RingLinerWear> &wear,
+                               const std::vector<std::vector<PistonRingSample>> &rings,
+                               const std::vector<double> &vtk_times, const std::vector<PistonRingOfPack> &names) {
+  std::vector<WearPass> passes(rings.size());
   std::vector<double> times = vtk_times;
   std::sort(times.begin(), times.end());
   std::size_t next_frame = 0;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const auto &s = samples[i];
-    if (i > 0) {
-      const auto &prev = samples[i - 1];
-      bool ok = true;
-      try {
-        ok = wear.slide(prev.ring_position, s.ring_position, prev.normal_load, s.normal_load);
-      } catch (const std::out_of_range &e) {
-        throw std::runtime_error(fmt::format("wear at t = {:.6g} s: {}", s.t, e.what()));
+  const auto &grid = rings.front();
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    for (std::size_t k = 0; k < rings.size(); ++k) {
+      const auto &s = rings[k][i];
+      auto &w = wear[k];
+      const std::string which = rings.size() > 1 ? "ring " + names[k].name + ": " : std::string();
+      if (i > 0) {
+        const auto &prev = rings[k][i - 1];
+        bool ok = true;
+        try {
+          ok = w.slide(prev.ring_position, s.ring_position, prev.normal_load, s.normal_load);
+        } catch (const std::out_of_range &e) {
+          throw std::runtime_error(fmt::format("{}wear at t = {:.6g} s: {}", which, s.t, e.what()));
+        }
+        if (!ok)
+          throw std::runtime_error(fmt::format("{}{} at t = {:.6g} s: {} (wear.k = {:g}; not a run-in any more)", which,
+                                               continuum::to_string(w.status()), s.t, w.message(),
+                                               w.archard().coefficient()));
       }
-      if (!ok)
-        throw std::runtime_error(fmt::format("{} at t = {:.6g} s: {} (wear.k = {:g}; not a run-in any more)",
-                                             continuum::to_string(wear.status()), s.t, wear.message(),
-                                             wear.archard().coefficient()));
+      const auto contact = w.pressure(s.ring_position, s.normal_load);
+      if (i == 0) passes[k].initial_peak = contact.peak;
+      passes[k].rows.push_back({w.ring_volume(), w.liner_volume(), contact.width, contact.peak, contact.mean});
     }
-    const auto contact = wear.pressure(s.ring_position, s.normal_load);
-    if (i == 0) pass.initial_peak = contact.peak;
-    pass.rows.push_back({wear.ring_volume(), wear.liner_volume(), contact.width, contact.peak, contact.mean});
-    while (next_frame < times.size() && s.t >= times[next_frame] - 1e-12 * std::max(1.0, s.t)) {
-      pass.snapshots.push_back(snapshot(wear, s));
+    const double t = grid[i].t;
+    while (next_frame < times.size() && t >= times[next_frame] - 1e-12 * std::max(1.0, t)) {
+      for (std::size_t k = 0; k < rings.size(); ++k) passes[k].snapshots.push_back(snapshot(wear[k], rings[k][i]));
       ++next_frame;
     }
   }
-  return pass;
+  return passes;
 }
 
 const char *kColumns =
@@ -138,40 +194,63 @@ std::string csv_text(const std::vector<PistonRingSample> &samples, const std::ve
 }
 
 #ifdef RUNIN_HAVE_VTK
-std::vector<std::string> write_frames(const continuum::RingLinerWear &wear, const std::vector<WearSnapshot> &snaps,
+// The liner (shared by the rings: ring A's snapshots hold it) and each ring face ("ring_face" for
+// ring A, "ring_face_B" and on for the others).
+std::vector<std::string> write_frames(const std::vector<continuum::RingLinerWear> &wears,
+                                      const std::vector<WearPass> &passes, const std::vector<PistonRingOfPack> &rings,
                                       int around, const fs::path &dir) {
-  const auto &ws = wear.settings();
+  const auto &ws = wears.front().settings();
   const double radius = 0.5 * ws.bore;
-  std::vector<coupling::SurfaceFrame> liner, ring;
-  for (const auto &snap : snaps) {
-    coupling::SurfaceFrame lf, rf;
-    lf.time = rf.time = snap.time;
-    lf.nu = ws.liner_cells;
-    rf.nu = ws.ring_cells;
-    lf.nv = rf.nv = around;
-    std::vector<double> lw, lp, rw, rp;
-    for (int j = 0; j < around; ++j) {
-      const double phi = 2.0 * kPi * j / around;
-      for (int i = 0; i < ws.liner_cells; ++i) {
-        lf.points.push_back({radius * std::cos(phi), radius * std::sin(phi), wear.liner_cell_centre(i)});
-        lw.push_back(snap.liner_wear[i]);
-        lp.push_back(snap.liner_pressure[i]);
+  std::vector<coupling::SurfaceFrame> liner;
+  std::vector<std::vector<coupling::SurfaceFrame>> faces(wears.size());
+  for (std::size_t f = 0; f < passes.front().snapshots.size(); ++f) {
+    {
+      const auto &snap = passes.front().snapshots[f];
+      coupling::SurfaceFrame lf;
+      lf.time = snap.time;
+      lf.nu = ws.liner_cells;
+      lf.nv = around;
+      std::vector<double> lw, lp(snap.liner_pressure.size(), 0.0);
+      for (const auto &pass : passes)  // liner pressure: all rings
+        for (std::size_t j = 0; j < lp.size(); ++j) lp[j] += pass.snapshots[f].liner_pressure[j];
+      std::vector<double> lpp;
+      for (int j = 0; j < around; ++j) {
+        const double phi = 2.0 * kPi * j / around;
+        for (int i = 0; i < ws.liner_cells; ++i) {
+          lf.points.push_back({radius * std::cos(phi), radius * std::sin(phi), wears.front().liner_cell_centre(i)});
+          lw.push_back(snap.liner_wear[i]);
+          lpp.push_back(lp[i]);
+        }
       }
-      for (int i = 0; i < ws.ring_cells; ++i) {
-        rf.points.push_back(
-            {radius * std::cos(phi), radius * std::sin(phi), snap.ring_position + wear.ring_cell_centre(i)});
-        rw.push_back(snap.ring_wear[i]);
-        rp.push_back(snap.ring_pressure[i]);
-      }
+      lf.fields = {{"pressure", lpp}, {"wear_depth", lw}};
+      liner.push_back(std::move(lf));
     }
-    lf.fields = {{"pressure", lp}, {"wear_depth", lw}};
-    rf.fields = {{"pressure", rp}, {"wear_depth", rw}};
-    liner.push_back(std::move(lf));
-    ring.push_back(std::move(rf));
+    for (std::size_t k = 0; k < wears.size(); ++k) {
+      const auto &snap = passes[k].snapshots[f];
+      const auto &wk = wears[k];
+      coupling::SurfaceFrame rf;
+      rf.time = snap.time;
+      rf.nu = wk.settings().ring_cells;
+      rf.nv = around;
+      std::vector<double> rw, rp;
+      for (int j = 0; j < around; ++j) {
+        const double phi = 2.0 * kPi * j / around;
+        for (int i = 0; i < rf.nu; ++i) {
+          rf.points.push_back({radius * std::cos(phi), radius * std::sin(phi), snap.ring_position + wk.ring_cell_centre(i)});
+          rw.push_back(snap.ring_wear[i]);
+          rp.push_back(snap.ring_pressure[i]);
+        }
+      }
+      rf.fields = {{"pressure", rp}, {"wear_depth", rw}};
+      faces[k].push_back(std::move(rf));
+    }
   }
   auto written = coupling::write_surface_series(liner, (dir / "vtk").string(), "liner");
-  const auto more = coupling::write_surface_series(ring, (dir / "vtk").string(), "ring_face");
-  written.insert(written.end(), more.begin(), more.end());
+  for (std::size_t k = 0; k < wears.size(); ++k) {
+    const auto more =
+        coupling::write_surface_series(faces[k], (dir / "vtk").string(), k == 0 ? "ring_face" : "ring_face_" + rings[k].name);
+    written.insert(written.end(), more.begin(), more.end());
+  }
   return written;
 }
 #endif
@@ -214,80 +293,209 @@ double pressure_settling_time(const continuum::PistonRingParameters &p, const st
   return first < cycles - 1 ? first * period : -1.0;
 }
 
+// The piston's friction: the rings' sums on the common grid (friction, land force, W; mean sliding
+// speed; slip if any ring slips). One ring: its own samples.
+std::vector<PistonRingSample> pack_samples(const std::vector<std::vector<PistonRingSample>> &grid) {
+  if (grid.size() == 1) return grid.front();
+  std::vector<PistonRingSample> out = grid.front();
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    auto &s = out[i];
+    s.friction_force = s.land_force = s.normal_load = s.speed = 0.0;
+    bool slip = false;
+    for (const auto &ring : grid) {
+      s.friction_force += ring[i].friction_force;
+      s.land_force += ring[i].land_force;
+      s.normal_load += ring[i].normal_load;
+      s.speed += ring[i].speed / static_cast<double>(grid.size());
+      slip = slip || ring[i].state == continuum::ContactState::Slip;
+    }
+    s.state = slip ? continuum::ContactState::Slip : continuum::ContactState::Stick;
+    s.mu = s.normal_load > 0.0 ? std::abs(s.friction_force) / s.normal_load : 0.0;
+  }
+  return out;
+}
+
+struct PackRun {
+  std::vector<Curve> rings;                          // per ring, own samples and summary
+  std::vector<std::vector<PistonRingSample>> grid;   // per ring on the common grid
+  std::vector<PistonRingSample> pack;                // sums
+  continuum::PistonRingSummary summary;              // of the sums
+  long cvode_steps = 0;
+  std::size_t breakaways = 0, resticks = 0;
+};
+
+PackRun run_pack(const PistonRingCase &c, const continuum::SlidingFriction &friction) {
+  PackRun r;
+  std::vector<const std::vector<PistonRingSample> *> own;
+  for (const auto &ring : c.rings) r.rings.push_back(run_dynamics(c, ring, friction));
+  for (const auto &curve : r.rings) {
+    own.push_back(&curve.samples);
+    r.cvode_steps += curve.report.steps;
+    r.breakaways += curve.report.breakaway_times.size();
+    r.resticks += curve.report.restick_times.size();
+  }
+  r.grid = common_grid(own);
+  r.pack = pack_samples(r.grid);
+  if (c.rings.size() == 1) {
+    r.summary = r.rings.front().summary;
+  } else {
+    const continuum::PistonRingSystem system(c.parameters, friction);  // motion and cycle of the summary
+    r.summary = continuum::summarise(system, r.pack);
+  }
+  return r;
+}
+
+std::string pack_csv_text(const PistonRingCase &c, const PackRun &run, const std::vector<WearPass> &passes) {
+  std::string text =
+      "t_s,crank_angle_deg,piston_position_m,piston_velocity_m_s,speed_m_s,friction_force_N,land_force_N,"
+      "normal_load_N,mu,state_slip,wear_ring_m3,wear_liner_m3,wear_volume_m3";
+  for (const auto &ring : c.rings)
+    text += fmt::format(",friction_{0}_N,normal_load_{0}_N,state_slip_{0},ring_position_{0}_m,sliding_distance_{0}_m,"
+                        "peak_pressure_{0}_Pa",
+                        ring.name);
+  text += "\n";
+  for (std::size_t i = 0; i < run.pack.size(); ++i) {
+    const auto &s = run.pack[i];
+    double ring_volume = 0.0, liner_volume = 0.0;
+    for (const auto &pass : passes) {
+      ring_volume += pass.rows[i].ring;
+      liner_volume += pass.rows[i].liner;
+    }
+    text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g},{:.12g},{:.12g}",
+                        s.t, s.crank_angle * 180.0 / kPi, s.piston_position, s.piston_velocity, s.speed,
+                        s.friction_force, s.land_force, s.normal_load, s.mu,
+                        s.state == continuum::ContactState::Slip ? 1 : 0, ring_volume, liner_volume,
+                        ring_volume + liner_volume);
+    for (std::size_t k = 0; k < run.grid.size(); ++k) {
+      const auto &r = run.grid[k][i];
+      text += fmt::format(",{:.12g},{:.12g},{},{:.12g},{:.12g},{:.12g}", r.friction_force, r.normal_load,
+                          r.state == continuum::ContactState::Slip ? 1 : 0, r.ring_position, r.distance,
+                          passes[k].rows[i].peak);
+    }
+    text += "\n";
+  }
+  return text;
+}
+
 int run(const Options &o, const PlotRunner &plot) {
   const PistonRingCase c = read_piston_ring_case(o.case_path, o.law_path);
   const auto &p = c.parameters;
-  const Curve curve = run_dynamics(c, *c.friction);
-  announce_large_wear_pass(c, curve.samples.size());
-  continuum::RingLinerWear wear(c.wear_settings, *c.archard);
-  const WearPass wear_pass = run_wear(wear, curve.samples, c.vtk_times);
+  const bool pack = c.rings.size() > 1;
+  const PackRun main = run_pack(c, *c.friction);
+  announce_large_wear_pass(c, main.pack.size() * c.rings.size());
+  std::vector<continuum::RingLinerWear> wear;
+  wear.reserve(c.rings.size());
+  for (const auto &ring : c.rings) wear.emplace_back(ring.wear_settings, *c.archard);
+  for (std::size_t k = 1; k < wear.size(); ++k) wear[k].share_liner(wear.front());
+  const std::vector<WearPass> passes = run_wear(wear, main.grid, c.vtk_times, c.rings);
 
   struct SweepRow {
     double mu0;
-    Curve curve;
+    PackRun run;
   };
   std::vector<SweepRow> sweep;
-  for (double mu0 : c.sweep_mu0) sweep.push_back({mu0, run_dynamics(c, piston_ring_friction_with_mu0(c, mu0))});
+  for (double mu0 : c.sweep_mu0) sweep.push_back({mu0, run_pack(c, piston_ring_friction_with_mu0(c, mu0))});
 
   // Everything is computed; the output set is staged and moved in only when complete.
-  StagedOutput out(o.output_dir, {"piston_ring.csv", "piston_ring_liner.csv", "piston_ring_face.csv",
+  StagedOutput out(o.output_dir, {"piston_ring.csv", "piston_ring_?.csv", "piston_ring_rings.csv",
+                                  "piston_ring_liner.csv", "piston_ring_face.csv", "piston_ring_face_?.csv",
                                   "piston_ring_mu0.csv", "piston_ring.png", "piston_ring_mu0.png", "vtk/liner.pvd",
-                                  "vtk/liner_*.vts", "vtk/ring_face.pvd", "vtk/ring_face_*.vts"});
-  out.write("piston_ring.csv", csv_text(curve.samples, wear_pass.rows));
+                                  "vtk/liner_*.vts", "vtk/ring_face.pvd", "vtk/ring_face_*.vts", "vtk/ring_face_?.pvd"});
+  std::vector<std::string> written;
+  if (pack) {
+    out.write("piston_ring.csv", pack_csv_text(c, main, passes));
+    written.push_back("piston_ring.csv");
+    for (std::size_t k = 0; k < c.rings.size(); ++k) {
+      const std::string name = "piston_ring_" + c.rings[k].name + ".csv";
+      out.write(name, csv_text(main.grid[k], passes[k].rows));
+      written.push_back(name);
+    }
+  } else {
+    out.write("piston_ring.csv", csv_text(main.grid.front(), passes.front().rows));
+    written.push_back("piston_ring.csv");
+  }
+  {
+    std::string text =
+        "ring,groove_position_m,groove_diameter_m,land_width_m,land_stiffness_land_N_m,land_stiffness_ring_N_m,"
+        "land_stiffness_N_m,land_damping_N_s_m,mass_kg,elastic_pressure_Pa,normal_load_N,crown_height_m\n";
+    for (const auto &ring : c.rings) {
+      const auto &rp = ring.parameters;
+      text += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n",
+                          ring.name, ring.position, ring.groove_diameter, ring.land_width,
+                          ring.land ? ring.land->land : 0.0, ring.land ? ring.land->ring : 0.0, rp.land_stiffness,
+                          rp.land_damping, rp.ring_mass, rp.elastic_pressure, rp.elastic_pressure * rp.contact_area(),
+                          ring.wear_settings.crown_height);
+    }
+    out.write("piston_ring_rings.csv", text);
+    written.push_back("piston_ring_rings.csv");
+  }
   {
     const double tdc = p.crank.top_dead_centre();
     std::string text = "x_m,distance_from_tdc_m,wear_depth_m\n";
     for (int j = 0; j < c.wear_settings.liner_cells; ++j) {
-      const double x = wear.liner_cell_centre(j);
-      text += fmt::format("{:.12g},{:.12g},{:.12g}\n", x, tdc - x, wear.liner_wear()[j]);
+      const double x = wear.front().liner_cell_centre(j);
+      text += fmt::format("{:.12g},{:.12g},{:.12g}\n", x, tdc - x, wear.front().liner_wear()[j]);
     }
     out.write("piston_ring_liner.csv", text);
+    written.push_back("piston_ring_liner.csv");
   }
-  {
-    const auto &last = curve.samples.back();
-    const auto contact = wear.pressure(last.ring_position, last.normal_load);
+  for (std::size_t k = 0; k < c.rings.size(); ++k) {
+    const auto &last = main.grid[k].back();
+    const auto &w = wear[k];
+    const auto contact = w.pressure(last.ring_position, last.normal_load);
     std::string text = "z_m,crown_m,wear_depth_m,final_pressure_Pa\n";
-    for (int i = 0; i < c.wear_settings.ring_cells; ++i) {
-      const double z = wear.ring_cell_centre(i), u = 2.0 * z / p.ring_width;
-      text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g}\n", z, c.wear_settings.crown_height * u * u,
-                          wear.ring_wear()[i], contact.pressure[i]);
+    for (int i = 0; i < w.settings().ring_cells; ++i) {
+      const double z = w.ring_cell_centre(i), u = 2.0 * z / p.ring_width;
+      text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g}\n", z, w.settings().crown_height * u * u, w.ring_wear()[i],
+                          contact.pressure[i]);
     }
-    out.write("piston_ring_face.csv", text);
+    const std::string name = k == 0 ? "piston_ring_face.csv" : "piston_ring_face_" + c.rings[k].name + ".csv";
+    out.write(name, text);
+    written.push_back(name);
   }
-  std::vector<std::string> written = {"piston_ring.csv", "piston_ring_liner.csv", "piston_ring_face.csv"};
   if (!sweep.empty()) {
     std::string text = "mu0,t_s,friction_force_N,land_force_N,speed_m_s,state_slip\n";
     for (const auto &row : sweep)
-      for (const auto &s : row.curve.samples)
+      for (const auto &s : row.run.pack)
         text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{}\n", row.mu0, s.t, s.friction_force,
                             s.land_force, s.speed, s.state == continuum::ContactState::Slip ? 1 : 0);
     out.write("piston_ring_mu0.csv", text);
     written.push_back("piston_ring_mu0.csv");
   }
   if (!o.no_plot) {
-    plot("plot_piston_ring.py", {"curve", out.file("piston_ring.csv").string(), out.file("piston_ring_liner.csv").string(),
+    // The six panels show ring A (its own CSV in a pack) with the shared liner.
+    const std::string curve_csv = pack ? "piston_ring_A.csv" : "piston_ring.csv";
+    plot("plot_piston_ring.py", {"curve", out.file(curve_csv).string(), out.file("piston_ring_liner.csv").string(),
                                  out.file("piston_ring_face.csv").string(), out.file("piston_ring.png").string(),
-                                 "--title", c.title});
+                                 "--title", c.title + (pack ? " - ring A" : "")});
     written.push_back("piston_ring.png");
     if (!sweep.empty()) {
       plot("plot_piston_ring.py", {"sweep", out.file("piston_ring_mu0.csv").string(),
-                                   out.file("piston_ring_mu0.png").string(), "--title", c.title});
+                                   out.file("piston_ring_mu0.png").string(), "--title",
+                                   c.title + (pack ? " - ring pack (sum)" : "")});
       written.push_back("piston_ring_mu0.png");
     }
   }
   std::vector<std::string> vtk_files;
 #ifdef RUNIN_HAVE_VTK
-  vtk_files = write_frames(wear, wear_pass.snapshots, c.circumferential_points, out.staging());
+  vtk_files = write_frames(wear, passes, c.rings, c.circumferential_points, out.staging());
 #endif
   out.commit();
 
   // One-screen summary.
-  const auto &s = curve.summary;
-  const auto &last = curve.samples.back();
+  const auto &s = main.summary;
   const double stroke = 2.0 * p.crank.crank_radius;
-  const double natural = std::sqrt(p.land_stiffness / p.ring_mass) / (2.0 * kPi);
-  const auto max_liner = std::max_element(wear.liner_wear().begin(), wear.liner_wear().end());
-  const int max_j = static_cast<int>(max_liner - wear.liner_wear().begin());
+  const auto &liner_wear = wear.front().liner_wear();
+  const auto max_liner = std::max_element(liner_wear.begin(), liner_wear.end());
+  const int max_j = static_cast<int>(max_liner - liner_wear.begin());
+  double ring_volume = 0.0, liner_volume = 0.0, archard = 0.0;
+  long updates = 0;
+  for (const auto &w : wear) {
+    ring_volume += w.ring_volume();
+    liner_volume += w.liner_volume();
+    archard += w.archard_volume();
+    updates += w.updates();
+  }
   fmt::print("runin piston-ring: {}\n  {}\n", o.case_path, c.title);
   fmt::print("  friction          {}\n", c.friction->description());
   if (p.motion == continuum::PistonMotion::Ramp)
@@ -299,40 +507,58 @@ int run(const Options &o, const PlotRunner &plot) {
     fmt::print("  kinematics        crank: eq. 6.1 at {:.6g} rpm from {:g} deg before TDC; r = {:g} mm, l = {:g} mm, "
                "stroke {:g} mm, {:.4g} revolutions\n",
                p.crank_speed * 60.0 / (2.0 * kPi), p.start_angle * 180.0 / kPi, 1e3 * p.crank.crank_radius,
-               1e3 * p.crank.link_length, 1e3 * stroke, last.t * p.crank_speed / (2.0 * kPi));
-  fmt::print("  ring              W = {:.6g} N from {:.4g} MPa ring tension{}; m = {:.4g} kg, land k = {:.4g} N/m, "
-             "zeta = {:g} ({:.4g} Hz)\n",
-             p.elastic_pressure * p.contact_area(), 1e-6 * p.elastic_pressure, p.gas.empty() ? "" : " + gas table",
-             p.ring_mass, p.land_stiffness, c.land_damping_ratio, natural);
+               1e3 * p.crank.link_length, 1e3 * stroke, main.pack.back().t * p.crank_speed / (2.0 * kPi));
+  fmt::print("  ring face         {}\n",
+             c.wear_settings.contact == continuum::FaceContact::HalfPlane
+                 ? fmt::format("elastic half-plane line contact (BEM, E* = {:.4g} GPa)", 1e-9 * c.wear_settings.contact_modulus)
+                 : fmt::format("Winkler layer k_c = {:.4g} Pa/m", c.wear_settings.foundation_modulus));
+  fmt::print("  ring model        {}\n", pack ? fmt::format("ring pack of {} rings; friction = their sum", c.rings.size())
+                                            : std::string("one ring"));
+  for (std::size_t k = 0; k < c.rings.size(); ++k) {
+    const auto &ring = c.rings[k];
+    const auto &rp = ring.parameters;
+    const double natural = std::sqrt(rp.land_stiffness / rp.ring_mass) / (2.0 * kPi);
+    const std::string land =
+        ring.land ? fmt::format("land k = {:.4g} N/m from geometry (land plate {:.4g}, ring section {:.4g}; groove "
+                                "{:g} mm, land {:g} mm)",
+                                rp.land_stiffness, ring.land->land, ring.land->ring, 1e3 * ring.groove_diameter,
+                                1e3 * ring.land_width)
+                  : fmt::format("land k = {:.4g} N/m (set by hand)", rp.land_stiffness);
+    fmt::print("  ring {}            W = {:.6g} N from {:.4g} MPa ring tension{}; m = {:.4g} kg, {}, zeta = {:g} "
+               "({:.4g} Hz); at {:g} mm; crown {:g} um\n",
+               ring.name, rp.elastic_pressure * rp.contact_area(),
+               1e-6 * rp.elastic_pressure, p.gas.empty() ? "" : " + gas table", rp.ring_mass, land,
+               c.land_damping_ratio, natural, 1e3 * ring.position, 1e6 * ring.wear_settings.crown_height);
+  }
   fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
-  fmt::print("  peak friction     {:.6g} N at t = {:.6g} s (liner); peak land force {:.6g} N\n", s.peak_friction_force,
-             s.peak_time, s.peak_land_force);
+  fmt::print("  peak friction     {:.6g} N at t = {:.6g} s (liner{}); peak land force {:.6g} N\n", s.peak_friction_force,
+             s.peak_time, pack ? ", sum of the rings" : "", s.peak_land_force);
   fmt::print("  steady state      {} ({})\n", or_none(s.steady_time), s.steady_criterion);
   fmt::print("  start friction    {:.6g} N (largest |F| up to the first slip sample)\n", s.start_friction_force);
   fmt::print("  steady mu         {:.6g}, friction force {:.6g} N\n", s.steady_mu, s.steady_friction_force);
   if (p.motion == continuum::PistonMotion::Crank)
     fmt::print("  pressure run-in   {} (cycle-max peak contact pressure within 1 % of the last cycle's from then on)\n",
-               or_none(pressure_settling_time(p, curve.samples, wear_pass.rows)));
-  fmt::print("  sliding           {:.6g} m in {} break-away and {} re-stick events\n", last.distance,
-             curve.report.breakaway_times.size(), curve.report.restick_times.size());
-  fmt::print("  wear volume       {:.6g} m^3 (ring {:.6g}, liner {:.6g}); Archard k W s / H = {:.6g} m^3\n",
-             wear.ring_volume() + wear.liner_volume(), wear.ring_volume(), wear.liner_volume(),
-             wear.archard_volume());
+               or_none(pressure_settling_time(p, main.grid.front(), passes.front().rows)));
+  fmt::print("  sliding           {:.6g} m (ring A) in {} break-away and {} re-stick events\n",
+             main.grid.front().back().distance, main.breakaways, main.resticks);
+  fmt::print("  wear volume       {:.6g} m^3 (ring{} {:.6g}, liner {:.6g}); Archard k W s / H = {:.6g} m^3\n",
+             ring_volume + liner_volume, pack ? "s" : "", ring_volume, liner_volume, archard);
   fmt::print("  liner wear        max {:.6g} um at {:.6g} mm from TDC\n", 1e6 * *max_liner,
-             1e3 * (p.crank.top_dead_centre() - wear.liner_cell_centre(max_j)));
-  fmt::print("  ring pressure     peak {:.6g} MPa at start -> {:.6g} MPa at end (crown {:g} um)\n",
-             1e-6 * wear_pass.initial_peak, 1e-6 * wear_pass.rows.back().peak,
-             1e6 * c.wear_settings.crown_height);
-  fmt::print("  wear updates      {} (step {:.4g} m = {} x stable_slip_step)\n", wear.updates(), wear.step(),
+             1e3 * (p.crank.top_dead_centre() - wear.front().liner_cell_centre(max_j)));
+  for (std::size_t k = 0; k < c.rings.size(); ++k)
+    fmt::print("  ring {} pressure   peak {:.6g} MPa at start -> {:.6g} MPa at end, contact width {:.4g} -> {:.4g} mm\n",
+               c.rings[k].name, 1e-6 * passes[k].initial_peak, 1e-6 * passes[k].rows.back().peak,
+               1e3 * passes[k].rows.front().width, 1e3 * passes[k].rows.back().width);
+  fmt::print("  wear updates      {} (step {:.4g} m = {} x stable_slip_step)\n", updates, wear.front().step(),
              c.wear_settings.fixed_step > 0.0 ? std::string("fixed, not") : fmt::format("{:g}", c.wear_settings.step_safety));
-  fmt::print("  CVODE             {} steps\n", curve.report.steps);
+  fmt::print("  CVODE             {} steps\n", main.cvode_steps);
   if (!sweep.empty()) {
-    fmt::print("  mu0 sweep         {:>6} {:>12} {:>12} {:>12} {:>10}\n", "mu0", "peak F (N)", "break-away", "steady",
-               "steady mu");
+    fmt::print("  mu0 sweep{}    {:>6} {:>12} {:>12} {:>12} {:>10}\n", pack ? " (sum)" : "      ", "mu0", "peak F (N)",
+               "break-away", "steady", "steady mu");
     for (const auto &row : sweep)
       fmt::print("                    {:>6g} {:>12.6g} {:>12} {:>12} {:>10.4g}\n", row.mu0,
-                 row.curve.summary.peak_friction_force, or_none(row.curve.summary.breakaway_time),
-                 or_none(row.curve.summary.steady_time), row.curve.summary.steady_mu);
+                 row.run.summary.peak_friction_force, or_none(row.run.summary.breakaway_time),
+                 or_none(row.run.summary.steady_time), row.run.summary.steady_mu);
   }
   fmt::print("  wrote            ");
   for (std::size_t i = 0; i < written.size(); ++i)

@@ -15,15 +15,18 @@ constexpr double kDeg = kPi / 180.0;
 
 const Schema &schema() {
   static const Schema s = {
-      {"", {"title", "kinematics", "ring", "material", "gas", "friction", "wear", "run", "solver", "output", "sweep"}},
+      {"", {"title", "kinematics", "ring", "ring_pack", "material", "gas", "friction", "wear", "run", "solver", "output",
+            "sweep"}},
       {"kinematics", {"motion", "crank_radius", "link_length", "start_angle_deg", "ramp_time", "crank_speed_rpm"}},
       {"ring", {"bore", "width", "thickness", "density", "mass", "elastic_pressure", "land_stiffness",
-                "land_damping_ratio"}},
+                "land_damping_ratio", "groove_diameter", "land_width"}},
+      {"ring_pack", {"model", "groove_diameter", "groove_position", "elastic_pressure", "crown_height", "land_width",
+                     "land_stiffness"}},
       {"material", {"youngs_modulus", "poisson_ratio"}},
       {"gas", {"crank_angle_deg", "pressure", "cycle_deg", "factor"}},
       {"friction", friction_keys()},
       {"wear", {"k", "hardness", "form", "hardness_ring", "hardness_liner", "crown_height", "ring_cells",
-                "liner_cells", "step_safety", "fixed_step", "foundation_modulus"}},
+                "liner_cells", "step_safety", "fixed_step", "foundation_modulus", "contact"}},
       {"run", {"t_end", "output_interval", "max_events"}},
       {"solver", {"method", "rtol", "atol", "max_steps"}},
       {"output", {"vtk_times", "circumferential_points"}},
@@ -78,10 +81,116 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   p.ring_mass = reader.has("ring.mass")
                     ? reader.positive("ring.mass")
                     : reader.positive("ring.density", 7200.0) * kPi * (p.bore - thickness) * thickness * p.ring_width;
-  p.elastic_pressure = reader.positive("ring.elastic_pressure");
-  p.land_stiffness = reader.positive("ring.land_stiffness");
   c.land_damping_ratio = reader.non_negative("ring.land_damping_ratio");
-  p.land_damping = 2.0 * c.land_damping_ratio * std::sqrt(p.land_stiffness * p.ring_mass);
+  const double youngs = reader.positive("material.youngs_modulus", 66e9);
+  const double poisson = reader.number("material.poisson_ratio", 0.27);
+  if (poisson <= -1.0 || poisson >= 0.5) reader.fail("material.poisson_ratio", "must lie in (-1, 0.5)");
+
+  // The rings: [ring_pack] (arrays, one element per ring, groove order A, B, ...) or the one ring of [ring].
+  struct Spec {
+    double groove_diameter = 0.0, land_width = 0.0, tension = 0.0, crown = 0.0, position = 0.0, stiffness = 0.0;
+    std::string stiffness_key;  // the key that set the stiffness by hand, empty: from geometry
+  };
+  std::vector<Spec> specs;
+  if (reader.has("ring_pack")) {
+    for (const char *key : {"ring.elastic_pressure", "ring.land_stiffness", "ring.groove_diameter", "ring.land_width",
+                            "wear.crown_height"})
+      if (reader.has(key)) reader.fail(key, "is set per ring in [ring_pack] when the case has one");
+    c.ring_model = reader.choice("ring_pack.model", {"pack", "single"}, std::string("pack"));
+    const std::vector<double> grooves = reader.numbers("ring_pack.groove_diameter");
+    const std::size_t n = grooves.size();
+    if (n > 8) reader.fail("ring_pack.groove_diameter", "at most 8 rings, got " + std::to_string(n));
+    auto per_ring = [&](const std::string &key, bool required, double fallback) {
+      if (!reader.has(key)) {
+        if (required) reader.fail(key, "missing (required: one value per ring of ring_pack.groove_diameter)");
+        return std::vector<double>(n, fallback);
+      }
+      const std::vector<double> values = reader.numbers(key);
+      if (values.size() != n)
+        reader.fail(key, "has " + std::to_string(values.size()) + " values, ring_pack.groove_diameter has " +
+                             std::to_string(n));
+      return values;
+    };
+    auto check = [&](const std::string &key, const std::vector<double> &values, bool allow_zero) {
+      for (std::size_t i = 0; i < values.size(); ++i)
+        if (allow_zero ? values[i] < 0.0 : !(values[i] > 0.0))
+          reader.fail(key, "element " + std::to_string(i) + ": must be " + (allow_zero ? ">= 0" : "positive") +
+                               ", got " + CaseReader::format(values[i]));
+    };
+    const bool by_hand = reader.has("ring_pack.land_stiffness");
+    const auto positions = per_ring("ring_pack.groove_position", n > 1, 0.0);
+    const auto tensions = per_ring("ring_pack.elastic_pressure", true, 0.0);
+    const auto crowns = per_ring("ring_pack.crown_height", false, 0.0);
+    const auto lands = per_ring("ring_pack.land_width", !by_hand, 0.0);
+    const auto stiffness = per_ring("ring_pack.land_stiffness", false, 0.0);
+    check("ring_pack.groove_diameter", grooves, false);
+    check("ring_pack.elastic_pressure", tensions, false);
+    check("ring_pack.crown_height", crowns, true);
+    if (by_hand) check("ring_pack.land_stiffness", stiffness, false);
+    else check("ring_pack.land_width", lands, false);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (grooves[i] >= p.bore)
+        reader.fail("ring_pack.groove_diameter", "element " + std::to_string(i) + ": must be below ring.bore (" +
+                                                     CaseReader::format(p.bore) + "), got " +
+                                                     CaseReader::format(grooves[i]));
+      for (std::size_t j = 0; j < i; ++j)
+        if (std::abs(positions[i] - positions[j]) < p.ring_width)
+          reader.fail("ring_pack.groove_position",
+                      "grooves " + std::to_string(j) + " and " + std::to_string(i) + " overlap: centres " +
+                          CaseReader::format(std::abs(positions[i] - positions[j])) +
+                          " m apart, less than the ring width " + CaseReader::format(p.ring_width) + " m");
+      Spec spec{grooves[i], lands[i], tensions[i], crowns[i], positions[i], stiffness[i],
+                by_hand ? "ring_pack.land_stiffness" : ""};
+      specs.push_back(spec);
+    }
+    if (c.ring_model == "single") specs.resize(1);
+  } else {
+    Spec spec;
+    spec.tension = reader.positive("ring.elastic_pressure");
+    spec.crown = reader.non_negative("wear.crown_height", 0.0);
+    if (reader.has("ring.land_stiffness")) {
+      for (const char *key : {"ring.groove_diameter", "ring.land_width"})
+        if (reader.has(key)) reader.fail(key, "give either ring.land_stiffness or the land geometry, not both");
+      spec.stiffness = reader.positive("ring.land_stiffness");
+      spec.stiffness_key = "ring.land_stiffness";
+    } else {
+      if (!reader.has("ring.groove_diameter") || !reader.has("ring.land_width"))
+        reader.fail(reader.has("ring.groove_diameter") ? "ring.land_width" : "ring.groove_diameter",
+                    "missing: the land stiffness is computed from ring.groove_diameter and ring.land_width "
+                    "(or give ring.land_stiffness)");
+      spec.groove_diameter = reader.positive("ring.groove_diameter");
+      spec.land_width = reader.positive("ring.land_width");
+      if (spec.groove_diameter >= p.bore)
+        reader.fail("ring.groove_diameter", "must be below ring.bore (" + CaseReader::format(p.bore) + "), got " +
+                                                CaseReader::format(spec.groove_diameter));
+    }
+    specs.push_back(spec);
+  }
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const Spec &spec = specs[i];
+    PistonRingOfPack ring;
+    ring.name = std::string(1, static_cast<char>('A' + i));
+    ring.position = spec.position;
+    ring.parameters = p;
+    ring.parameters.elastic_pressure = spec.tension;
+    if (spec.stiffness_key.empty()) {
+      continuum::RingLandGeometry geometry{p.bore, spec.groove_diameter, spec.land_width, p.ring_width, thickness,
+                                           youngs, poisson};
+      try {
+        ring.land = continuum::land_stiffness(geometry);
+      } catch (const std::invalid_argument &e) {
+        reader.fail(reader.has("ring_pack") ? "ring_pack" : "ring", e.what());
+      }
+      ring.groove_diameter = spec.groove_diameter;
+      ring.land_width = spec.land_width;
+      ring.parameters.land_stiffness = ring.land->total;
+    } else {
+      ring.parameters.land_stiffness = spec.stiffness;
+    }
+    ring.parameters.land_damping = 2.0 * c.land_damping_ratio * std::sqrt(ring.parameters.land_stiffness * p.ring_mass);
+    ring.wear_settings.crown_height = spec.crown;
+    c.rings.push_back(ring);
+  }
 
   // Gas pressure behind the ring (crank motion only).
   if (reader.has("gas")) {
@@ -108,21 +217,25 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   c.friction = read_friction(reader, law_path);
   c.friction_model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback"});
 
+  for (auto &ring : c.rings) ring.parameters.gas = p.gas;
+
   // Wear of ring face and liner.
-  const double youngs = reader.positive("material.youngs_modulus", 66e9);
-  const double poisson = reader.number("material.poisson_ratio", 0.27);
-  if (poisson <= -1.0 || poisson >= 0.5) reader.fail("material.poisson_ratio", "must lie in (-1, 0.5)");
   auto &w = c.wear_settings;
   w.bore = p.bore;
   w.ring_width = p.ring_width;
   w.ring_thickness = thickness;  // wear-through limit of the ring face
-  // Winkler layer: plane-strain modulus over the ring's radial thickness.
+  // Ring face on the liner: elastic half-plane line contact (E* of two equal bodies), or the former
+  // Winkler layer with the plane-strain modulus over the ring's radial thickness.
+  const bool winkler = reader.choice("wear.contact", {"half_plane", "winkler"}, std::string("half_plane")) == "winkler";
+  w.contact = winkler ? continuum::FaceContact::Winkler : continuum::FaceContact::HalfPlane;
+  w.contact_modulus = youngs / (2.0 * (1.0 - poisson * poisson));
   w.foundation_modulus =
       reader.positive("wear.foundation_modulus", youngs / (1.0 - poisson * poisson) / thickness);
   // below a 1 MPa elastomer over 1 m the face no longer carries the ring (1e-300 diverged to nan)
   if (w.foundation_modulus < 1e6)
     reader.fail("wear.foundation_modulus", "must be at least 1e6 Pa/m, got " + CaseReader::format(w.foundation_modulus));
-  w.crown_height = reader.non_negative("wear.crown_height", 0.0);
+  if (!winkler && reader.has("wear.foundation_modulus"))
+    reader.fail("wear.foundation_modulus", "only used by wear.contact = \"winkler\"");
   w.ring_cells = static_cast<int>(reader.positive_integer("wear.ring_cells", 64));
   w.liner_cells = static_cast<int>(reader.positive_integer("wear.liner_cells", 512));
   // caps keep one run within seconds (measured, doc/hardening.md): 16384 ring cells 9 s, 1e5 liner cells 13 s
@@ -177,22 +290,37 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
     }
   }
 
-  // Liner grid: the ring's travel plus its half width, the land deflection at the static limit and 1 mm.
+  // Liner grid: the travel of every ring plus its half width, its land deflection at the static limit and 1 mm.
   const double x_low = p.motion == continuum::PistonMotion::Ramp ? p.crank.position(p.start_angle)
                                                                   : p.crank.bottom_dead_centre();
   const double x_high = p.crank.top_dead_centre();
   double gas_max = 0.0;
   for (double g : p.gas.pressure) gas_max = std::max(gas_max, p.gas.factor * g);
-  const double load_max = (p.elastic_pressure + gas_max) * p.contact_area();
-  const double margin = 0.5 * p.ring_width + 1e-3 + 4.0 * mu_static_max * load_max / p.land_stiffness;
-  w.liner_begin = x_low - margin;
-  w.liner_end = x_high + margin;
+  double low = x_low, high = x_high;
+  for (const auto &ring : c.rings) {
+    const auto &rp = ring.parameters;
+    const double load_max = (rp.elastic_pressure + gas_max) * rp.contact_area();
+    const double margin = 0.5 * p.ring_width + 1e-3 + 4.0 * mu_static_max * load_max / rp.land_stiffness;
+    low = std::min(low, x_low + ring.position - margin);
+    high = std::max(high, x_high + ring.position + margin);
+  }
+  w.liner_begin = low;
+  w.liner_end = high;
+  for (auto &ring : c.rings) {
+    const double crown = ring.wear_settings.crown_height;
+    ring.wear_settings = w;
+    ring.wear_settings.crown_height = crown;
+  }
+  p = c.rings.front().parameters;
+  w = c.rings.front().wear_settings;
 
-  try {
-    p.validate();
-    w.validate();
-  } catch (const std::invalid_argument &e) {
-    reader.fail("ring", e.what());
+  for (const auto &ring : c.rings) {
+    try {
+      ring.parameters.validate();
+      ring.wear_settings.validate();
+    } catch (const std::invalid_argument &e) {
+      reader.fail(c.rings.size() > 1 ? "ring_pack" : "ring", e.what());
+    }
   }
   return c;
 }

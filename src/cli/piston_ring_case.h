@@ -11,14 +11,27 @@
 
 namespace runin::cli {
 
+// One ring of the pack: its own tension, land, face profile and wear (ring face + its share of
+// the one liner). Its centre rides at piston position + `position` + land deflection.
+struct PistonRingOfPack {
+  std::string name;                                  // "A", "B", ... (groove order of ring_pack arrays)
+  continuum::PistonRingParameters parameters;        // kinematics as the case; own W, m, k, c
+  continuum::RingLinerWearSettings wear_settings;    // own crown; liner grid of the whole pack
+  double position = 0.0;                             // m, groove centre along the piston, + towards the crown
+  double groove_diameter = 0.0, land_width = 0.0;    // m (0 if the stiffness was given)
+  std::optional<continuum::LandStiffness> land;      // from geometry; empty: land_stiffness given by hand
+};
+
 struct PistonRingCase {
   std::string path;
   std::string title;
-  continuum::PistonRingParameters parameters;
+  continuum::PistonRingParameters parameters;        // = rings[0].parameters
+  std::string ring_model = "single";                 // single ([ring] only, or ring_pack.model) | pack
+  std::vector<PistonRingOfPack> rings;               // 1 (single) or the pack, in ring_pack order
   continuum::PistonRingRun run;
   std::optional<continuum::SlidingFriction> friction;
   std::string friction_model;  // constant | static_kinetic | law_file | feedback
-  continuum::RingLinerWearSettings wear_settings;  // liner grid set from the stroke
+  continuum::RingLinerWearSettings wear_settings;  // = rings[0].wear_settings; liner grid set from the stroke
   std::optional<tribo::ArchardWear> archard;
   double land_damping_ratio = 0.0;
   std::vector<double> vtk_times;  // s

@@ -1,5 +1,7 @@
 #include "continuum/conformal_contact.h"
 
+#include "continuum/half_plane_contact.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,8 +11,6 @@ namespace {
 void require(bool ok, const std::string &what) {
   if (!ok) throw std::invalid_argument(what);
 }
-// Antiderivative of ln|t|, continuous at 0.
-double log_integral(double t) { return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t; }
 }  // namespace
 
 void BoreGeometry::validate() const {
@@ -46,37 +46,9 @@ ConformalContact::ConformalContact(BoreGeometry geometry) : g_(geometry) {
   theta_.resize(n);
   for (int i = 0; i < n; ++i) theta_[i] = -g_.arc_half_angle + (i + 0.5) * dtheta_;
 
-  // Toeplitz: K_ij depends on |i - j| only.
-  const double r = g_.shaft_radius, h = panel_length();
-  const double scale = -2.0 / (M_PI * g_.contact_modulus());
-  std::vector<double> row(n);
-  for (int m = 0; m < n; ++m) {
-    const double d = m * h / r;  // in units of R
-    row[m] = scale * r * (log_integral(d + 0.5 * h / r) - log_integral(d - 0.5 * h / r));
-  }
-  compliance_.resize(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) compliance_(i, j) = row[std::abs(i - j)];
-
-  // lambda_min(K) by inverse power iteration, started on the alternating (stiffest) mode.
-  Eigen::LLT<Eigen::MatrixXd> llt(compliance_);
-  double lambda_min = 0.0;
-  if (llt.info() == Eigen::Success) {
-    Eigen::VectorXd v(n);
-    for (int i = 0; i < n; ++i) v[i] = (i % 2 ? -1.0 : 1.0);
-    v.normalize();
-    for (int it = 0; it < 60; ++it) {
-      Eigen::VectorXd next = llt.solve(v);
-      v = next.normalized();
-    }
-    // Rayleigh quotient minus the residual norm: a lower bound on the nearest eigenvalue, so
-    // k_c errs on the stiff (safe) side.
-    const Eigen::VectorXd kv = compliance_ * v;
-    const double rayleigh = v.dot(kv);
-    lambda_min = rayleigh - (kv - rayleigh * v).norm();
-  } else {
-    lambda_min = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(compliance_, Eigen::EigenvaluesOnly).eigenvalues()[0];
-  }
+  // Toeplitz: K_ij depends on |i - j| only (the half-plane kernel, half_plane_contact.h).
+  compliance_ = symmetric_toeplitz(half_plane_influence_row(n, panel_length(), g_.contact_modulus(), g_.shaft_radius));
+  const double lambda_min = smallest_eigenvalue_bound(compliance_);
   require(lambda_min > 0.0, "arc_half_angle: compliance matrix not positive definite (arc too long for R)");
   stiffness_per_area_ = 1.0 / lambda_min;
 }
@@ -105,70 +77,14 @@ ConformalSolution ConformalContact::solve(double load_per_length, const std::vec
   const double tolerance = 1e-10 * (g_.clearance + max_wear);
 
   std::vector<char> active(n, 0);
-  int count = 0;
   if (warm_start && static_cast<int>(warm_start->size()) == n)
-    for (int i = 0; i < n; ++i) count += active[i] = (*warm_start)[i] > 0.0;
-  if (count == 0) {  // first touch of the rigid shaft
-    int first = 0;
-    for (int i = 1; i < n; ++i)
-      if (rigid_gap[i] / cosine[i] < rigid_gap[first] / cosine[first]) first = i;
-    active[first] = 1;
-  }
-
-  Eigen::VectorXd p = Eigen::VectorXd::Zero(n);
-  double e = 0.0;
-  const int max_iterations = 4 * n + 20;
-  sol.status = ConformalStatus::NotConverged;
-  for (int it = 1; it <= max_iterations; ++it) {
-    sol.iterations = it;
-    std::vector<int> index;
-    for (int i = 0; i < n; ++i)
-      if (active[i]) index.push_back(i);
-    const int m = static_cast<int>(index.size());
-    Eigen::MatrixXd kaa(m, m);
-    Eigen::VectorXd b(m), c(m);
-    for (int a = 0; a < m; ++a) {
-      for (int bb = 0; bb < m; ++bb) kaa(a, bb) = compliance_(index[a], index[bb]);
-      b[a] = -rigid_gap[index[a]];
-      c[a] = cosine[index[a]];
-    }
-    // K p = b + e c with the load balance h c.p = load: p = u + e v.
-    Eigen::VectorXd u, v;
-    Eigen::LLT<Eigen::MatrixXd> llt(kaa);
-    if (llt.info() == Eigen::Success) {
-      u = llt.solve(b);
-      v = llt.solve(c);
-    } else {
-      Eigen::PartialPivLU<Eigen::MatrixXd> lu(kaa);
-      u = lu.solve(b);
-      v = lu.solve(c);
-    }
-    e = (load_per_length / h - c.dot(u)) / c.dot(v);
-    const Eigen::VectorXd pa = u + e * v;
-    p.setZero();
-    bool removed = false;
-    for (int a = 0; a < m; ++a) {
-      if (pa[a] < 0.0 && m > 1) {
-        active[index[a]] = 0;
-        removed = true;
-      } else {
-        p[index[a]] = std::max(pa[a], 0.0);
-      }
-    }
-    if (removed) continue;
-    const Eigen::VectorXd gap = rigid_gap - e * cosine + compliance_ * p;
-    bool added = false;
-    for (int i = 0; i < n; ++i)
-      if (!active[i] && gap[i] < -tolerance) {
-        active[i] = 1;
-        added = true;
-      }
-    if (!added) {
-      sol.status = ConformalStatus::Converged;
-      break;
-    }
-  }
-
+    for (int i = 0; i < n; ++i) active[i] = (*warm_start)[i] > 0.0;
+  const LineContactResult r =
+      solve_line_contact(compliance_, rigid_gap, cosine, h, load_per_length, tolerance, active);
+  sol.iterations = r.iterations;
+  sol.status = r.converged ? ConformalStatus::Converged : ConformalStatus::NotConverged;
+  const Eigen::VectorXd &p = r.pressure;
+  const double e = r.approach;
   sol.approach = e;
   int first = n, last = -1;
   double force = 0.0, sum = 0.0;

@@ -196,6 +196,35 @@ struct PistonRingHooks : SystemHooks<PistonRingSystem, PistonRingObserver> {
 };
 }  // namespace
 
+void RingLandGeometry::validate() const {
+  auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  if (!positive(bore)) throw std::invalid_argument("bore must be positive");
+  if (!positive(groove_diameter) || groove_diameter >= bore)
+    throw std::invalid_argument("groove_diameter must lie in (0, bore)");
+  if (!positive(land_width)) throw std::invalid_argument("land_width must be positive");
+  if (!positive(ring_width)) throw std::invalid_argument("ring_width must be positive");
+  if (!positive(ring_thickness) || 2.0 * ring_thickness >= bore)
+    throw std::invalid_argument("ring_thickness must lie in (0, bore / 2)");
+  if (!positive(youngs_modulus)) throw std::invalid_argument("youngs_modulus must be positive");
+  if (!std::isfinite(poisson_ratio) || poisson_ratio <= -1.0 || poisson_ratio >= 0.5)
+    throw std::invalid_argument("poisson_ratio must lie in (-1, 0.5)");
+}
+
+LandStiffness land_stiffness(const RingLandGeometry &g) {
+  g.validate();
+  constexpr double kPi = 3.14159265358979323846, kShear = 5.0 / 6.0;
+  const double shear_modulus = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
+  const double length = 0.5 * (g.bore - g.groove_diameter), h = g.land_width;
+  const double rigidity = g.youngs_modulus * h * h * h / (12.0 * (1.0 - g.poisson_ratio * g.poisson_ratio));
+  const double per_circumference =
+      length * length * length / (20.0 * rigidity) + length / (3.0 * kShear * shear_modulus * h);
+  LandStiffness k;
+  k.land = kPi * 0.5 * (g.bore + g.groove_diameter) / per_circumference;
+  k.ring = 2.0 * kPi * shear_modulus * g.ring_width / std::log(g.bore / (g.bore - 2.0 * g.ring_thickness));
+  k.total = 1.0 / (1.0 / k.land + 1.0 / k.ring);
+  return k;
+}
+
 SolveReport simulate(const PistonRingSystem &system, const PistonRingRun &run, const PistonRingObserver &observer) {
   run.validate();
   SolveReport report;

@@ -65,6 +65,36 @@ struct PistonRingParameters {
   double contact_area() const;  // pi D w
 };
 
+// Axial stiffness of the land that carries a ring, from the piston's and the ring's dimensions
+// (the thesis: piston and rings of the same grey cast iron). Two compliances in series:
+//  - land: the piston land between the groove root (diameter D_g) and the piston's outer
+//    diameter (taken as the bore D; the running clearance is << the land) is an annular plate of
+//    axial thickness h, built in at the groove root, free at the outside, loaded by the ring over
+//    its flank. With L = (D - D_g)/2 << D the plate is a strip in cylindrical bending
+//    (Timoshenko & Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed., sec. 1-2) with
+//    Timoshenko's shear term (shear coefficient 5/6). For a uniform flank pressure, the mean
+//    (work-conjugate) deflection under a load F per unit circumference is
+//      delta = F (L^3 / (20 D_p) + L / (3 kappa G h)),   D_p = E h^3 / (12 (1 - nu^2)),
+//    so k_land = pi D_m / (L^3 / (20 D_p) + L / (3 kappa G h)),  D_m = (D + D_g) / 2.
+//  - ring: the liner's friction enters the ring at its face (radius D/2) and leaves through the
+//    flank; axial shear of the annular section of width w, tau = F / (2 pi r w), gives
+//      k_ring = 2 pi G w / ln(D / (D - 2 t)).
+struct RingLandGeometry {
+  double bore = 0.0;             // m, D
+  double groove_diameter = 0.0;  // m, D_g, groove root
+  double land_width = 0.0;       // m, h, axial thickness of the land carrying the ring
+  double ring_width = 0.0;       // m, w
+  double ring_thickness = 0.0;   // m, t, radial
+  double youngs_modulus = 0.0;   // Pa
+  double poisson_ratio = 0.0;
+
+  void validate() const;  // throws std::invalid_argument naming the field
+};
+struct LandStiffness {
+  double land = 0.0, ring = 0.0, total = 0.0;  // N/m
+};
+LandStiffness land_stiffness(const RingLandGeometry &geometry);
+
 struct PistonRingSample {
   double t = 0.0;
   double crank_angle = 0.0;      // rad (negative before TDC)

@@ -24,7 +24,10 @@ void RingLinerWearSettings::validate() const {
   require(liner_cells >= 2 && liner_cells <= 10000000, "liner_cells must lie in [2, 1e7]");
   require(std::isfinite(liner_begin) && std::isfinite(liner_end) && liner_end > liner_begin,
           "liner_end must exceed liner_begin");
-  require(finite_positive(foundation_modulus), "foundation_modulus must be positive");
+  if (contact == FaceContact::Winkler)
+    require(finite_positive(foundation_modulus), "foundation_modulus must be positive");
+  else
+    require(finite_positive(contact_modulus), "contact_modulus must be positive");
   require(std::isfinite(ring_share) && ring_share >= 0.0 && ring_share <= 1.0, "ring_share must lie in [0, 1]");
   require(std::isfinite(step_safety) && step_safety > 0.0 && step_safety < 1.0, "step_safety must lie in (0, 1)");
   require(std::isfinite(fixed_step) && fixed_step >= 0.0, "fixed_step must be >= 0");
@@ -47,7 +50,23 @@ RingLinerWear::RingLinerWear(RingLinerWearSettings settings, tribo::ArchardWear 
   dz_ = s_.ring_width / s_.ring_cells;
   dx_ = (s_.liner_end - s_.liner_begin) / s_.liner_cells;
   ring_wear_.assign(s_.ring_cells, 0.0);
-  liner_wear_.assign(s_.liner_cells, 0.0);
+  liner_wear_ = std::make_shared<std::vector<double>>(s_.liner_cells, 0.0);
+  if (s_.contact == FaceContact::Winkler) {
+    stiffness_ = s_.foundation_modulus;
+  } else {
+    // Reference length w: the rigid-body constant of the half-plane only shifts the approach.
+    compliance_ = symmetric_toeplitz(half_plane_influence_row(s_.ring_cells, dz_, s_.contact_modulus, s_.ring_width));
+    const double lambda_min = smallest_eigenvalue_bound(compliance_);
+    require(lambda_min > 0.0, "ring face: half-plane compliance not positive definite");
+    stiffness_ = 1.0 / lambda_min;
+  }
+}
+
+void RingLinerWear::share_liner(const RingLinerWear &other) {
+  require(other.s_.liner_cells == s_.liner_cells && other.s_.liner_begin == s_.liner_begin &&
+              other.s_.liner_end == s_.liner_end,
+          "share_liner: the liner grids differ");
+  liner_wear_ = other.liner_wear_;
 }
 
 double RingLinerWear::ring_cell_centre(int i) const { return -0.5 * s_.ring_width + (i + 0.5) * dz_; }
@@ -55,7 +74,7 @@ double RingLinerWear::liner_cell_centre(int j) const { return s_.liner_begin + (
 
 double RingLinerWear::step() const {
   if (s_.fixed_step > 0.0) return s_.fixed_step;
-  return s_.step_safety * wear_.stable_slip_step(s_.foundation_modulus);
+  return s_.step_safety * wear_.stable_slip_step(stiffness_);
 }
 
 template <typename Visit>
@@ -78,7 +97,7 @@ void RingLinerWear::for_each_overlap(double x_ring, Visit visit) const {
 
 std::vector<double> RingLinerWear::gaps(double x_ring) const {
   std::vector<double> g(s_.ring_cells, 0.0);
-  for_each_overlap(x_ring, [&](int i, int j, double overlap) { g[i] += liner_wear_[j] * overlap / dz_; });
+  for_each_overlap(x_ring, [&](int i, int j, double overlap) { g[i] += (*liner_wear_)[j] * overlap / dz_; });
   for (int i = 0; i < s_.ring_cells; ++i) {
     const double z = 2.0 * ring_cell_centre(i) / s_.ring_width;
     g[i] += s_.crown_height * z * z + ring_wear_[i];
@@ -92,6 +111,27 @@ ContactPressure RingLinerWear::pressure(double x_ring, double load) const {
   result.pressure.assign(g.size(), 0.0);
   const double line_load = std::abs(load) / (kPi * s_.bore);  // N/m of circumference
   if (line_load == 0.0) return result;
+  if (s_.contact == FaceContact::HalfPlane) {
+    const int n = s_.ring_cells;
+    const Eigen::Map<const Eigen::VectorXd> gap0(g.data(), n);
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(n);
+    const double relief = gap0.maxCoeff() - gap0.minCoeff();
+    const double tolerance = 1e-10 * std::max(relief, line_load * s_.ring_width / s_.contact_modulus);
+    const LineContactResult r = solve_line_contact(compliance_, gap0, ones, dz_, line_load, tolerance, active_, &blocks_);
+    if (!r.converged)
+      throw std::runtime_error("ring-face contact: active set did not converge in " + std::to_string(r.iterations) +
+                               " passes");
+    double integral = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double p = r.pressure[i];
+      result.pressure[i] = p;
+      integral += p * dz_;
+      result.peak = std::max(result.peak, p);
+      if (p > 0.0) result.width += dz_;
+    }
+    result.mean = integral / result.width;
+    return result;
+  }
   // Water filling: with the m smallest gaps in contact, d = (q / (k_c dz) + sum g) / m.
   std::vector<double> sorted = g;
   std::sort(sorted.begin(), sorted.end());
@@ -136,9 +176,13 @@ void RingLinerWear::update(double x_ring, double load, double ds) {
     ring_deepest = std::max(ring_deepest, ring_wear_[i]);
   }
   for_each_overlap(x_ring, [&](int i, int j, double overlap) {
-    liner_wear_[j] += liner_share * depth[i] * overlap / dx_;
-    liner_deepest = std::max(liner_deepest, liner_wear_[j]);
+    auto &liner = *liner_wear_;
+    liner[j] += liner_share * depth[i] * overlap / dx_;
+    liner_deepest = std::max(liner_deepest, liner[j]);
   });
+  double added = 0.0;
+  for (std::size_t i = 0; i < depth.size(); ++i) added += depth[i];
+  liner_volume_ += kPi * s_.bore * dz_ * liner_share * added;
   archard_volume_ += wear_.volume(load, ds);
   ++updates_;
   char buffer[200];
@@ -178,8 +222,10 @@ double RingLinerWear::ring_volume() const {
   return kPi * s_.bore * dz_ * std::accumulate(ring_wear_.begin(), ring_wear_.end(), 0.0);
 }
 
-double RingLinerWear::liner_volume() const {
-  return kPi * s_.bore * dx_ * std::accumulate(liner_wear_.begin(), liner_wear_.end(), 0.0);
+double RingLinerWear::liner_volume() const { return liner_volume_; }
+
+double RingLinerWear::shared_liner_volume() const {
+  return kPi * s_.bore * dx_ * std::accumulate(liner_wear_->begin(), liner_wear_->end(), 0.0);
 }
 
 }  // namespace runin::continuum

@@ -1,7 +1,11 @@
 // Archard wear of a piston-ring face and the cylinder liner, with profile update.
-// Contact across the ring's axial width w is a Winkler layer: in ring cell i (centre z_i)
-//   p_i = k_c max(0, d - g_i),  g_i = crown (2 z_i / w)^2 + h_ring_i + h_liner(under cell i),
-// with the approach d set so that pi D sum_i p_i dz = W (load equilibrium, solved exactly).
+// Contact across the ring's axial width w, with the gap at zero approach in ring cell i (centre z_i)
+//   g_i = crown (2 z_i / w)^2 + h_ring_i + h_liner(under cell i),
+// is either (FaceContact::HalfPlane, the default of the CLI) an elastic half-plane line contact
+// solved by the boundary-element kernel of half_plane_contact.h (piecewise-constant panels = the
+// ring cells, combined modulus E*), or (FaceContact::Winkler) a Winkler layer
+//   p_i = k_c max(0, d - g_i);
+// in both the approach d is set so that pi D sum_i p_i dz = W (load equilibrium).
 // Sliding the ring by ds wears depth (k/H) p ds, shared between ring face and liner
 // (ring_share : 1 - ring_share); the liner gets it where the ring covers it (cell overlaps, so
 // volumes are conserved exactly). Steps are explicit in slip distance; the adaptive step is
@@ -11,14 +15,19 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "continuum/half_plane_contact.h"
 #include "tribo/wear.h"
 
 namespace runin::continuum {
 
+enum class FaceContact { Winkler, HalfPlane };
+
 struct RingLinerWearSettings {
+  FaceContact contact = FaceContact::Winkler;
   double bore = 0.1;             // m, D
   double ring_width = 0.01;      // m, w
   double crown_height = 0.0;     // m, parabolic ring-face crown (0 = flat)
@@ -26,7 +35,8 @@ struct RingLinerWearSettings {
   double liner_begin = 0.0;      // m, liner grid along the stroke coordinate x (ring centre positions)
   double liner_end = 0.0;        // m
   int liner_cells = 512;
-  double foundation_modulus = 0.0;  // Pa/m, k_c
+  double foundation_modulus = 0.0;  // Pa/m, k_c (Winkler)
+  double contact_modulus = 0.0;     // Pa, E* of ring and liner (HalfPlane)
   double ring_share = 0.5;       // share of the worn volume taken by the ring face (tribo::wear_share)
   double step_safety = 0.5;      // adaptive step = safety * stable_slip_step
   double fixed_step = 0.0;       // m; > 0 replaces the adaptive step (to show the instability)
@@ -58,7 +68,14 @@ class RingLinerWear {
   double liner_cell_centre(int j) const;  // x, m
   double step() const;                    // slip per wear update, m
 
-  // Exact Winkler contact of the ring centred at x_ring under load W.
+  // Shares `other`'s liner (same grid; both rings then wear and see one liner). Throws
+  // std::invalid_argument if the liner grids differ.
+  void share_liner(const RingLinerWear &other);
+  // Stiffness per area that bounds the explicit wear step: k_c (Winkler) or 1 / lambda_min(K).
+  double contact_stiffness() const { return stiffness_; }
+
+  // Contact of the ring centred at x_ring under load W (Winkler: exact water filling; half-plane:
+  // active-set BEM, std::runtime_error if it does not converge).
   ContactPressure pressure(double x_ring, double load) const;
   // Liner pressure (cell averages) under the ring at x_ring; 0 where the ring is not.
   std::vector<double> liner_pressure(double x_ring, double load) const;
@@ -72,9 +89,10 @@ class RingLinerWear {
   const std::string &message() const { return message_; }  // what crossed which limit; empty while ok
 
   const std::vector<double> &ring_wear() const { return ring_wear_; }    // m, per ring cell
-  const std::vector<double> &liner_wear() const { return liner_wear_; }  // m, per liner cell
+  const std::vector<double> &liner_wear() const { return *liner_wear_; }  // m, per liner cell
   double ring_volume() const;   // m^3, pi D sum h dz
-  double liner_volume() const;  // m^3
+  double liner_volume() const;  // m^3 this ring wore into the liner (= the liner's, unless shared)
+  double shared_liner_volume() const;  // m^3 of the whole liner profile (all rings sharing it)
   double archard_volume() const { return archard_volume_; }  // sum of ArchardWear::volume(W, ds)
   long updates() const { return updates_; }
 
@@ -87,8 +105,14 @@ class RingLinerWear {
   RingLinerWearSettings s_;
   tribo::ArchardWear wear_;
   double dz_ = 0.0, dx_ = 0.0;
-  std::vector<double> ring_wear_, liner_wear_;
+  std::vector<double> ring_wear_;
+  std::shared_ptr<std::vector<double>> liner_wear_;
+  double stiffness_ = 0.0;
+  Eigen::MatrixXd compliance_;                    // half-plane K over the ring cells
+  mutable ToeplitzBlockCache blocks_;
+  mutable std::vector<char> active_;              // last active set (warm start)
   double archard_volume_ = 0.0;
+  double liner_volume_ = 0.0;  // m^3, worn into the liner by this ring
   long updates_ = 0;
   RingLinerWearStatus status_ = RingLinerWearStatus::Ok;
   std::string message_;

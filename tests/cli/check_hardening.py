@@ -58,7 +58,7 @@ expect_refused("a directory as case file", ["feedback", INPUTS, "--output-dir", 
 expect_refused("empty --output-dir", ["feedback", os.path.join(INPUTS, "feedback_dry.toml"), "--output-dir", ""],
                r"--output-dir: must not be empty")
 piston = open(os.path.join(INPUTS, "piston_ring.toml")).read()
-wrap = write("wrap.toml", piston.replace("ring_cells = 64", "ring_cells = 4294967298"))
+wrap = write("wrap.toml", re.sub(r"(?m)^ring_cells = .*$", "ring_cells = 4294967298", piston))
 expect_refused("integer beyond int (2^32 + 2)", ["piston-ring", wrap, "--output-dir", "o", "--no-plot"],
                r"key 'wear.ring_cells': must be at most 2147483647, got 4294967298")
 cells = write("cells.toml", re.sub(r"(?m)^liner_cells = .*$", "liner_cells = 10000000", piston))
@@ -69,9 +69,57 @@ many = write("frames.toml", re.sub(r"(?m)^vtk_times = .*$", "vtk_times = " + fra
 expect_refused("20,000 VTK frames", ["piston-ring", many, "--output-dir", "o", "--no-plot"],
                r"key 'output.vtk_times': 20000 frames: at most 200 allowed")
 
-soft = write("soft.toml", piston.replace("ring_cells = 64", "ring_cells = 64\nfoundation_modulus = 1e-300"))
+soft = write("soft.toml", re.sub(r"(?m)^(ring_cells = .*)$", r"\1\nfoundation_modulus = 1e-300", piston))
 expect_refused("a foundation modulus of 1e-300", ["piston-ring", soft, "--output-dir", "o", "--no-plot"],
                r"key 'wear.foundation_modulus': must be at least 1e6 Pa/m, got 1e-300")
+
+# Ring pack (issue 14): overlapping grooves, non-positive stiffness or dimensions, inconsistent arrays.
+def pack_case(name, key, value, text=None):
+    text = piston if text is None else text
+    if re.search(r"(?m)^" + key + r" = ", text):
+        text = re.sub(r"(?m)^" + key + r" = [^#\n]*", f"{key} = {value}", text, count=1)
+    else:
+        text = text.replace("[ring_pack]", f"[ring_pack]\n{key} = {value}", 1)
+    return write(name, text)
+
+
+for label, name, key, value, pattern in [
+        ("overlapping grooves", "overlap.toml", "groove_position", "[0.0, -0.005]",
+         r"key 'ring_pack.groove_position': grooves 0 and 1 overlap: centres 0.005 m apart, less than the ring width "
+         r"0.01 m"),
+        ("a negative land stiffness", "stiffness.toml", "land_stiffness", "[1e7, -1e7]",
+         r"key 'ring_pack.land_stiffness': element 1: must be positive, got -1e\+07"),
+        ("a zero land width", "land.toml", "land_width", "[0.005, 0.0]",
+         r"key 'ring_pack.land_width': element 1: must be positive, got 0$"),
+        ("a negative groove diameter", "groove.toml", "groove_diameter", "[0.0815, -0.08]",
+         r"key 'ring_pack.groove_diameter': element 1: must be positive, got -0.08"),
+        ("a groove wider than the bore", "wide.toml", "groove_diameter", "[0.0815, 0.12]",
+         r"key 'ring_pack.groove_diameter': element 1: must be below ring.bore \(0.1\), got 0.12"),
+        ("one tension for two rings", "tension.toml", "elastic_pressure", "[0.2e6]",
+         r"key 'ring_pack.elastic_pressure': has 1 values, ring_pack.groove_diameter has 2"),
+        ("a zero ring tension", "tension0.toml", "elastic_pressure", "[0.2e6, 0.0]",
+         r"key 'ring_pack.elastic_pressure': element 1: must be positive, got 0"),
+        ("an unknown ring model", "model.toml", "model", '"three"',
+         r"key 'ring_pack.model': 'three' is not one of pack, single")]:
+    expect_refused(label, ["piston-ring", pack_case(name, key, value), "--output-dir", "o", "--no-plot"], pattern)
+both = write("both.toml", piston.replace("[ring]", "[ring]\nland_stiffness = 1e7", 1))
+expect_refused("ring.land_stiffness in a ring-pack case", ["piston-ring", both, "--output-dir", "o", "--no-plot"],
+               r"key 'ring.land_stiffness': is set per ring in \[ring_pack\] when the case has one")
+zero_width = write("width0.toml", re.sub(r"(?m)^width = [^#\n]*", "width = 0.0 ", piston, count=1))
+expect_refused("a zero ring width", ["piston-ring", zero_width, "--output-dir", "o", "--no-plot"],
+               r"key 'ring.width': must be positive, got 0")
+contact = write("contact.toml", re.sub(r'(?m)^contact = [^#\n]*', 'contact = "hertz" ', piston, count=1))
+expect_refused("an unknown face contact", ["piston-ring", contact, "--output-dir", "o", "--no-plot"],
+               r"key 'wear.contact': 'hertz' is not one of half_plane, winkler")
+single = re.sub(r"(?ms)^\[ring_pack\].*?(?=^\[)", "", piston).replace("[ring]", "[ring]\nelastic_pressure = 0.2e6", 1)
+single = single.replace("[wear]", "[wear]\ncrown_height = 2e-6", 1)
+nogeometry = write("nogeometry.toml", single)
+expect_refused("one ring without land geometry or stiffness", ["piston-ring", nogeometry, "--output-dir", "o", "--no-plot"],
+               r"key 'ring.groove_diameter': missing: the land stiffness is computed from ring.groove_diameter and "
+               r"ring.land_width \(or give ring.land_stiffness\)")
+thin = write("thin.toml", single.replace("[ring]", "[ring]\ngroove_diameter = 0.0815\nland_width = -0.005", 1))
+expect_refused("one ring with a negative land width", ["piston-ring", thin, "--output-dir", "o", "--no-plot"],
+               r"key 'ring.land_width': must be positive, got -0.005")
 journal = open(os.path.join(INPUTS, "journal_bearing.toml")).read()
 frames_jb = write("frames_jb.toml", re.sub(r"(?m)^frame_times = .*$", "frame_times = " + frames, journal))
 expect_refused("20,000 journal-bearing frames", ["journal-bearing", frames_jb, "--output-dir", "o", "--no-plot"],

@@ -301,3 +301,69 @@ TEST(PistonRingClaims, ThesisClaims2And3WithTheRunInLaw) {
     EXPECT_GT(runs[i - 1].steady_time, 1.1 * runs[i].steady_time);
   }
 }
+
+// Land stiffness from geometry (doc/piston_ring.md): the closed form's coefficients (1/20 for the
+// bending, 1/3 for the shear term of the mean deflection under a uniform flank load; the log of the
+// ring section's shear) against a numerical integration of the deflections they come from.
+TEST(PistonRingLand, StiffnessMatchesTheIntegratedPlateStripAndRingShear) {
+  const RingLandGeometry g{0.1, 0.0815, 0.005, 0.01, 0.01, 66e9, 0.27};
+  const LandStiffness k = land_stiffness(g);
+  const double e = g.youngs_modulus, nu = g.poisson_ratio, shear = e / (2.0 * (1.0 + nu)), h = g.land_width;
+  const double length = 0.5 * (g.bore - g.groove_diameter), rigidity = e * h * h * h / (12.0 * (1.0 - nu * nu));
+  // Cantilever strip under a uniform load q (per unit circumference and radial length): Euler-Bernoulli
+  // w_b = q x^2 (6 L^2 - 4 L x + x^2) / (24 D), Timoshenko shear w_s = q (L x - x^2/2) / (kappa G h).
+  const double q = 1.0;
+  const int n = 20000;
+  double mean = 0.0;
+  for (int i = 0; i <= n; ++i) {  // Simpson
+    const double x = length * i / n, weight = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    const double wb = q * x * x * (6.0 * length * length - 4.0 * length * x + x * x) / (24.0 * rigidity);
+    const double ws = q * (length * x - 0.5 * x * x) / (5.0 / 6.0 * shear * h);
+    mean += weight * (wb + ws) * (length / n) / 3.0 / length;
+  }
+  const double force = q * length;  // per unit circumference
+  const double expect_land = kPi * 0.5 * (g.bore + g.groove_diameter) * force / mean;
+  EXPECT_NEAR(k.land, expect_land, 1e-9 * expect_land);
+  // Ring section: du/dr = tau / G, tau = F / (2 pi r w), from the inner radius to the face.
+  double compliance = 0.0;
+  const double r0 = 0.5 * g.bore - g.ring_thickness, r1 = 0.5 * g.bore;
+  for (int i = 0; i <= n; ++i) {
+    const double r = r0 + (r1 - r0) * i / n, weight = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    compliance += weight * (r1 - r0) / n / 3.0 / (2.0 * kPi * r * g.ring_width * shear);
+  }
+  EXPECT_NEAR(k.ring, 1.0 / compliance, 1e-9 * k.ring);
+  EXPECT_NEAR(1.0 / k.total, 1.0 / k.land + 1.0 / k.ring, 1e-12 / k.total);
+  // the thesis's grooves: A (81.5 mm) stiffer than B (80.5 mm, longer land)
+  auto b = g;
+  b.groove_diameter = 0.0805;
+  EXPECT_GT(k.total, land_stiffness(b).total);
+  EXPECT_NEAR(k.total, 2.36e9, 0.01e9);
+}
+
+TEST(PistonRingLand, RejectsAGrooveAtOrOutsideTheBore) {
+  RingLandGeometry g{0.1, 0.1, 0.005, 0.01, 0.01, 66e9, 0.27};
+  EXPECT_THROW(land_stiffness(g), std::invalid_argument);
+  g.groove_diameter = 0.08;
+  g.land_width = 0.0;
+  EXPECT_THROW(land_stiffness(g), std::invalid_argument);
+}
+
+// Two rings on one liner: each sees the other's liner wear, and the liner's volume is the sum of
+// what each ring wore into it.
+TEST(RingLinerWear, TwoRingsShareTheLiner) {
+  auto s = wear_settings(2e-6);
+  const runin::tribo::ArchardWear archard(1e-3, 2e9);
+  RingLinerWear a(s, archard), b(s, archard);
+  b.share_liner(a);
+  const double before = b.pressure(0.05, 628.0).peak;
+  ASSERT_TRUE(a.slide(0.03, 0.07, 628.0, 628.0));
+  EXPECT_GT(a.shared_liner_volume(), 0.0);
+  EXPECT_NE(b.pressure(0.05, 628.0).peak, before);  // ring B now runs on A's worn track
+  ASSERT_TRUE(b.slide(0.07, 0.03, 471.0, 471.0));
+  EXPECT_NEAR(a.shared_liner_volume(), a.liner_volume() + b.liner_volume(), 1e-12 * a.shared_liner_volume());
+  EXPECT_EQ(a.shared_liner_volume(), b.shared_liner_volume());
+  auto other = s;
+  other.liner_cells = 256;
+  RingLinerWear c(other, archard);
+  EXPECT_THROW(c.share_liner(a), std::invalid_argument);
+}
