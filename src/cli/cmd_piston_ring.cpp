@@ -14,6 +14,7 @@
 
 #include "cli/case_file.h"
 #include "cli/piston_ring_case.h"
+#include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/piston_ring.h"
 #include "continuum/ring_liner_wear.h"
@@ -397,7 +398,7 @@ int run(const Options &o, const PlotRunner &plot) {
   for (double mu0 : c.sweep_mu0) sweep.push_back({mu0, run_pack(c, piston_ring_friction_with_mu0(c, mu0))});
 
   // Everything is computed; the output set is staged and moved in only when complete.
-  StagedOutput out(o.output_dir, {"piston_ring.csv", "piston_ring_?.csv", "piston_ring_rings.csv",
+  StagedOutput out(o.output_dir, {"piston_ring.csv", "piston_ring_summary.csv", "piston_ring_?.csv", "piston_ring_rings.csv",
                                   "piston_ring_liner.csv", "piston_ring_face.csv", "piston_ring_face_?.csv",
                                   "piston_ring_mu0.csv", "piston_ring.png", "piston_ring_mu0.png", "vtk/liner.pvd",
                                   "vtk/liner_*.vts", "vtk/ring_face.pvd", "vtk/ring_face_*.vts", "vtk/ring_face_?.pvd"});
@@ -413,6 +414,17 @@ int run(const Options &o, const PlotRunner &plot) {
   } else {
     out.write("piston_ring.csv", csv_text(main.grid.front(), passes.front().rows));
     written.push_back("piston_ring.csv");
+  }
+  {
+    double wear_volume = 0.0;  // ring faces and liner at the end of the run
+    for (const auto &pass : passes) wear_volume += pass.rows.back().ring + pass.rows.back().liner;
+    const auto &m = main.summary;
+    out.write("piston_ring_summary.csv",
+              std::string(kRunSummaryHeader) + "\n" +
+                  run_summary_row({m.peak_friction_force, m.peak_time, m.breakaway_time, m.steady_time, m.steady_mu,
+                                   wear_volume}) +
+                  "\n");
+    written.push_back("piston_ring_summary.csv");
   }
   {
     std::string text =

@@ -38,14 +38,16 @@ struct Element {
 
 // The parameters the thesis does not fix and RunIn chose (doc/validation.md): coupling stiffness and damping,
 // the run-in law's relaxation (feedback A and B: length 1 / (2 A K1)), and the geometry that sets a stiffness
-// computed from it (shaft length for the journal bearing's G J / L).
+// computed from it (shaft length for the journal bearing's G J / L, land width for the piston ring's land).
+// An array key (one value per ring of a pack) is scaled as a whole; its `value` column is the first element.
 const std::vector<Element> &elements() {
   static const std::vector<Element> list = {
       {"pin-on-disk", "pin_on_disk", {"friction.A", "friction.B", "pin.mass"}},
       {"journal-bearing", "journal_bearing",
        {"drive.stiffness", "shaft.length", "drive.damping_ratio", "friction.A", "friction.B"}},
       {"piston-ring", "piston_ring",
-       {"ring.land_stiffness", "ring.land_damping_ratio", "friction.A", "friction.B"}},
+       {"ring.land_stiffness", "ring_pack.land_stiffness", "ring_pack.land_width", "ring.land_damping_ratio",
+        "friction.A", "friction.B"}},
   };
   return list;
 }
@@ -68,17 +70,40 @@ struct Run {
   double seconds = 0.0;
 };
 
-std::optional<double> number_at(const toml::table &root, const std::string &key) {
+// A key's real values: one number, or an array of them (a per-ring key of a ring pack); empty when the key is
+// absent or holds anything else.
+std::vector<double> numbers_at(const toml::table &root, const std::string &key) {
   const toml::node *node = root.at_path(key).node();
-  if (!node) return std::nullopt;
-  if (const auto *v = node->as_floating_point()) return v->get();
-  return std::nullopt;
+  if (!node) return {};
+  if (const auto *v = node->as_floating_point()) return {v->get()};
+  std::vector<double> values;
+  if (const auto *array = node->as_array())
+    for (const auto &element : *array) {
+      if (!element.is_floating_point()) return {};
+      values.push_back(element.as_floating_point()->get());
+    }
+  return values;
 }
 
-void set_number(toml::table &root, const std::string &key, double value) {
+std::optional<double> number_at(const toml::table &root, const std::string &key) {
+  const auto values = numbers_at(root, key);
+  if (values.empty()) return std::nullopt;
+  return values.front();
+}
+
+// Multiplies the key's value (every element of an array) by `factor`.
+void scale_key(toml::table &root, const std::string &key, double factor) {
   const auto dot = key.rfind('.');
   toml::table *table = dot == std::string::npos ? &root : root.at_path(key.substr(0, dot)).as_table();
-  table->insert_or_assign(dot == std::string::npos ? key : key.substr(dot + 1), value);
+  const std::string name = dot == std::string::npos ? key : key.substr(dot + 1);
+  const auto values = numbers_at(root, key);
+  if (table->get(name)->is_array()) {
+    toml::array scaled;
+    for (double v : values) scaled.push_back(v * factor);
+    table->insert_or_assign(name, std::move(scaled));
+  } else {
+    table->insert_or_assign(name, values.front() * factor);
+  }
 }
 
 std::string to_toml(const toml::table &root) {
@@ -161,11 +186,14 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
     if (!node)
       throw InputError(fmt::format("{}: key '{}': not set in the case file; a sweep varies a value the case sets",
                                    o.case_path, key));
-    if (!node->is_floating_point())
-      throw InputError(fmt::format("{}: key '{}': is {}, a sweep varies a real number (write it with a decimal point)",
-                                   o.case_path, key, type_name(*node)));
-    if (!(*number_at(base, key) > 0.0))
-      throw InputError(fmt::format("{}: key '{}': a sweep over decades needs a positive value", o.case_path, key));
+    const auto values = numbers_at(base, key);
+    if (values.empty())
+      throw InputError(fmt::format(
+          "{}: key '{}': is {}, a sweep varies a real number or an array of them (write it with a decimal point)",
+          o.case_path, key, type_name(*node)));
+    for (double v : values)
+      if (!(v > 0.0))
+        throw InputError(fmt::format("{}: key '{}': a sweep over decades needs positive values", o.case_path, key));
   }
 
   std::vector<double> factors;  // log-spaced over one span, centred on 1
@@ -185,7 +213,7 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
   for (std::size_t n = 0; n < runs.size(); ++n) {
     Run &r = runs[n];
     toml::table variant = base;
-    if (!r.key.empty()) set_number(variant, r.key, r.value);
+    if (!r.key.empty()) scale_key(variant, r.key, r.factor);
     out.write(r.case_name, to_toml(variant));
     const fs::path run_dir = out.scratch(fmt::format("runs/{}", n)), log = out.scratch(fmt::format("runs/{}.log", n));
     fs::create_directories(run_dir.parent_path());
