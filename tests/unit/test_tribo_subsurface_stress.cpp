@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -115,6 +116,7 @@ TEST(SubsurfaceStress, HamiltonFrictionlessMaximumIs062At048)
 {
   const SlidingHertzSphere c{1.0, 1.0, 0.3, 0.0};
   const auto [z, vm] = maximise([&](double d) { return hamilton_stress(c, 0.0, 0.0, d).von_mises(); }, 0.05, 2.0);
+  std::cout << "Hamilton mu = 0, nu = 0.3: max von Mises " << vm << " p0 at z = " << z << " a\n";
   EXPECT_NEAR(vm, 0.62, 0.01 * 0.62);
   EXPECT_NEAR(z, 0.48, 0.01 * 0.48);
   // The axis holds the maximum of the whole y = 0 section.
@@ -192,6 +194,8 @@ TEST(SubsurfaceStress, HamiltonSlidingMaximumMovesToTheTrailingEdge)
   };
   const StressPeak sub = subsurface_max(0.3);
   const double surf = surface_max(0.3);
+  std::cout << "Hamilton mu = 0.3, nu = 0.3: subsurface max " << sub.von_mises << " p0 at x = " << sub.x
+            << " a, z = " << sub.z << " a; surface max " << surf << " p0\n";
   EXPECT_GT(sub.x, 0.2);
   EXPECT_LT(sub.z, 0.46);
   EXPECT_GT(sub.von_mises, 0.62);
@@ -220,6 +224,9 @@ TEST(SubsurfaceStress, PatchIntegrationMatchesHamilton)
       }
     EXPECT_LT(worst, 0.02) << "mu " << mu;
     const StressPeak pi = f.peak_von_mises(), ph = hamilton_field(c, x, z).peak_von_mises();
+    std::cout << "3-D tier, 64 x 64 patches, mu = " << mu << ": largest component error " << worst
+              << " p0; peak von Mises " << pi.von_mises << " p0 at (" << pi.x << ", " << pi.z << ") vs Hamilton "
+              << ph.von_mises << " p0 at (" << ph.x << ", " << ph.z << ")\n";
     EXPECT_NEAR(pi.von_mises, ph.von_mises, 0.02 * ph.von_mises) << "mu " << mu;
     EXPECT_NEAR(pi.z, ph.z, 0.05) << "mu " << mu;
     // Off the section and at arbitrary points (generic, non-Toeplitz path).
@@ -242,6 +249,9 @@ TEST(SubsurfaceStress, PatchIntegrationConverges)
     const StressField h = hamilton_field(c, {0.0}, z);
     error.push_back(std::abs(f.peak_von_mises().von_mises - h.peak_von_mises().von_mises));
   }
+  std::cout << "3-D tier, peak von Mises error on the axis for n = 9, 17, 33, 65 patches:";
+  for (double e : error) std::cout << " " << e;
+  std::cout << " p0\n";
   for (std::size_t i = 1; i < error.size(); ++i) EXPECT_LT(error[i], error[i - 1]);
   EXPECT_LT(error.back(), 0.005 * 0.62);
 }
@@ -282,9 +292,11 @@ TEST(SubsurfaceStress, LineContactMatchesJohnsonAndMcEwen)
 {
   const double nu = 0.3;
   const auto [zt, tau] = maximise([&](double z) { return 0.5 * johnson_line_axis(z, nu).tresca(); }, 0.1, 2.0);
+  std::cout << "Johnson 4.50, nu = 0.3: tau_1 max " << tau << " p0 at z = " << zt << " b\n";
   EXPECT_NEAR(tau, 0.30, 0.01 * 0.30);
   EXPECT_NEAR(zt, 0.78, 0.01 * 0.78);
   const auto [zv, vm] = maximise([&](double z) { return johnson_line_axis(z, nu).von_mises(); }, 0.1, 2.0);
+  std::cout << "Johnson 4.50, nu = 0.3: von Mises max " << vm << " p0 at z = " << zv << " b\n";
   EXPECT_NEAR(vm, 0.557, 0.01 * 0.557);
   EXPECT_NEAR(zv, 0.70, 0.01 * 0.70);
 
@@ -304,6 +316,8 @@ TEST(SubsurfaceStress, LineContactMatchesJohnsonAndMcEwen)
     const std::vector<double> x = cell_centres(-2.0, 2.0, 64), z = uniform_points(0.0, 2.0, 64);
     const StressPeak pi = line_traction_field(lt, nu, x, z).peak_von_mises();
     const StressPeak pm = mcewen_field(c, x, z).peak_von_mises();
+    std::cout << "2-D tier, 512 strips, mu = " << mu << ": peak von Mises " << pi.von_mises << " p0 at (" << pi.x
+              << ", " << pi.z << ") vs McEwen " << pm.von_mises << " p0 at (" << pm.x << ", " << pm.z << ")\n";
     EXPECT_NEAR(pi.von_mises, pm.von_mises, 0.02 * pm.von_mises) << "mu " << mu;
     if (mu == 0.0) EXPECT_NEAR(pm.von_mises, vm, 0.01 * vm);
   }
