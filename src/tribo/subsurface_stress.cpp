@@ -126,12 +126,8 @@ struct CornerPair {
   StressTensor normal, shear;
 };
 
-// Y + rho without cancellation for Y < 0 (and its log).
+// Y + rho without cancellation for Y < 0.
 inline double plus_rho(double Y, double rho, double xz2) { return Y >= 0.0 ? Y + rho : xz2 / (rho - Y); }
-inline double log_plus_rho(double Y, double rho, double xz2)
-{
-  return Y >= 0.0 ? std::log(Y + rho) : std::log(xz2) - std::log(rho - Y);
-}
 
 inline CornerPair corner(double X, double Y, double z, double nu, bool with_shear)
 {
@@ -158,7 +154,7 @@ inline CornerPair corner(double X, double Y, double z, double nu, bool with_shea
   k.normal.xz = -zzy;
   k.normal.xy = -(c12 * std::log(rho + z) + (surface ? 0.0 : z / rho));
   if (with_shear) {
-    const double LY = log_plus_rho(Y, rho, xz2), LX = log_plus_rho(X, rho, yz2);
+    const double LY = std::log(ypr), LX = std::log(xpr);
     const double zyr = surface ? 0.0 : z * Y / (rho * (rho + z));
     const double zxr = surface ? 0.0 : z * X / (rho * (rho + z));
     k.shear.xx = 2.0 * LY + zyr + zzy + 2.0 * nu * Y / (rho + z);
@@ -199,12 +195,13 @@ std::vector<double> corner_weights(const std::vector<double> &v, int nx, int ny)
 struct LineCorner {
   double nxx, nzz, nxz, txx, tzz, txz;
 };
-inline LineCorner line_corner(double X, double z, double r2_floor)
+inline LineCorner line_corner(double X, double z, double r2_floor, bool with_shear)
 {
   const double r2 = std::max(X * X + z * z, r2_floor);
   const double th = std::atan2(X, z);
   const double xz = X * z / r2, zz = z * z / r2;
-  return {0.5 * (th - xz), 0.5 * (th + xz), -0.5 * zz, 0.5 * std::log(r2) + 0.5 * zz, -0.5 * zz, 0.5 * (th - xz)};
+  const double log_r = with_shear ? 0.5 * std::log(r2) : 0.0;
+  return {0.5 * (th - xz), 0.5 * (th + xz), -0.5 * zz, log_r + 0.5 * zz, -0.5 * zz, 0.5 * (th - xz)};
 }
 
 }  // namespace
@@ -387,7 +384,7 @@ StressField line_traction_field(const LineTraction &t, double nu, const std::vec
       if (wp == 0.0 && wq == 0.0) continue;
       const double xi = t.edges[e];
       for (std::size_t i = 0; i < x.size(); ++i) {
-        const LineCorner c = line_corner(x[i] - xi, z[k], r2_floor);
+        const LineCorner c = line_corner(x[i] - xi, z[k], r2_floor, wq != 0.0);
         row[i].xx += wp * c.nxx + wq * c.txx;
         row[i].zz += wp * c.nzz + wq * c.tzz;
         row[i].xz += wp * c.nxz + wq * c.txz;
@@ -454,23 +451,36 @@ StressField patch_traction_field(const PatchTraction &t, double nu, const std::v
   f.x = x, f.z = z;
   f.stress.assign(x.size() * z.size(), StressTensor{});
   const double scale = 1.0 / (2.0 * kPi);
-  std::vector<CornerPair> table;
+  std::vector<double> table_soa, acc;
   for (std::size_t k = 0; k < z.size(); ++k) {
     StressTensor *row = &f.stress[x.size() * k];
+    if (centres) acc.assign(6 * static_cast<std::size_t>(t.nx), 0.0);
     for (int j = 0; j < cy; ++j) {
       if (!row_used[j]) continue;
       const double Y = y - (t.y0 + j * t.dy);
       if (centres) {
-        // d = i - c in [-nx, nx - 1], stored at d + nx.
-        table.resize(2 * static_cast<std::size_t>(t.nx));
-        for (int d = -t.nx; d < t.nx; ++d) table[d + t.nx] = corner((d + 0.5) * t.dx, Y, z[k], nu, shear);
+        // d = i - c in [-nx, nx - 1], stored at d + nx; components in separate arrays (structure of arrays) so
+        // the sum over i below is a plain vectorisable multiply-add.
+        const std::size_t m = 2 * static_cast<std::size_t>(t.nx);
+        table_soa.assign(12 * m, 0.0);
+        for (int d = -t.nx; d < t.nx; ++d) {
+          const CornerPair kp = corner((d + 0.5) * t.dx, Y, z[k], nu, shear);
+          const double v[12] = {kp.normal.xx, kp.normal.yy, kp.normal.zz, kp.normal.yz, kp.normal.xz, kp.normal.xy,
+                                kp.shear.xx,  kp.shear.yy,  kp.shear.zz,  kp.shear.yz,  kp.shear.xz,  kp.shear.xy};
+          for (int q = 0; q < 12; ++q) table_soa[q * m + d + t.nx] = v[q];
+        }
         for (int c = 0; c < cx; ++c) {
           const double a = wp[c + cx * j], b = weight_q(c + cx * j);
           if (a == 0.0 && b == 0.0) continue;
-          for (int i = 0; i < t.nx; ++i) {
-            const CornerPair &kp = table[i - c + t.nx];
-            accumulate(row[i], kp.normal, a);
-            if (b != 0.0) accumulate(row[i], kp.shear, b);
+          const std::size_t offset = static_cast<std::size_t>(t.nx - c);    // d + nx at i = 0
+          for (int q = 0; q < 6; ++q) {
+            double *out = &acc[q * static_cast<std::size_t>(t.nx)];
+            const double *tn = &table_soa[q * m + offset];
+            const double *ts = &table_soa[(q + 6) * m + offset];
+            if (b != 0.0)
+              for (int i = 0; i < t.nx; ++i) out[i] += a * tn[i] + b * ts[i];
+            else
+              for (int i = 0; i < t.nx; ++i) out[i] += a * tn[i];
           }
         }
       } else {
@@ -486,6 +496,11 @@ StressField patch_traction_field(const PatchTraction &t, double nu, const std::v
         }
       }
     }
+    if (centres)
+      for (int i = 0; i < t.nx; ++i) {
+        const std::size_t n = static_cast<std::size_t>(t.nx);
+        row[i] = {acc[i], acc[n + i], acc[2 * n + i], acc[3 * n + i], acc[4 * n + i], acc[5 * n + i]};
+      }
     for (std::size_t i = 0; i < x.size(); ++i) row[i] = row[i].scaled(scale);
   }
   return f;
