@@ -15,7 +15,7 @@
 //   hertz_axis_stress: the frictionless sphere on its axis, Johnson, Contact Mechanics (1985), eq. 3.45
 //                      (an independent check of the mu = 0 Hamilton normal part).
 //   mcewen_stress:     sliding Hertzian line contact (plane strain), p = p0 sqrt(1 - x^2/b^2), q = mu p;
-//                      McEwen (1949), Phil. Mag. 40:454, as in Johnson eqs. 4.? (normal) and 7.? (tangential).
+//                      McEwen (1949), Phil. Mag. 40:454, as in Johnson §4.2 (normal) and §7.1 (tangential).
 // Influence-function tier (tier 2), for any traction distribution (worn profiles):
 //   line_traction_*:   2-D plane strain. Tractions piecewise constant on strips; each strip integrated
 //                      analytically from the Flamant line-load solutions (Johnson eqs. 2.15, 2.19, §2.6).
