@@ -2,6 +2,8 @@
 #include "cli/case_reader.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -24,7 +26,7 @@ using continuum::SlidingFriction;
 const Schema kSchema = {
     {"", {"title", "pin", "loading", "friction", "run", "solver", "contact", "wear", "output", "sweep"}},
     {"contact", {"tip_radius", "pin_youngs_modulus", "pin_poisson_ratio", "disk_youngs_modulus",
-                 "disk_poisson_ratio", "rings", "grid_radius"}},
+                 "disk_poisson_ratio", "rings", "grid_radius", "materials", "pin_material", "disk_material"}},
     {"wear", {"k", "hardness", "form", "step_safety", "max_steps"}},
     {"output", {"vtk_times"}},
     {"pin", {"mass", "track_radius", "normal_load"}},
@@ -117,6 +119,43 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
   }
 }
 
+tribo::Material read_runin_material(const std::string &path, const std::string &name) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("cannot open " + path);
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    std::istringstream words(line);
+    std::string kind, which;
+    if (!(words >> kind) || kind != "material" || !(words >> which) || which != name) continue;
+    std::vector<double> v;
+    std::string word;
+    while (words >> word) {
+      try {
+        std::size_t used = 0;
+        v.push_back(std::stod(word, &used));
+        if (used != word.size() || !std::isfinite(v.back())) throw std::invalid_argument(word);
+      } catch (const std::exception &) {
+        throw std::invalid_argument(path + " line " + std::to_string(lineno) + ": material " + name +
+                                    ": not a finite number: '" + word + "'");
+      }
+    }
+    if (v.size() != 4 && v.size() != 5)
+      throw std::invalid_argument(path + " line " + std::to_string(lineno) + ": material needs NAME E nu rho H [S_y]");
+    tribo::Material m;
+    m.youngs_modulus = v[0];
+    m.poisson_ratio = v[1];
+    m.hardness = v[3];
+    m.yield_strength = v.size() == 5 ? v[4] : 0.0;
+    m.validate(path + " line " + std::to_string(lineno) + ": material " + name);
+    return m;
+  }
+  throw std::invalid_argument(path + ": no material '" + name + "'");
+}
+
 PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path) {
   const CaseReader reader(path, parse_toml(path), kSchema);
   reader.reject_unknown_keys();
@@ -188,6 +227,40 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     k.pin.poisson_ratio = reader.non_negative("contact.pin_poisson_ratio", 0.37);
     k.disk.youngs_modulus = reader.positive("contact.disk_youngs_modulus", 69e9);
     k.disk.poisson_ratio = reader.non_negative("contact.disk_poisson_ratio", 0.33);
+    // Yield strengths (and E, nu unless given above) from a RunIn coefficient file, for the subsurface stress
+    // verdict (doc/subsurface_stress.md).
+    if (reader.has("contact.materials") || reader.has("contact.pin_material") || reader.has("contact.disk_material")) {
+      const std::string file = reader.text("contact.materials", "");
+      if (file.empty()) reader.fail("contact.materials", "needed with contact.pin_material / disk_material");
+      // Relative paths: to the case file's directory, else to the RunIn source tree (the shipped potentials/).
+      std::filesystem::path resolved(file);
+      if (resolved.is_relative()) {
+        resolved = std::filesystem::path(path).parent_path() / file;
+#ifdef RUNIN_SOURCE_DIR
+        if (!std::filesystem::exists(resolved) && std::filesystem::exists(std::filesystem::path(RUNIN_SOURCE_DIR) / file))
+          resolved = std::filesystem::path(RUNIN_SOURCE_DIR) / file;
+#endif
+      }
+      k.materials_path = resolved.lexically_normal().string();
+      k.pin_name = reader.text("contact.pin_material", "");
+      k.disk_name = reader.text("contact.disk_material", "");
+      if (k.pin_name.empty() || k.disk_name.empty())
+        reader.fail("contact.materials", "needs both contact.pin_material and contact.disk_material");
+      try {
+        const tribo::Material pin = read_runin_material(k.materials_path, k.pin_name);
+        const tribo::Material disk = read_runin_material(k.materials_path, k.disk_name);
+        if (!reader.has("contact.pin_youngs_modulus")) k.pin.youngs_modulus = pin.youngs_modulus;
+        if (!reader.has("contact.pin_poisson_ratio")) k.pin.poisson_ratio = pin.poisson_ratio;
+        if (!reader.has("contact.disk_youngs_modulus")) k.disk.youngs_modulus = disk.youngs_modulus;
+        if (!reader.has("contact.disk_poisson_ratio")) k.disk.poisson_ratio = disk.poisson_ratio;
+        k.pin.yield_strength = pin.yield_strength;
+        k.disk.yield_strength = disk.yield_strength;
+        k.pin.hardness = pin.hardness;
+        k.disk.hardness = disk.hardness;
+      } catch (const std::invalid_argument &e) {
+        reader.fail("contact.materials", e.what());
+      }
+    }
     for (const char *key : {"contact.pin_poisson_ratio", "contact.disk_poisson_ratio"})
       if (reader.number(key, 0.0) >= 0.5) reader.fail(key, "must be < 0.5");
     const long rings = reader.positive_integer("contact.rings", 256);

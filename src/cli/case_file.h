@@ -26,7 +26,9 @@ class InputError : public std::runtime_error {
 // [contact] (Hertz tip on the flat disk, discretised face) and optional [wear] (Archard on the pin).
 struct PinContactCase {
   double tip_radius = 0.0;                 // m
-  tribo::Material pin, disk;               // E, nu (hardness of the pin from [wear])
+  tribo::Material pin, disk;               // E, nu (hardness of the pin from [wear]); S_y from `materials`
+  std::string materials_path;              // contact.materials (.runin file), resolved; empty: none
+  std::string pin_name, disk_name;         // contact.pin_material / disk_material in that file
   int rings = 256;
   std::optional<double> grid_radius;       // m; absent: sized from Hertz and the Archard volume
   std::optional<tribo::ArchardWear> wear;  // absent: contact only, no wear
@@ -53,6 +55,10 @@ struct PinOnDiskCase {
 // The case with its static coefficient replaced by `mu0` (see friction_with_static_coefficient), and
 // the torque re-derived from eq. 4.11 if it was targeted.
 PinOnDiskCase with_mu0(const PinOnDiskCase &c, double mu0);
+
+// One `material NAME E nu rho H [S_y]` line of a RunIn coefficient file (potentials/*.runin). Throws
+// std::invalid_argument naming the file and line (or the missing material).
+tribo::Material read_runin_material(const std::string &path, const std::string &name);
 
 // `friction` (of [friction] model `model`) with the static coefficient replaced by mu0, the thesis's
 // one varied parameter: constant: mu0 (+ alpha V); static_kinetic: mu_static = mu0, mu_kinetic in the

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <tuple>
 
 #include <fmt/core.h>
 
@@ -38,6 +39,8 @@ struct Curve {
   std::vector<Frame> frames;
   long wear_steps = 0;
   double grid_radius = 0.0;
+  std::vector<double> final_pressure;  // Pa per ring at the end of the run (subsurface stress)
+  double ring_width = 0.0;
 };
 
 // Dynamics first (CVODE), then the wear stepper driven by the sliding distance of each output
@@ -112,6 +115,8 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
     }
   }
   curve.wear_steps = pin->steps();
+  curve.final_pressure = pin->contact().pressure;
+  curve.ring_width = pin->grid().ring_width();
   return curve;
 }
 
@@ -130,7 +135,54 @@ std::string csv_text(const std::vector<Row> &rows) {
   return text;
 }
 
+// Subsurface stress at the start (unworn tip: Hertz, Hamilton's closed form, mu of break-away) and at the end
+// (solved pressure of the worn profile: influence functions, the final mu). doc/subsurface_stress.md.
+struct StressFrame {
+  double time;
+  continuum::ContactStress stress;
+};
+std::vector<StressFrame> subsurface_stress(const PinOnDiskCase &c, const Curve &curve) {
+  std::vector<StressFrame> frames;
+  if (!c.contact) return frames;
+  const auto &k = *c.contact;
+  const double load = c.parameters.normal_load;
+  const auto hertz = continuum::hertz_sphere_on_flat(k.tip_radius, k.effective_modulus(), load);
+  const double mu_start = curve.summary.start_friction_force / load;
+  frames.push_back({curve.rows.front().s.t, continuum::hertz_contact_stress(hertz.peak_pressure, hertz.contact_radius,
+                                                                            mu_start, k.pin, k.disk)});
+  const double mu_end = std::abs(curve.rows.back().s.mu);
+  frames.push_back({curve.rows.back().s.t, continuum::ring_contact_stress(curve.final_pressure, curve.ring_width,
+                                                                          mu_end, k.pin, k.disk)});
+  return frames;
+}
+
 #ifdef RUNIN_HAVE_VTK
+// Section y = 0 below the contact: points (x, 0, -depth), one frame per stress evaluation, each body's
+// von Mises and Tresca stress and the disk's tensor.
+std::vector<std::string> write_stress(const std::vector<StressFrame> &frames, const fs::path &dir) {
+  std::vector<coupling::SurfaceFrame> out;
+  for (const auto &f : frames) {
+    const auto &disk = f.stress.disk.field, &pin = f.stress.pin.field;
+    coupling::SurfaceFrame s;
+    s.time = f.time;
+    s.nu = static_cast<int>(disk.x.size());
+    s.nv = static_cast<int>(disk.z.size());
+    for (double z : disk.z)
+      for (double x : disk.x) s.points.push_back({x, 0.0, -z});
+    std::vector<double> xx, yy, zz, yz, xz, xy;
+    for (const auto &t : disk.stress) {
+      xx.push_back(t.xx), yy.push_back(t.yy), zz.push_back(t.zz);
+      yz.push_back(t.yz), xz.push_back(t.xz), xy.push_back(t.xy);
+    }
+    s.fields = {{"von_mises_disk_Pa", disk.von_mises()}, {"tresca_disk_Pa", disk.tresca()},
+                {"von_mises_pin_Pa", pin.von_mises()},   {"tresca_pin_Pa", pin.tresca()},
+                {"sigma_xx_disk_Pa", xx}, {"sigma_yy_disk_Pa", yy}, {"sigma_zz_disk_Pa", zz},
+                {"sigma_yz_disk_Pa", yz}, {"sigma_xz_disk_Pa", xz}, {"sigma_xy_disk_Pa", xy}};
+    out.push_back(std::move(s));
+  }
+  return coupling::write_surface_series(out, dir.string(), "subsurface");
+}
+
 // Revolved pin face: radius x angle grid, z = height of the worn tip profile above its apex.
 std::vector<std::string> write_frames(const std::vector<Frame> &frames, const fs::path &dir) {
   constexpr int angles = 49;  // 7.5 degree steps, closed
@@ -191,7 +243,9 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
 
   // Everything is computed; the output set is staged and moved in only when complete.
   StagedOutput out(o.output_dir, {"pin_on_disk.csv", "pin_on_disk.png", "pin_on_disk_mu0.csv", "pin_on_disk_mu0.png",
-                                  "pin_on_disk_mu0_summary.csv", "pin_face.pvd", "pin_face_*.vts"});
+                                  "pin_on_disk_mu0_summary.csv", "pin_face.pvd", "pin_face_*.vts", "subsurface.pvd",
+                                  "subsurface_*.vts"});
+  const std::vector<StressFrame> stress = subsurface_stress(c, curve);
   out.write("pin_on_disk.csv", csv_text(curve.rows));
   std::vector<std::string> written = {"pin_on_disk.csv"};
   if (!sweep.empty()) {
@@ -224,9 +278,10 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
       written.push_back("pin_on_disk_mu0.png");
     }
   }
-  std::string vtk_index;
+  std::string vtk_index, stress_index;
 #ifdef RUNIN_HAVE_VTK
   if (!curve.frames.empty()) vtk_index = out.destination_of(write_frames(curve.frames, out.staging()).back()).string();
+  if (!stress.empty()) stress_index = out.destination_of(write_stress(stress, out.staging()).back()).string();
 #endif
   out.commit();
 
@@ -258,6 +313,39 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
                  last.wear_volume, c.contact->wear->form() == tribo::ArchardForm::thesis ? "3" : "",
                  c.contact->wear->volume(p.normal_load, last.s.distance), curve.wear_steps);
   }
+  std::vector<std::string> warnings;
+  for (std::size_t i = 0; i < stress.size(); ++i) {
+    const auto &f = stress[i].stress;
+    fmt::print("  subsurface stress {} (t = {:g} s): {}, p0 = {:.4g} Pa, a = {:.4g} m, mu = {:.3g}\n",
+               i == 0 ? "start" : "end", stress[i].time, f.method, f.peak_pressure, f.contact_radius,
+               f.friction_coefficient);
+    const auto &k = *c.contact;
+    for (const auto &[body, name, b] : {std::make_tuple("disk", k.disk_name, &f.disk), std::make_tuple("pin", k.pin_name, &f.pin)}) {
+      const std::string label = name.empty() ? std::string(body) : fmt::format("{} ({})", body, name);
+      const std::string verdict =
+          b->yield_strength > 0.0
+              ? fmt::format("S_y = {:.4g} Pa: {} (peak / S_y = {:.3g})", b->yield_strength,
+                            b->yields() ? "YIELDS" : "elastic", b->peak.von_mises / b->yield_strength)
+              : std::string("S_y unknown (set contact.materials)");
+      fmt::print("    {:<10} peak von Mises {:.4g} Pa at x = {:.3g} m, depth {:.3g} m (nu = {:.3g}); {}\n", label,
+                 b->peak.von_mises, b->peak.x, b->peak.z, b->poisson_ratio, verdict);
+      if (b->yields())
+        warnings.push_back(fmt::format("WARNING: the {} yields at the {} of the run: peak von Mises {:.4g} Pa > S_y = "
+                                       "{:.4g} Pa ({:.3g} x) at depth {:.3g} m; the elastic contact and wear model "
+                                       "is outside its range there",
+                                       label, i == 0 ? "start" : "end", b->peak.von_mises, b->yield_strength,
+                                       b->peak.von_mises / b->yield_strength, b->peak.z));
+    }
+  }
+  if (!stress.empty()) {
+    // The frictionless Hertz field for reference (0.62 p0 at 0.48 a for nu = 0.3).
+    const auto &k = *c.contact;
+    const auto &h = stress.front().stress;
+    const auto f0 = continuum::hertz_contact_stress(h.peak_pressure, h.contact_radius, 0.0, k.pin, k.disk);
+    fmt::print("    frictionless: disk peak von Mises {:.4g} Pa at depth {:.3g} m, pin {:.4g} Pa at depth {:.3g} m\n",
+               f0.disk.peak.von_mises, f0.disk.peak.z, f0.pin.peak.von_mises, f0.pin.peak.z);
+  }
+  for (const auto &w : warnings) fmt::print("  {}\n", w);
   fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", curve.report.steps,
              curve.report.breakaway_times.size(), curve.report.restick_times.size());
   if (!sweep.empty()) {
@@ -275,6 +363,7 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
   for (std::size_t i = 0; i < written.size(); ++i)
     fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
   if (!vtk_index.empty()) fmt::print(", {} ({} frames)", vtk_index, curve.frames.size());
+  if (!stress_index.empty()) fmt::print(", {} (subsurface stress, {} frames)", stress_index, stress.size());
   fmt::print("\n");
   return 0;
 }

@@ -201,4 +201,50 @@ PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples) {
   return summary;
 }
 
+namespace {
+
+BodyStress body_stress(const tribo::Material &m, tribo::StressField field) {
+  BodyStress b;
+  b.poisson_ratio = m.poisson_ratio;
+  b.yield_strength = m.yield_strength;
+  b.peak = field.peak_von_mises();
+  b.field = std::move(field);
+  return b;
+}
+
+}  // namespace
+
+ContactStress hertz_contact_stress(double p0, double a, double mu, const tribo::Material &pin,
+                                   const tribo::Material &disk, int points) {
+  ContactStress c;
+  c.method = "Hertz closed form (Hamilton 1983)";
+  c.friction_coefficient = mu;
+  c.contact_radius = a;
+  c.peak_pressure = p0;
+  const std::vector<double> x = tribo::cell_centres(-1.5 * a, 1.5 * a, points);
+  const std::vector<double> z = tribo::uniform_points(0.0, 1.5 * a, points);
+  c.disk = body_stress(disk, tribo::hamilton_field({p0, a, disk.poisson_ratio, mu}, x, z));
+  c.pin = body_stress(pin, tribo::hamilton_field({p0, a, pin.poisson_ratio, -mu}, x, z));
+  return c;
+}
+
+ContactStress ring_contact_stress(const std::vector<double> &ring_pressure, double ring_width, double mu,
+                                  const tribo::Material &pin, const tribo::Material &disk, int points) {
+  ContactStress c;
+  c.method = "influence functions (Boussinesq/Cerruti patches) on the solved pressure";
+  c.friction_coefficient = mu;
+  std::size_t last = 0;
+  for (std::size_t i = 0; i < ring_pressure.size(); ++i)
+    if (ring_pressure[i] > 0.0) last = i + 1;
+  c.contact_radius = last * ring_width;
+  c.peak_pressure = ring_pressure.empty() ? 0.0 : *std::max_element(ring_pressure.begin(), ring_pressure.end());
+  const double half = 1.5 * std::max(c.contact_radius, ring_width);
+  const std::vector<double> z = tribo::uniform_points(0.0, half, points);
+  c.disk = body_stress(disk, tribo::axisymmetric_section(ring_pressure, ring_width, mu, disk.poisson_ratio, half,
+                                                         points, z));
+  c.pin = body_stress(pin, tribo::axisymmetric_section(ring_pressure, ring_width, -mu, pin.poisson_ratio, half,
+                                                       points, z));
+  return c;
+}
+
 }  // namespace runin::continuum

@@ -17,6 +17,7 @@
 #include "continuum/cvode_integrator.h"
 #include "continuum/sliding_friction.h"
 #include "continuum/stick_slip_loop.h"  // ContactState, SolveStatus, SolveReport
+#include "tribo/subsurface_stress.h"
 
 namespace runin::continuum {
 
@@ -116,5 +117,32 @@ struct PinOnDiskSummary {
 // steady_tolerance of their final values (equilibrium_time of each, the later of the two);
 // "not steady" if that is in the last 10 % of the run.
 PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples);
+
+// Subsurface stress below the pin contact (issue 14 item 5, doc/subsurface_stress.md): the von Mises field of
+// each body on the section y = 0 through the contact (x along the sliding direction, 64 x 64 points to
+// 1.5 contact radii wide and deep), from the pressure p and the friction shear q = mu p. The disk carries
+// q in the sliding direction, the pin the opposite shear (mu -> -mu); each body uses its own Poisson ratio.
+struct BodyStress {
+  double poisson_ratio = 0.0;
+  double yield_strength = 0.0;  // Pa; 0: unknown (no verdict)
+  tribo::StressPeak peak;       // largest von Mises stress on the section and its place (z = depth)
+  tribo::StressField field;
+  bool yields() const { return yield_strength > 0.0 && peak.von_mises > yield_strength; }
+};
+struct ContactStress {
+  std::string method;                  // "Hertz closed form (Hamilton 1983)" or "influence functions (...)"
+  double friction_coefficient = 0.0;   // mu used for q = mu p
+  double contact_radius = 0.0;         // m, of the pressure used
+  double peak_pressure = 0.0;          // Pa
+  BodyStress pin, disk;
+};
+// Hertzian contact: Hamilton's closed form.
+ContactStress hertz_contact_stress(double peak_pressure, double contact_radius, double friction_coefficient,
+                                   const tribo::Material &pin, const tribo::Material &disk, int points = 64);
+// Any axisymmetric ring pressure (the worn profile): the Boussinesq/Cerruti influence tier on points x points
+// patches centred on the section's abscissae.
+ContactStress ring_contact_stress(const std::vector<double> &ring_pressure, double ring_width,
+                                  double friction_coefficient, const tribo::Material &pin,
+                                  const tribo::Material &disk, int points = 64);
 
 }  // namespace runin::continuum
