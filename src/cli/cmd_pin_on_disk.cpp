@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "cli/case_file.h"
+#include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/axisymmetric_contact.h"
 #include "continuum/pin_on_disk.h"
@@ -242,12 +243,20 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
   }
 
   // Everything is computed; the output set is staged and moved in only when complete.
-  StagedOutput out(o.output_dir, {"pin_on_disk.csv", "pin_on_disk.png", "pin_on_disk_mu0.csv", "pin_on_disk_mu0.png",
+  StagedOutput out(o.output_dir, {"pin_on_disk.csv", "pin_on_disk_summary.csv", "pin_on_disk.png", "pin_on_disk_mu0.csv", "pin_on_disk_mu0.png",
                                   "pin_on_disk_mu0_summary.csv", "pin_face.pvd", "pin_face_*.vts", "subsurface.pvd",
                                   "subsurface_*.vts"});
   const std::vector<StressFrame> stress = subsurface_stress(c, curve);
   out.write("pin_on_disk.csv", csv_text(curve.rows));
-  std::vector<std::string> written = {"pin_on_disk.csv"};
+  {
+    const auto &m = curve.summary;
+    out.write("pin_on_disk_summary.csv",
+              std::string(kRunSummaryHeader) + "\n" +
+                  run_summary_row({m.peak_friction_force, m.peak_time, m.breakaway_time, m.steady_time, m.steady_mu,
+                                   curve.rows.back().wear_volume}) +
+                  "\n");
+  }
+  std::vector<std::string> written = {"pin_on_disk.csv", "pin_on_disk_summary.csv"};
   if (!sweep.empty()) {
     std::string curves = "mu0,t_s,friction_force_N,mu,speed_m_s,sliding_distance_m,wear_volume_m3\n";
     std::string table =
@@ -258,11 +267,9 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
         curves += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", run.mu0, r.s.t,
                               r.s.friction_force, r.s.mu, r.s.speed, r.s.distance, r.wear_volume);
       const auto &s = run.curve.summary;
-      // an empty cell: never broke away / not steady within the run (the summary's -1 is no time)
-      const auto time_or_empty = [](double t) { return t < 0.0 ? std::string() : fmt::format("{:.12g}", t); };
       table += fmt::format("{:.12g},{:.12g},{},{:.12g},{:.12g},{},{:.12g},{:.12g}\n", run.mu0, run.torque,
-                           time_or_empty(s.breakaway_time), s.peak_friction_force, s.peak_time,
-                           time_or_empty(s.steady_time), s.steady_mu, run.curve.rows.back().wear_volume);
+                           time_cell(s.breakaway_time), s.peak_friction_force, s.peak_time, time_cell(s.steady_time),
+                           s.steady_mu, run.curve.rows.back().wear_volume);
     }
     out.write("pin_on_disk_mu0.csv", curves);
     out.write("pin_on_disk_mu0_summary.csv", table);
