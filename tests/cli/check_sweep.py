@@ -30,6 +30,25 @@ def run(command):
     return result.stdout
 
 
+def expect_failures(args):
+    out = os.path.join(args.workdir, "a")
+    command = [args.runin, "sweep", args.element, args.case, "--output-dir", out, "--no-plot", "--span",
+               repr(args.span), "--points", str(args.points)] + [x for key in args.key for x in ("--key", key)]
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 1:
+        fail(f"exit {result.returncode} with {args.expect_failed} failing run(s) expected (1):\n{result.stderr}")
+    with open(os.path.join(out, "sweep.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    failed = [r for r in rows if r["status"].startswith("failed: runin: error: ")]
+    good = [r for r in rows if r["status"] == "ok" and all(r[n] != "" for n in ("peak_friction_force_N", "steady_mu"))]
+    if len(failed) != args.expect_failed or len(failed) + len(good) != len(rows):
+        fail(f"{len(failed)} failed and {len(good)} complete rows of {len(rows)}, expected {args.expect_failed} failed")
+    if any(r[n] != "" for r in failed for n in NUMBERS):
+        fail("a failed row holds numbers")
+    print(f"ok: exit 1, {len(failed)} failed run(s) named in the table, {len(good)} other rows kept: "
+          + "; ".join(r["status"][:90] for r in failed))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--runin", required=True)
@@ -41,8 +60,12 @@ def main():
     parser.add_argument("--points", type=int, default=3)
     parser.add_argument("--expect-keys", nargs="+", help="the keys the table must hold, in order")
     parser.add_argument("--plot", action="store_true", help="the first run also draws sweep_tornado.png")
+    parser.add_argument("--expect-failed", type=int, default=0,
+                        help="runs that must fail: the sweep exits 1, keeps the other rows and names each failure")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
+    if args.expect_failed:
+        return expect_failures(args)
     tables = []
     for name in ("a", "b"):
         out = os.path.join(args.workdir, name)
