@@ -26,14 +26,17 @@ FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char
   size_peratom_cols = NCOLUMNS;
   peratom_freq = 1;
   comm_forward = kGeometryColumns;
+  restart_peratom = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(0);    // grow
+  atom->add_callback(1);    // restart
   for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
 }
 
 FixRuninWearStateLiggghts::~FixRuninWearStateLiggghts()
 {
   atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
   memory->destroy(values);
 }
 
@@ -97,6 +100,22 @@ int FixRuninWearStateLiggghts::unpack_exchange(int nlocal, double *buf)
 {
   for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = buf[c];
   return NCOLUMNS;
+}
+
+int FixRuninWearStateLiggghts::pack_restart(int i, double *buf)
+{
+  buf[0] = NCOLUMNS + 1;    // LIGGGHTS skips per-fix blocks by this count
+  for (int c = 0; c < NCOLUMNS; c++) buf[c + 1] = values[i][c];
+  return NCOLUMNS + 1;
+}
+
+void FixRuninWearStateLiggghts::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = extra[nlocal][m++];
 }
 
 int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int *)

@@ -1,7 +1,7 @@
 // Per-atom wear state of RunIn asperities in LIGGGHTS (internal fix RUNIN_WEAR_STATE, created by
 // pair runin/asperity): the columns and the geometry update of plugins/lammps/fix_runin_wear_state.h
 // (FixRuninWearState::refresh_geometry and flattened_volume are the same src/tribo calls). The state follows
-// atoms across ranks and its geometry columns go to ghosts; it is not written to restart files in LIGGGHTS.
+// atoms across ranks, its geometry columns go to ghosts and all columns go into restart files.
 #ifndef LMP_FIX_RUNIN_WEAR_STATE_LIGGGHTS_H
 #define LMP_FIX_RUNIN_WEAR_STATE_LIGGGHTS_H
 
@@ -50,6 +50,10 @@ class FixRuninWearStateLiggghts : public Fix {
   void set_arrays(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override { return NCOLUMNS + 1; }
+  int maxsize_restart() override { return NCOLUMNS + 1; }
   int pack_comm(int, int *, double *, int, int *) override;
   void unpack_comm(int, int, double *) override;
   double memory_usage() override;

@@ -21,9 +21,15 @@ SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..")
 TOLERANCE = 1e-10
 
 SCENES = {
-    # LAMMPS deck, LIGGGHTS deck, variables (shortened runs)
+    # LAMMPS deck, LIGGGHTS deck, variables (shortened runs), text edits applied to both decks (copied into the
+    # work directory)
     "rough_slider": ("inputs/in.rough_slider", "tests/liggghts/decks/in.rough_slider",
-                     {"nsettle": 600, "nslide": 1400, "thermo_every": 100}),
+                     {"nsettle": 600, "nslide": 1400, "thermo_every": 100}, ()),
+    # rough on flat (fix runin/wall, servo-held load, wear, re-stick after a dwell); the deck prints 10 digits:
+    # every digit for the comparison
+    "runin_wall": ("inputs/in.runin_wall", "tests/liggghts/decks/in.runin_wall",
+                   {"nload": 300, "nslide": 1500, "nhold": 200, "nresume": 500, "thermo_every": 100},
+                   (("thermo_modify   format float %.10g", "thermo_modify   format float %.17g"),)),
 }
 
 
@@ -74,7 +80,7 @@ def strip(name):
 
 
 def scene(args):
-    lammps_deck, liggghts_deck, variables = SCENES[args.scene]
+    lammps_deck, liggghts_deck, variables, edits = SCENES[args.scene]
     variables = dict(variables)
     for item in args.set or []:
         name, _, value = item.partition("=")
@@ -86,7 +92,17 @@ def scene(args):
     for host, exe, deck, extra in (("lammps", args.lmp, lammps_deck, ()),
                                    ("liggghts", args.liggghts, liggghts_deck, ("-st",))):
         command = run([exe], args.workdir, f"log.{host}", args.np, args.mpiexec, variables, extra)
-        command[command.index("DECK")] = os.path.join(SOURCE_DIR, deck)
+        deck_path = os.path.join(SOURCE_DIR, deck)
+        if edits:
+            text = open(deck_path).read()
+            for old, new in edits:
+                if text.count(old) != 1:
+                    fail(f"{deck}: expected one {old!r}")
+                text = text.replace(old, new)
+            deck_path = os.path.join(args.workdir, f"in.{host}")
+            with open(deck_path, "w") as f:
+                f.write(text)
+        command[command.index("DECK")] = deck_path
         result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
         log = os.path.join(args.workdir, f"log.{host}")
         text = open(log).read() if os.path.exists(log) else ""
