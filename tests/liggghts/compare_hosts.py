@@ -3,12 +3,17 @@
 
   compare_hosts.py scene   --liggghts LG --lmp LMP --mpiexec MPIEXEC --np N --scene NAME --workdir DIR [--set V=X]
   compare_hosts.py bad     --liggghts LG --workdir DIR --pattern REGEX -- <deck lines>
+  compare_hosts.py restart --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
 
 scene: runs the scene's LAMMPS deck (inputs/) with lmp_runin and its LIGGGHTS deck (tests/liggghts/decks/)
 with liggghts_runin, both at N ranks with the same variables, and compares every thermo column both print
 (the mu, wear and roughness entries of compute runin/friction and runin/roughness, the forces on the counter-body)
 row by row: relative difference <= 1e-10 (absolute below 1e-300 for zeros).
 bad: one deck with a wrong style argument must stop with exit 1 and one ERROR line matching REGEX, no crash.
+restart: a LIGGGHTS restart deck (tests/liggghts/decks/in.restart_*) run as mode 0 (N/2 + N/2 steps), mode 1
+(N/2 steps, write_restart) and mode 2 (read_restart, N/2 steps): the final per-atom dumps of modes 0 and 2 and
+the thermo rows of their last run must be identical (bit for bit: every digit of %.17g), and the run must have
+contacts and wear (else the check would be empty).
 """
 import argparse
 import os
@@ -160,6 +165,48 @@ def bad(args):
     print(f"ok: {errors[0]}")
 
 
+def restart(args):
+    shutil.rmtree(args.workdir, ignore_errors=True)
+    os.makedirs(args.workdir)
+    os.symlink(os.path.join(SOURCE_DIR, "potentials"), os.path.join(args.workdir, "potentials"))
+    deck = os.path.join(SOURCE_DIR, args.deck)
+    tables = {}
+    for mode in (0, 1, 2):
+        command = [args.liggghts, "-st", "-in", deck, "-log", f"log.{mode}", "-screen", "none", "-var", "mode",
+                   str(mode)]
+        if args.np > 1:
+            command = [args.mpiexec, "-np", str(args.np)] + command
+        result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+        text = open(os.path.join(args.workdir, f"log.{mode}")).read() if os.path.exists(
+            os.path.join(args.workdir, f"log.{mode}")) else ""
+        if result.returncode != 0:
+            fail(f"mode {mode}: {' '.join(command)} exited with {result.returncode}\n{result.stdout[-1500:]}\n"
+                 f"{result.stderr[-1500:]}\n{text[-1500:]}")
+        if args.np > 1 and f"{args.np} by" not in text:
+            fail(f"mode {mode}: the run did not use {args.np} MPI ranks")
+        tables[mode] = thermo_blocks(text)
+    dumps = []
+    for mode in (0, 2):
+        with open(os.path.join(args.workdir, f"final.{mode}.dump")) as f:
+            dumps.append(f.read().splitlines())
+    if dumps[0] != dumps[1]:
+        for n, (a, b) in enumerate(zip(*dumps)):
+            if a != b:
+                fail(f"final.0.dump and final.2.dump differ at line {n + 1}:\n  {a}\n  {b}")
+        fail("final.0.dump and final.2.dump differ in length")
+    straight, restarted = tables[0][-1], tables[2][-1]
+    if straight != restarted:
+        fail(f"the thermo rows of the last run differ:\n{straight}\n{restarted}")
+    atoms = [line.split() for line in dumps[0][9:]]
+    worn = sum(1 for words in atoms if float(words[17]) > 0.0 or float(words[21]) > 0.0)
+    contacts = [float(row[header.index("fric[4]" if "fric[4]" in header else "c_fric[4]")])
+                for header, rows in tables[2] for row in rows] if tables[2] else []
+    if not worn or not contacts or max(contacts) <= 0:
+        fail(f"empty check: {worn} worn or flattened atoms, contacts {contacts[:3]}")
+    print(f"{args.deck} at {args.np} rank(s): {len(atoms)} atoms (x, v, omega, f, torque, wear state; {worn} worn "
+          f"or flattened) and {len(restarted[1])} thermo rows bit-identical after write_restart/read_restart")
+
+
 def main():
     parser = argparse.ArgumentParser()
     sub = parser.add_subparsers(dest="mode", required=True)
@@ -176,11 +223,17 @@ def main():
     p.add_argument("--workdir", required=True)
     p.add_argument("--pattern", required=True)
     p.add_argument("lines", nargs="+")
+    p = sub.add_parser("restart")
+    p.add_argument("--liggghts", required=True)
+    p.add_argument("--mpiexec", default="mpiexec")
+    p.add_argument("--np", type=int, default=1)
+    p.add_argument("--deck", required=True)
+    p.add_argument("--workdir", required=True)
     args = parser.parse_args()
     args.liggghts = os.path.abspath(args.liggghts)
     if getattr(args, "lmp", None):
         args.lmp = os.path.abspath(args.lmp)
-    {"scene": scene, "bad": bad}[args.mode](args)
+    {"scene": scene, "bad": bad, "restart": restart}[args.mode](args)
 
 
 if __name__ == "__main__":
