@@ -6,6 +6,7 @@
 #include "comm.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 
 #include <cstring>
 
@@ -16,7 +17,8 @@ constexpr int kGeometryColumns = 2;    // WEAR_DEPTH, FLAT_RADIUS: all the force
 }
 
 FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), values(nullptr)
+    Fix(lmp, narg, arg), values(nullptr), changed_here(1), changed_sent(0), changed_anywhere(1),
+    changed_request(MPI_REQUEST_NULL), changed_pending(false), forwarded(0)
 {
   if (narg > 3)
     runin_liggghts::all(lmp, FLERR, "fix RUNIN/WEAR_STATE: takes no keywords in LIGGGHTS (a start from a given "
@@ -35,6 +37,7 @@ FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char
 
 FixRuninWearStateLiggghts::~FixRuninWearStateLiggghts()
 {
+  if (changed_pending) MPI_Wait(&changed_request, MPI_STATUS_IGNORE);
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
   memory->destroy(values);
@@ -55,14 +58,58 @@ FixRuninWearStateLiggghts *FixRuninWearStateLiggghts::find_or_create(Modify *mod
   return find(modify);
 }
 
+int FixRuninWearStateLiggghts::setmask()
+{
+  return FixConst::END_OF_STEP;
+}
+
 void FixRuninWearStateLiggghts::refresh_geometry_all()
 {
   for (int i = 0; i < atom->nlocal; i++) refresh_geometry(i, atom->radius ? atom->radius[i] : 0.0);
+  changed_here = 1;    // volumes or radii may have been set: send at least once
 }
 
-void FixRuninWearStateLiggghts::forward_geometry()
+void FixRuninWearStateLiggghts::end_of_step()
 {
+  if (comm->nprocs == 1 || changed_pending) return;
+  changed_sent = changed_here;
+  MPI_Iallreduce(&changed_sent, &changed_anywhere, 1, MPI_INT, MPI_MAX, world, &changed_request);
+  changed_pending = true;
+}
+
+bool FixRuninWearStateLiggghts::changed_globally()
+{
+  if (comm->nprocs == 1) return changed_here != 0;
+  if (!changed_pending) {    // no step ended since the last send (a run's setup): reduce now
+    MPI_Allreduce(&changed_here, &changed_anywhere, 1, MPI_INT, MPI_MAX, world);
+    return changed_anywhere != 0;
+  }
+  MPI_Wait(&changed_request, MPI_STATUS_IGNORE);
+  changed_pending = false;
+  // a change after the reduction started (none within a run: it starts when the step's styles are done) stays
+  // in changed_here for the next reduction; every rank must take the same branch, so only the reduced flag counts
+  return changed_anywhere != 0;
+}
+
+bool FixRuninWearStateLiggghts::forward_geometry(bool always)
+{
+  // every rank takes the same branch: `always` and neighbor->ago are the same everywhere, the flag is reduced
+  const bool send = changed_globally() || always || neighbor->ago == 0;
+  if (!send) return false;
   comm->forward_comm_fix(this);
+  changed_here = 0;
+  ++forwarded;
+  return true;
+}
+
+void FixRuninWearStateLiggghts::post_run()
+{
+  if (changed_pending) {
+    MPI_Wait(&changed_request, MPI_STATUS_IGNORE);
+    changed_pending = false;
+    changed_here |= changed_anywhere;
+  }
+  forwarded = 0;
 }
 
 double FixRuninWearStateLiggghts::local_sum(Column column, int groupbit) const

@@ -20,7 +20,9 @@ class FixRuninWearStateLiggghts : public Fix {
 
   FixRuninWearStateLiggghts(class LAMMPS *, int, char **);
   ~FixRuninWearStateLiggghts();
-  int setmask() override { return 0; }
+  int setmask() override;
+  void end_of_step() override;
+  void post_run() override;
 
   double **state() { return values; }
   double local_sum(Column column, int groupbit) const;
@@ -33,6 +35,7 @@ class FixRuninWearStateLiggghts : public Fix {
     const runin::tribo::WornAsperity worn = runin::tribo::worn_asperity(
         radius, values[i][VOLUME_LOST] + values[i][VOLUME_FLATTENED], values[i][VOLUME_GAINED],
         values[i][WEAR_DEPTH]);
+    changed_here |= (worn.summit_drop != values[i][WEAR_DEPTH]) | (worn.flat_radius != values[i][FLAT_RADIUS]);
     values[i][WEAR_DEPTH] = worn.summit_drop;
     values[i][FLAT_RADIUS] = worn.flat_radius;
   }
@@ -43,7 +46,14 @@ class FixRuninWearStateLiggghts : public Fix {
     return kPiThird * (h1 * h1 * (3.0 * radius - h1) - h0 * h0 * (3.0 * radius - h0));
   }
   void refresh_geometry_all();
-  void forward_geometry();
+  // Sends the geometry columns to the ghosts when they may be stale: after a reneighbouring (new ghosts), at
+  // a run's setup (`always`), or when some rank changed an owned summit's geometry since the last send. The
+  // "some rank" flag is reduced without a wait of its own: an MPI_Iallreduce started at the end of each step
+  // (end_of_step, after every RunIn style that changes the geometry has run) and completed here, in the next
+  // step's force, after LIGGGHTS's own per-step synchronisations (neighbour decision, forward communication).
+  // Returns whether it sent.
+  bool forward_geometry(bool always);
+  long long forwarded_steps() const { return forwarded; }
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -60,6 +70,12 @@ class FixRuninWearStateLiggghts : public Fix {
 
  private:
   double **values;
+  int changed_here;          // an owned summit's geometry changed since the last send (this rank)
+  int changed_sent, changed_anywhere;
+  MPI_Request changed_request;
+  bool changed_pending;      // the reduction of changed_here is under way
+  long long forwarded;       // sends in this run (post_run: reset)
+  bool changed_globally();
 };
 
 }    // namespace LAMMPS_NS
