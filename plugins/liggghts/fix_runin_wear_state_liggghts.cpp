@@ -18,7 +18,8 @@ constexpr int kGeometryColumns = 2;    // WEAR_DEPTH, FLAT_RADIUS: all the force
 
 FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), values(nullptr), changed_here(1), changed_sent(0), changed_anywhere(1),
-    changed_request(MPI_REQUEST_NULL), changed_pending(false), forwarded(0)
+    changed_request(MPI_REQUEST_NULL), changed_pending(false), forwarded(0), source(nullptr), nmax_source(0),
+    send_indices(false)
 {
   if (narg > 3)
     runin_liggghts::all(lmp, FLERR, "fix RUNIN/WEAR_STATE: takes no keywords in LIGGGHTS (a start from a given "
@@ -41,6 +42,7 @@ FixRuninWearStateLiggghts::~FixRuninWearStateLiggghts()
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
   memory->destroy(values);
+  memory->destroy(source);
 }
 
 FixRuninWearStateLiggghts *FixRuninWearStateLiggghts::find(Modify *modify)
@@ -96,10 +98,33 @@ bool FixRuninWearStateLiggghts::forward_geometry(bool always)
   // every rank takes the same branch: `always` and neighbor->ago are the same everywhere, the flag is reduced
   const bool send = changed_globally() || always || neighbor->ago == 0;
   if (!send) return false;
-  comm->forward_comm_fix(this);
+  if (comm->nprocs > 1) {
+    comm->forward_comm_fix(this);
+  } else {
+    if (always || neighbor->ago == 0) find_sources();
+    const int nall = atom->nlocal + atom->nghost;
+    for (int j = atom->nlocal; j < nall; j++) {
+      const double *from = values[source[j]];
+      values[j][WEAR_DEPTH] = from[WEAR_DEPTH];
+      values[j][FLAT_RADIUS] = from[FLAT_RADIUS];
+    }
+  }
   changed_here = 0;
   ++forwarded;
   return true;
+}
+
+void FixRuninWearStateLiggghts::find_sources()
+{
+  if (atom->nmax > nmax_source) {
+    nmax_source = atom->nmax;
+    memory->destroy(source);
+    memory->create(source, nmax_source, "runin/wear_state:source");
+  }
+  for (int i = 0; i < atom->nlocal; i++) source[i] = i;
+  send_indices = true;    // the swaps run in order: a ghost sent again takes the source it was given
+  comm->forward_comm_fix(this);
+  send_indices = false;
 }
 
 void FixRuninWearStateLiggghts::post_run()
@@ -168,6 +193,13 @@ void FixRuninWearStateLiggghts::unpack_restart(int nlocal, int nth)
 int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int *)
 {
   int m = 0;
+  if (send_indices) {
+    for (int k = 0; k < n; k++) {
+      buf[m++] = source[list[k]];
+      buf[m++] = 0.0;
+    }
+    return kGeometryColumns;
+  }
   for (int k = 0; k < n; k++) {
     buf[m++] = values[list[k]][WEAR_DEPTH];
     buf[m++] = values[list[k]][FLAT_RADIUS];
@@ -178,6 +210,10 @@ int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int
 void FixRuninWearStateLiggghts::unpack_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (send_indices) {
+    for (int i = first; i < first + n; i++, m += 2) source[i] = static_cast<int>(buf[m]);
+    return;
+  }
   for (int i = first; i < first + n; i++) {
     values[i][WEAR_DEPTH] = buf[m++];
     values[i][FLAT_RADIUS] = buf[m++];

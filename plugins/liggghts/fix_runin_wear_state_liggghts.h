@@ -51,6 +51,8 @@ class FixRuninWearStateLiggghts : public Fix {
   // "some rank" flag is reduced without a wait of its own: an MPI_Iallreduce started at the end of each step
   // (end_of_step, after every RunIn style that changes the geometry has run) and completed here, in the next
   // step's force, after LIGGGHTS's own per-step synchronisations (neighbour decision, forward communication).
+  // On one rank every ghost is a periodic image of an owned atom: the columns are copied from it (the source
+  // indices are found by one forward communication of indices after each reneighbouring), no buffers.
   // Returns whether it sent.
   bool forward_geometry(bool always);
   long long forwarded_steps() const { return forwarded; }
@@ -75,6 +77,10 @@ class FixRuninWearStateLiggghts : public Fix {
   MPI_Request changed_request;
   bool changed_pending;      // the reduction of changed_here is under way
   long long forwarded;       // sends in this run (post_run: reset)
+  int *source;               // one rank: the owned atom each ghost is an image of
+  int nmax_source;
+  bool send_indices;         // pack_comm/unpack_comm carry source indices (find_sources), not the geometry
+  void find_sources();
   bool changed_globally();
 };
 
