@@ -7,6 +7,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "runin_liggghts_comm_access.h"
 
 #include <cstring>
 
@@ -17,9 +18,9 @@ constexpr int kGeometryColumns = 2;    // WEAR_DEPTH, FLAT_RADIUS: all the force
 }
 
 FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), values(nullptr), changed_here(1), changed_sent(0), changed_anywhere(1),
-    changed_request(MPI_REQUEST_NULL), changed_pending(false), forwarded(0), source(nullptr), nmax_source(0),
-    send_indices(false)
+    Fix(lmp, narg, arg), values(nullptr), changed_here(1), forwarded(0), source(nullptr), nmax_source(0),
+    send_indices(false), ghosts_wanted(false), exchange_pending(false), exchange_comm(MPI_COMM_NULL), next_swap(0),
+    exchange_dirty(false)
 {
   if (narg > 3)
     runin_liggghts::all(lmp, FLERR, "fix RUNIN/WEAR_STATE: takes no keywords in LIGGGHTS (a start from a given "
@@ -38,7 +39,8 @@ FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char
 
 FixRuninWearStateLiggghts::~FixRuninWearStateLiggghts()
 {
-  if (changed_pending) MPI_Wait(&changed_request, MPI_STATUS_IGNORE);
+  if (exchange_pending) finish_exchange(false);
+  if (exchange_comm != MPI_COMM_NULL) MPI_Comm_free(&exchange_comm);
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
   memory->destroy(values);
@@ -62,7 +64,7 @@ FixRuninWearStateLiggghts *FixRuninWearStateLiggghts::find_or_create(Modify *mod
 
 int FixRuninWearStateLiggghts::setmask()
 {
-  return FixConst::END_OF_STEP;
+  return FixConst::END_OF_STEP | FixConst::PRE_EXCHANGE;
 }
 
 void FixRuninWearStateLiggghts::refresh_geometry_all()
@@ -71,47 +73,132 @@ void FixRuninWearStateLiggghts::refresh_geometry_all()
   changed_here = 1;    // volumes or radii may have been set: send at least once
 }
 
-void FixRuninWearStateLiggghts::end_of_step()
-{
-  if (comm->nprocs == 1 || changed_pending) return;
-  changed_sent = changed_here;
-  MPI_Iallreduce(&changed_sent, &changed_anywhere, 1, MPI_INT, MPI_MAX, world, &changed_request);
-  changed_pending = true;
-}
-
-bool FixRuninWearStateLiggghts::changed_globally()
-{
-  if (comm->nprocs == 1) return changed_here != 0;
-  if (!changed_pending) {    // no step ended since the last send (a run's setup): reduce now
-    MPI_Allreduce(&changed_here, &changed_anywhere, 1, MPI_INT, MPI_MAX, world);
-    return changed_anywhere != 0;
-  }
-  MPI_Wait(&changed_request, MPI_STATUS_IGNORE);
-  changed_pending = false;
-  // a change after the reduction started (none within a run: it starts when the step's styles are done) stays
-  // in changed_here for the next reduction; every rank must take the same branch, so only the reduced flag counts
-  return changed_anywhere != 0;
-}
-
 bool FixRuninWearStateLiggghts::forward_geometry(bool always)
 {
-  // every rank takes the same branch: `always` and neighbor->ago are the same everywhere, the flag is reduced
-  const bool send = changed_globally() || always || neighbor->ago == 0;
-  if (!send) return false;
-  if (comm->nprocs > 1) {
-    comm->forward_comm_fix(this);
-  } else {
-    if (always || neighbor->ago == 0) find_sources();
+  const bool reneighboured = always || neighbor->ago == 0;
+  if (comm->nprocs == 1) {
+    if (!changed_here && !reneighboured) return false;
+    if (reneighboured) find_sources();
     const int nall = atom->nlocal + atom->nghost;
     for (int j = atom->nlocal; j < nall; j++) {
       const double *from = values[source[j]];
       values[j][WEAR_DEPTH] = from[WEAR_DEPTH];
       values[j][FLAT_RADIUS] = from[FLAT_RADIUS];
     }
+    changed_here = 0;
+    ++forwarded;
+    return true;
   }
+  ghosts_wanted = true;
+  if (exchange_pending && !reneighboured) {
+    finish_exchange(true);
+    return true;
+  }
+  // a run's setup, a reneighbouring (the exchange, if any, was completed before it: pre_exchange) or the
+  // first step of a run: LIGGGHTS's blocking forward communication along the current plan
+  if (exchange_pending) finish_exchange(false);
+  comm->forward_comm_fix(this);
   changed_here = 0;
   ++forwarded;
   return true;
+}
+
+// The step's geometry is final (the pair and fix runin/wall have run): post the exchange.
+void FixRuninWearStateLiggghts::end_of_step()
+{
+  if (comm->nprocs == 1 || !ghosts_wanted || exchange_pending) return;
+  start_exchange();
+}
+
+// Atoms are about to migrate and the swap plan to change: complete the exchange on the old plan (every rank
+// reneighbours on the same step, so every rank completes it here).
+void FixRuninWearStateLiggghts::pre_exchange()
+{
+  if (exchange_pending) finish_exchange(false);
+}
+
+void FixRuninWearStateLiggghts::start_exchange()
+{
+  if (exchange_comm == MPI_COMM_NULL) MPI_Comm_dup(world, &exchange_comm);
+  const runin_liggghts::SwapPlan plan = runin_liggghts::swap_plan(comm);
+  send_buffer.resize(plan.nswap);
+  recv_buffer.resize(plan.nswap);
+  requests.assign(2 * plan.nswap, MPI_REQUEST_NULL);
+  received.assign(plan.nswap, 0);
+  exchange_dirty = changed_here != 0;
+  changed_here = 0;
+  next_swap = 0;
+  exchange_pending = true;
+  advance_exchange(false);
+}
+
+// Posts (or, for a swap within this rank, copies) the swaps in order as long as what they send is known; with
+// `wait`, waits for the receives a swap needs instead of stopping. Returns whether every swap is posted.
+bool FixRuninWearStateLiggghts::advance_exchange(bool wait)
+{
+  const runin_liggghts::SwapPlan plan = runin_liggghts::swap_plan(comm);
+  const int me = comm->me, nlocal = atom->nlocal;
+  for (; next_swap < plan.nswap; next_swap++) {
+    const int s = next_swap;
+    const int *list = plan.sendlist[s];
+    // the ghosts this swap sends must have their values: received in an earlier swap that is complete
+    int highest = -1;
+    for (int k = 0; k < plan.sendnum[s]; k++) highest = list[k] > highest ? list[k] : highest;
+    for (int r = 0; r < s && highest >= nlocal; r++) {
+      if (received[r] || plan.recvnum[r] == 0 || highest < plan.firstrecv[r]) continue;
+      if (!wait) return false;
+      receive_swap(r, true);
+    }
+    if (plan.sendproc[s] == me) {
+      for (int k = 0; k < plan.recvnum[s]; k++) {
+        values[plan.firstrecv[s] + k][WEAR_DEPTH] = values[list[k]][WEAR_DEPTH];
+        values[plan.firstrecv[s] + k][FLAT_RADIUS] = values[list[k]][FLAT_RADIUS];
+      }
+      received[s] = 1;
+      continue;
+    }
+    std::vector<double> &out = send_buffer[s];
+    out.assign(1, exchange_dirty ? 1.0 : 0.0);    // header: whether the columns follow
+    if (exchange_dirty)
+      for (int k = 0; k < plan.sendnum[s]; k++) {
+        out.push_back(values[list[k]][WEAR_DEPTH]);
+        out.push_back(values[list[k]][FLAT_RADIUS]);
+      }
+    recv_buffer[s].resize(1 + 2 * static_cast<std::size_t>(plan.recvnum[s]));
+    MPI_Irecv(recv_buffer[s].data(), static_cast<int>(recv_buffer[s].size()), MPI_DOUBLE, plan.recvproc[s], s,
+              exchange_comm, &requests[2 * s + 1]);
+    MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_DOUBLE, plan.sendproc[s], s, exchange_comm,
+              &requests[2 * s]);
+  }
+  return true;
+}
+
+void FixRuninWearStateLiggghts::receive_swap(int s, bool unpack)
+{
+  if (received[s]) return;
+  MPI_Wait(&requests[2 * s + 1], MPI_STATUS_IGNORE);
+  received[s] = 1;
+  const std::vector<double> &in = recv_buffer[s];
+  if (!(in[0] != 0.0)) return;    // the sender's summits did not change: the ghosts hold their values
+  exchange_dirty = true;          // what this rank passes on changed
+  if (!unpack) return;
+  const runin_liggghts::SwapPlan plan = runin_liggghts::swap_plan(comm);
+  for (int k = 0, m = 1; k < plan.recvnum[s]; k++, m += 2) {
+    values[plan.firstrecv[s] + k][WEAR_DEPTH] = in[m];
+    values[plan.firstrecv[s] + k][FLAT_RADIUS] = in[m + 1];
+  }
+}
+
+// Completes the exchange: posts what is left (waiting for the receives it needs), receives everything.
+// `unpack` false: on a plan about to be replaced (pre_exchange, end of run): the messages are only matched.
+void FixRuninWearStateLiggghts::finish_exchange(bool unpack)
+{
+  advance_exchange(true);
+  const int nswap = static_cast<int>(received.size());
+  for (int s = 0; s < nswap; s++) receive_swap(s, unpack);    // (copies within this rank are received)
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  exchange_pending = false;
+  ++forwarded;
 }
 
 void FixRuninWearStateLiggghts::find_sources()
@@ -129,11 +216,8 @@ void FixRuninWearStateLiggghts::find_sources()
 
 void FixRuninWearStateLiggghts::post_run()
 {
-  if (changed_pending) {
-    MPI_Wait(&changed_request, MPI_STATUS_IGNORE);
-    changed_pending = false;
-    changed_here |= changed_anywhere;
-  }
+  if (exchange_pending) finish_exchange(false);
+  ghosts_wanted = false;
   forwarded = 0;
 }
 

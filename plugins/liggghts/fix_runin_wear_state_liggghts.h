@@ -8,6 +8,10 @@
 #include "fix.h"
 #include "tribo/asperity_geometry.h"
 
+#include <mpi.h>
+
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixRuninWearStateLiggghts : public Fix {
@@ -23,6 +27,7 @@ class FixRuninWearStateLiggghts : public Fix {
   int setmask() override;
   void end_of_step() override;
   void post_run() override;
+  void pre_exchange() override;
 
   double **state() { return values; }
   double local_sum(Column column, int groupbit) const;
@@ -46,14 +51,15 @@ class FixRuninWearStateLiggghts : public Fix {
     return kPiThird * (h1 * h1 * (3.0 * radius - h1) - h0 * h0 * (3.0 * radius - h0));
   }
   void refresh_geometry_all();
-  // Sends the geometry columns to the ghosts when they may be stale: after a reneighbouring (new ghosts), at
-  // a run's setup (`always`), or when some rank changed an owned summit's geometry since the last send. The
-  // "some rank" flag is reduced without a wait of its own: an MPI_Iallreduce started at the end of each step
-  // (end_of_step, after every RunIn style that changes the geometry has run) and completed here, in the next
-  // step's force, after LIGGGHTS's own per-step synchronisations (neighbour decision, forward communication).
-  // On one rank every ghost is a periodic image of an owned atom: the columns are copied from it (the source
-  // indices are found by one forward communication of indices after each reneighbouring), no buffers.
-  // Returns whether it sent.
+  // Brings the ghosts' geometry columns up to date for this step's force (called by the pair).
+  // One rank: every ghost is a periodic image of an owned atom; after a reneighbouring (or `always`, a run's
+  // setup) one forward communication of indices finds each ghost's owned source, then the columns are copied
+  // from it, and only when some summit changed. More ranks: after a reneighbouring or at setup LIGGGHTS's
+  // forward_comm_fix; on the other steps the exchange was started at the end of the previous step
+  // (end_of_step, when every RunIn style that changes the geometry has run) with non-blocking messages along
+  // LIGGGHTS's own swap plan, a message carrying the columns only when its sender's summits (or those it
+  // passes on) changed; here it is completed. So the pair adds no synchronisation point of its own to a step.
+  // Returns whether any ghost could have changed.
   bool forward_geometry(bool always);
   long long forwarded_steps() const { return forwarded; }
 
@@ -72,16 +78,25 @@ class FixRuninWearStateLiggghts : public Fix {
 
  private:
   double **values;
-  int changed_here;          // an owned summit's geometry changed since the last send (this rank)
-  int changed_sent, changed_anywhere;
-  MPI_Request changed_request;
-  bool changed_pending;      // the reduction of changed_here is under way
-  long long forwarded;       // sends in this run (post_run: reset)
+  int changed_here;          // an owned summit's geometry changed since the last exchange (this rank)
+  long long forwarded;       // exchanges in this run (post_run: reset)
   int *source;               // one rank: the owned atom each ghost is an image of
   int nmax_source;
   bool send_indices;         // pack_comm/unpack_comm carry source indices (find_sources), not the geometry
+  // the non-blocking exchange (more ranks)
+  bool ghosts_wanted;        // a pair reads ghost geometry: exchange at the end of each step
+  bool exchange_pending;
+  MPI_Comm exchange_comm;    // a duplicate of world: its tags (the swap index) meet no LIGGGHTS message
+  int next_swap;             // swaps below it are posted (or copied); the rest wait for completion
+  bool exchange_dirty;       // this rank's summits, or ghosts it received, changed: send the columns
+  std::vector<std::vector<double>> send_buffer, recv_buffer;
+  std::vector<MPI_Request> requests;    // per swap: send, receive
+  std::vector<char> received;           // per swap: its receive is unpacked
+  void start_exchange();
+  bool advance_exchange(bool wait);
+  void finish_exchange(bool unpack);
+  void receive_swap(int swap, bool unpack);
   void find_sources();
-  bool changed_globally();
 };
 
 }    // namespace LAMMPS_NS

@@ -65,6 +65,12 @@ def run(command, workdir, log, np, mpiexec, variables, extra=()):
     return command
 
 
+def used_ranks(text):
+    """The number of MPI ranks of the processor grid a log reports (0: none found)."""
+    grid = re.search(r"(\d+) by (\d+) by (\d+) MPI processor grid", text)
+    return int(grid.group(1)) * int(grid.group(2)) * int(grid.group(3)) if grid else 0
+
+
 def thermo_blocks(text):
     """Each run's thermo table as a list of dicts; LIGGGHTS drops the c_/v_/f_ prefixes of the header
     names (and cuts them at 8 characters), so rows are keyed by position against the LAMMPS names."""
@@ -118,7 +124,7 @@ def scene(args):
         if result.returncode != 0:
             fail(f"{host}: {' '.join(command)} exited with {result.returncode}\n{result.stdout[-1500:]}\n"
                  f"{result.stderr[-1500:]}\n{text[-1500:]}")
-        if f"{args.np} by" not in text and args.np > 1:
+        if used_ranks(text) != args.np and args.np > 1:
             fail(f"{host}: the run did not use {args.np} MPI ranks")
         logs[host] = thermo_blocks(text)
     if len(logs["lammps"]) != len(logs["liggghts"]):
@@ -186,7 +192,7 @@ def restart(args):
         if result.returncode != 0:
             fail(f"mode {mode}: {' '.join(command)} exited with {result.returncode}\n{result.stdout[-1500:]}\n"
                  f"{result.stderr[-1500:]}\n{text[-1500:]}")
-        if args.np > 1 and f"{args.np} by" not in text:
+        if args.np > 1 and used_ranks(text) != args.np:
             fail(f"mode {mode}: the run did not use {args.np} MPI ranks")
         tables[mode] = thermo_blocks(text)
     dumps = []
