@@ -20,7 +20,7 @@ constexpr int kGeometryColumns = 2;    // WEAR_DEPTH, FLAT_RADIUS: all the force
 FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), values(nullptr), changed_here(1), forwarded(0), source(nullptr), nmax_source(0),
     send_indices(false), ghosts_wanted(false), exchange_pending(false), exchange_comm(MPI_COMM_NULL), next_swap(0),
-    exchange_dirty(false)
+    exchange_dirty(false), plan_known(false)
 {
   if (narg > 3)
     runin_liggghts::all(lmp, FLERR, "fix RUNIN/WEAR_STATE: takes no keywords in LIGGGHTS (a start from a given "
@@ -99,6 +99,7 @@ bool FixRuninWearStateLiggghts::forward_geometry(bool always)
   if (exchange_pending) finish_exchange(false);
   comm->forward_comm_fix(this);
   changed_here = 0;
+  plan_known = false;    // the plan may be new
   ++forwarded;
   return true;
 }
@@ -121,8 +122,18 @@ void FixRuninWearStateLiggghts::start_exchange()
 {
   if (exchange_comm == MPI_COMM_NULL) MPI_Comm_dup(world, &exchange_comm);
   const runin_liggghts::SwapPlan plan = runin_liggghts::swap_plan(comm);
-  send_buffer.resize(plan.nswap);
-  recv_buffer.resize(plan.nswap);
+  if (!plan_known) {
+    send_buffer.resize(plan.nswap);
+    recv_buffer.resize(plan.nswap);
+    highest_sent.assign(plan.nswap, -1);
+    for (int s = 0; s < plan.nswap; s++) {
+      for (int k = 0; k < plan.sendnum[s]; k++)
+        highest_sent[s] = plan.sendlist[s][k] > highest_sent[s] ? plan.sendlist[s][k] : highest_sent[s];
+      send_buffer[s].resize(1 + 2 * static_cast<std::size_t>(plan.sendnum[s]));
+      recv_buffer[s].resize(1 + 2 * static_cast<std::size_t>(plan.recvnum[s]));
+    }
+    plan_known = true;
+  }
   requests.assign(2 * plan.nswap, MPI_REQUEST_NULL);
   received.assign(plan.nswap, 0);
   exchange_dirty = changed_here != 0;
@@ -142,33 +153,32 @@ bool FixRuninWearStateLiggghts::advance_exchange(bool wait)
     const int s = next_swap;
     const int *list = plan.sendlist[s];
     // the ghosts this swap sends must have their values: received in an earlier swap that is complete
-    int highest = -1;
-    for (int k = 0; k < plan.sendnum[s]; k++) highest = list[k] > highest ? list[k] : highest;
+    const int highest = highest_sent[s];
     for (int r = 0; r < s && highest >= nlocal; r++) {
       if (received[r] || plan.recvnum[r] == 0 || highest < plan.firstrecv[r]) continue;
       if (!wait) return false;
       receive_swap(r, true);
     }
     if (plan.sendproc[s] == me) {
+      received[s] = 1;
+      if (!exchange_dirty) continue;    // nothing this swap copies changed
       for (int k = 0; k < plan.recvnum[s]; k++) {
         values[plan.firstrecv[s] + k][WEAR_DEPTH] = values[list[k]][WEAR_DEPTH];
         values[plan.firstrecv[s] + k][FLAT_RADIUS] = values[list[k]][FLAT_RADIUS];
       }
-      received[s] = 1;
       continue;
     }
-    std::vector<double> &out = send_buffer[s];
-    out.assign(1, exchange_dirty ? 1.0 : 0.0);    // header: whether the columns follow
+    double *out = send_buffer[s].data();
+    out[0] = exchange_dirty ? 1.0 : 0.0;    // header: whether the columns follow
+    int size = 1;
     if (exchange_dirty)
       for (int k = 0; k < plan.sendnum[s]; k++) {
-        out.push_back(values[list[k]][WEAR_DEPTH]);
-        out.push_back(values[list[k]][FLAT_RADIUS]);
+        out[size++] = values[list[k]][WEAR_DEPTH];
+        out[size++] = values[list[k]][FLAT_RADIUS];
       }
-    recv_buffer[s].resize(1 + 2 * static_cast<std::size_t>(plan.recvnum[s]));
     MPI_Irecv(recv_buffer[s].data(), static_cast<int>(recv_buffer[s].size()), MPI_DOUBLE, plan.recvproc[s], s,
               exchange_comm, &requests[2 * s + 1]);
-    MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_DOUBLE, plan.sendproc[s], s, exchange_comm,
-              &requests[2 * s]);
+    MPI_Isend(out, size, MPI_DOUBLE, plan.sendproc[s], s, exchange_comm, &requests[2 * s]);
   }
   return true;
 }

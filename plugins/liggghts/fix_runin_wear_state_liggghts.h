@@ -92,6 +92,8 @@ class FixRuninWearStateLiggghts : public Fix {
   std::vector<std::vector<double>> send_buffer, recv_buffer;
   std::vector<MPI_Request> requests;    // per swap: send, receive
   std::vector<char> received;           // per swap: its receive is unpacked
+  std::vector<int> highest_sent;        // per swap: the highest atom index it sends (found once per plan)
+  bool plan_known;                      // highest_sent is of the current plan (false after a reneighbouring)
   void start_exchange();
   bool advance_exchange(bool wait);
   void finish_exchange(bool unpack);
