@@ -1,4 +1,4 @@
-// Per-atom wear state of RunIn asperities in LIGGGHTS (internal fix RUNIN_WEAR_STATE, created by
+// Per-atom wear state of RunIn asperities in LIGGGHTS (internal fix RUNIN_WEAR_STATE, created by fix runin/wall or
 // pair runin/asperity): the columns and the geometry update of plugins/lammps/fix_runin_wear_state.h
 // (FixRuninWearState::refresh_geometry and flattened_volume are the same src/tribo calls). The state follows
 // atoms across ranks, its geometry columns go to ghosts and all columns go into restart files.
