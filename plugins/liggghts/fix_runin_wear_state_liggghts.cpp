@@ -70,7 +70,8 @@ int FixRuninWearStateLiggghts::setmask()
 void FixRuninWearStateLiggghts::refresh_geometry_all()
 {
   for (int i = 0; i < atom->nlocal; i++) refresh_geometry(i, atom->radius ? atom->radius[i] : 0.0);
-  changed_here = 1;    // volumes or radii may have been set: send at least once
+  changed_here = 1;    // volumes or radii may have been set: send at least once, to every ghost
+  full_copy = true;
 }
 
 bool FixRuninWearStateLiggghts::forward_geometry(bool always)
@@ -79,12 +80,23 @@ bool FixRuninWearStateLiggghts::forward_geometry(bool always)
   if (comm->nprocs == 1) {
     if (!changed_here && !reneighboured) return false;
     if (reneighboured) find_sources();
-    const int nall = atom->nlocal + atom->nghost;
-    for (int j = atom->nlocal; j < nall; j++) {
-      const double *from = values[source[j]];
-      values[j][WEAR_DEPTH] = from[WEAR_DEPTH];
-      values[j][FLAT_RADIUS] = from[FLAT_RADIUS];
+    if (reneighboured || full_copy) {
+      const int nall = atom->nlocal + atom->nghost;
+      for (int j = atom->nlocal; j < nall; j++) {
+        const double *from = values[source[j]];
+        values[j][WEAR_DEPTH] = from[WEAR_DEPTH];
+        values[j][FLAT_RADIUS] = from[FLAT_RADIUS];
+      }
+    } else {
+      for (const int i : changed_atoms)
+        for (int k = image_start[i]; k < image_start[i + 1]; k++) {
+          values[image_list[k]][WEAR_DEPTH] = values[i][WEAR_DEPTH];
+          values[image_list[k]][FLAT_RADIUS] = values[i][FLAT_RADIUS];
+        }
     }
+    changed_atoms.clear();
+    ++copy_round;
+    full_copy = false;
     changed_here = 0;
     ++forwarded;
     return true;
@@ -222,6 +234,16 @@ void FixRuninWearStateLiggghts::find_sources()
   send_indices = true;    // the swaps run in order: a ghost sent again takes the source it was given
   comm->forward_comm_fix(this);
   send_indices = false;
+  // each owned atom's images, grouped by owner (counting sort)
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  image_start.assign(nlocal + 1, 0);
+  for (int j = nlocal; j < nall; j++) image_start[source[j] + 1]++;
+  for (int i = 0; i < nlocal; i++) image_start[i + 1] += image_start[i];
+  image_list.resize(nall - nlocal);
+  std::vector<int> fill(image_start.begin(), image_start.end() - 1);
+  for (int j = nlocal; j < nall; j++) image_list[fill[source[j]]++] = j;
+  changed_stamp.assign(nlocal, -1);
+  changed_atoms.clear();
 }
 
 void FixRuninWearStateLiggghts::post_run()

@@ -34,13 +34,14 @@ class FixRuninWearStateLiggghts : public Fix {
   void refresh_geometry(int i, double radius)
   {
     if (!(radius > 0.0)) {
+      if (values[i][WEAR_DEPTH] != 0.0 || values[i][FLAT_RADIUS] != 0.0) note_change(i);
       values[i][WEAR_DEPTH] = values[i][FLAT_RADIUS] = 0.0;
       return;
     }
     const runin::tribo::WornAsperity worn = runin::tribo::worn_asperity(
         radius, values[i][VOLUME_LOST] + values[i][VOLUME_FLATTENED], values[i][VOLUME_GAINED],
         values[i][WEAR_DEPTH]);
-    changed_here |= (worn.summit_drop != values[i][WEAR_DEPTH]) | (worn.flat_radius != values[i][FLAT_RADIUS]);
+    if ((worn.summit_drop != values[i][WEAR_DEPTH]) | (worn.flat_radius != values[i][FLAT_RADIUS])) note_change(i);
     values[i][WEAR_DEPTH] = worn.summit_drop;
     values[i][FLAT_RADIUS] = worn.flat_radius;
   }
@@ -99,6 +100,22 @@ class FixRuninWearStateLiggghts : public Fix {
   void finish_exchange(bool unpack);
   void receive_swap(int swap, bool unpack);
   void find_sources();
+  // one rank: the owned atoms whose geometry changed since the last copy (each once), and each owned atom's
+  // ghost images (per plan), so a step copies to the images of the changed summits only
+  std::vector<int> changed_atoms, changed_stamp, image_start, image_list;
+  int copy_round = 0;
+  bool full_copy = true;
+  void note_change(int i)
+  {
+    changed_here = 1;
+    if (i >= static_cast<int>(changed_stamp.size())) {
+      full_copy = true;
+      return;
+    }
+    if (changed_stamp[i] == copy_round) return;
+    changed_stamp[i] = copy_round;
+    changed_atoms.push_back(i);
+  }
 };
 
 }    // namespace LAMMPS_NS
