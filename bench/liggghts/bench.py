@@ -2,18 +2,25 @@
 """RunIn in LIGGGHTS against LIGGGHTS's own granular pair on the same scene (bench/liggghts/README.md).
 
   python3 bench/liggghts/bench.py --liggghts build/liggghts_runin [--np 1] [--repeat 3] [--nsettle 2000] [--nslide 8000]
+                                  [--variant full|lean]
 
 The scene is tests/liggghts/decks/in.rough_slider (1741 asperities, load-controlled slider, 10 ns steps). Two decks
 are made from it that differ only in the contact law: 'runin' keeps pair runin/asperity (elastic/plastic normal,
 Mindlin/Coulomb static->kinetic, Archard wear with worn geometry), 'gran' replaces it with
 'pair_style gran model hertz tangential history' on the same materials (E, nu of Al and Cu, e = 0.5,
 mu = mu_k = 0.55). Neither prints RunIn's computes (the gran run cannot have them): thermo is the step only. Both
-print the step and the slider's height; they run in the same binary, alternating, 'repeat' times; the best loop time of each is kept. Ratio = gran / runin
-(>= 1: RunIn is at least as fast).
+print the step and the slider's height; they run in the same binary, alternating, 'repeat' times; the median and
+the best loop and Pair times of each are printed. Ratio = gran / runin (>= 1: RunIn is at least as fast).
+
+--variant lean: the same physics on both sides, for a like-for-like cost of the contact law: RunIn with
+'normal hertz', its default Mindlin spring and Coulomb limit, restitution damping, 'wear no reshape no' (no wear
+state, nothing sent to ghosts), and the same E* and G* as LIGGGHTS derives from E and nu of Al and Cu, e = 0.5,
+mu_s = mu_k = 0.55. --variant full (default): RunIn's law of the scene (elastic/plastic, wear, worn geometry).
 """
 import argparse
 import os
 import re
+import statistics
 import subprocess
 import tempfile
 
@@ -31,7 +38,16 @@ pair_coeff      * *
 """
 
 
-def make_deck(kind, path):
+def lean_coeff():
+    """pair_style/pair_coeff of RunIn with LIGGGHTS's E* and G* of the gran deck (Al, Cu)."""
+    (e1, n1), (e2, n2) = (69.0e9, 0.33), (110.0e9, 0.37)
+    estar = 1.0 / ((1.0 - n1 * n1) / e1 + (1.0 - n2 * n2) / e2)
+    gstar = 1.0 / (2.0 * (2.0 - n1) * (1.0 + n1) / e1 + 2.0 * (2.0 - n2) * (1.0 + n2) / e2)
+    return ("pair_style      runin/asperity wear no reshape no normal hertz friction coulomb\n"
+            f"pair_coeff      * * {estar!r} {gstar!r} 0.5 0.55 0.55 1.0e-8 0.0 0.245e9\n")
+
+
+def make_deck(kind, path, variant="full"):
     out = []
     skip_continuation = False
     for line in open(DECK):
@@ -46,10 +62,11 @@ def make_deck(kind, path):
             if stripped.startswith("thermo_style"):
                 out.append("variable        zs equal xcm(slider,z)\nthermo_style    custom step v_zs\n")
             continue
-        if kind == "gran" and stripped.startswith("pair_coeff"):
+        replace = kind == "gran" or variant == "lean"
+        if replace and stripped.startswith("pair_coeff"):
             continue
-        if kind == "gran" and stripped.startswith("pair_style"):
-            out.append(GRAN)
+        if replace and stripped.startswith("pair_style"):
+            out.append(GRAN if kind == "gran" else lean_coeff())
             continue
         out.append(line)
     open(path, "w").write("".join(out))
@@ -69,15 +86,16 @@ def main():
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--nsettle", type=int, default=2000)
     parser.add_argument("--nslide", type=int, default=8000)
+    parser.add_argument("--variant", choices=("full", "lean"), default="full")
     args = parser.parse_args()
     args.liggghts = os.path.abspath(args.liggghts)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_rmaps_base_oversubscribe="1", OMP_NUM_THREADS="1")
     work = tempfile.mkdtemp(prefix="runin_bench_liggghts_")
     os.symlink(os.path.join(SOURCE, "potentials"), os.path.join(work, "potentials"))
-    best, heights = {}, {}
+    times, heights = {"runin": [], "gran": []}, {}
     for kind in ("runin", "gran"):
-        make_deck(kind, os.path.join(work, f"in.{kind}"))
+        make_deck(kind, os.path.join(work, f"in.{kind}"), args.variant)
     for _ in range(args.repeat):
         for kind in ("runin", "gran"):
             command = [args.liggghts, "-st", "-in", f"in.{kind}", "-log", f"log.{kind}", "-screen", "none",
@@ -92,15 +110,18 @@ def main():
             total, pair = loop_time(log)
             rows = re.findall(r"^\s*(\d+)\s+([-0-9.eE+]+)\s*$", log, re.M)
             heights[kind] = float(rows[-1][1]) if rows else float("nan")
-            if kind not in best or total < best[kind][0]:
-                best[kind] = (total, pair)
+            times[kind].append((total, pair))
     steps = args.nsettle + args.nslide
+    stats = {}
     for kind in ("runin", "gran"):
-        total, pair = best[kind]
-        print(f"{kind:6s} loop {total:8.3f} s  pair {pair:8.3f} s  ({steps} steps, {args.np} rank(s), best of "
-              f"{args.repeat})")
-    print(f"ratio gran/runin: loop {best['gran'][0] / best['runin'][0]:.2f}x, pair "
-          f"{best['gran'][1] / best['runin'][1]:.2f}x")
+        loops, pairs = [t[0] for t in times[kind]], [t[1] for t in times[kind]]
+        stats[kind] = (statistics.median(loops), statistics.median(pairs), min(loops), min(pairs))
+        print(f"{kind:6s} loop median {stats[kind][0]:8.3f} s (best {stats[kind][2]:.3f})  pair median "
+              f"{stats[kind][1]:8.3f} s (best {stats[kind][3]:.3f})  ({steps} steps, {args.np} rank(s), "
+              f"{args.repeat} runs, variant {args.variant})")
+    for label, k in (("median", 0), ("best", 2)):
+        print(f"ratio gran/runin ({label}): loop {stats['gran'][k] / stats['runin'][k]:.2f}x, pair "
+              f"{stats['gran'][k + 1] / stats['runin'][k + 1]:.2f}x")
     print(f"slider centre height at the end: runin {heights['runin']:.9g} m, gran {heights['gran']:.9g} m (both "
           f"carry the load on their contacts)")
     print(f"decks and logs: {work}")

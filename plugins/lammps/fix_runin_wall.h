@@ -15,9 +15,9 @@ FixStyle(runin/wall,FixRuninWall);
 #include "fix.h"
 #include "runin_contact_range.h"
 #include "runin_contact_sums.h"
+#include "runin_wall_core.h"
 #include "tribo/contact_model.h"
 
-#include <optional>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -52,39 +52,18 @@ class FixRuninWall : public Fix, public RuninContactSource {
   double memory_usage() override;
 
   const RuninContactSums &contact_sums() const override { return sums; }
-  double counterface_wear_volume() const override { return wall_wear; }
+  double counterface_wear_volume() const override { return motion.wall_wear; }
   void measure_body(int groupbit) override { body_groupbit = groupbit; }
   bool has_counterface() const override { return true; }
 
  private:
   static constexpr int HISTORY_SIZE = runin::tribo::CONTACT_HISTORY_SIZE;
-  enum class Control { displacement, force, pressure };
 
-  // A constant or an equal-style variable (v_name), evaluated every step.
-  struct Setting {
-    double value = 0.0;
-    std::string variable;
-    int ivar = -1;
-  };
-
-  // The contact model: the sub-models chosen by keywords, their coefficients (the same named set as a
-  // pair_coeff line of pair runin/asperity) and the kernel objects built from them (validated).
-  runin::tribo::ContactParameters parameters;
-  runin::tribo::ContactModelChoice choice;
-  runin::tribo::ContactSettings contact_settings;
-  std::optional<runin::tribo::ContactModel> model;
-  bool reshape;    // worn geometry (summit drop, flat) of the wear state enters the normal force
+  // The keywords (contact model, control, servo) and the wall's state: the host-neutral core that the
+  // LIGGGHTS host shares (runin_wall_core.h).
+  runin_wall::Config cfg;
+  runin_wall::Motion motion;
   int body_groupbit;    // group whose contact reaction the sums carry (0: none)
-
-  double side_sign;    // +1 side lo (wall below the atoms), -1 side hi (wall above)
-  double wall_z, wall_dx, wall_dy, wall_wear, wall_gain;
-  Setting vel[2], vz;
-  Control control;
-  double load_target, servo_gain, servo_vmax;
-  double last_normal_force;    // elastic sum F_n (no damping) of the last evaluation (servo)
-  double last_stiffness;       // sum dF_n/d(overlap) of the last evaluation (servo)
-  double wall_velocity[3];
-  bool vz_given;
   double dt;
   double smallest_radius;    // of the group's asperities (init): the wall may not slide further in one step
   bigint past_centre_count = 0;    // asperity evaluations past the summit centre in this run (WARNING)
@@ -95,11 +74,9 @@ class FixRuninWall : public Fix, public RuninContactSource {
   RuninContactSums sums;
   class FixRuninWearState *fix_wear;
 
-  void parse_setting(Setting &s, const char *arg, const char *keyword);
-  void resolve(Setting &s, const char *keyword);
-  double current(const Setting &s) const;
+  void resolve(runin_wall::Setting &s, const char *keyword);
+  double current(const runin_wall::Setting &s) const;
   void update_wall_velocity();
-  void move_wall();
   void compute_contacts(bool advance);
   template <int NORMAL, int FRICTION> void compute_contacts(bool advance);
   void guard_timestep();

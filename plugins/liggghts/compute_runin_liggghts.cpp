@@ -19,7 +19,8 @@
 using namespace LAMMPS_NS;
 
 ComputeRuninFrictionLiggghts::ComputeRuninFrictionLiggghts(LAMMPS *lmp, int &iarg_, int narg, char **arg) :
-    Compute(lmp, iarg_, narg, arg), wear(nullptr), body_groupbit{0, 0}, bodies_given(false), has_body(false),
+    Compute(lmp, iarg_, narg, arg), wear(nullptr), body_groupbit{0, 0}, bodies_given(false), second_body_is_wall(false),
+    body_is_wall(false), has_body(false),
     body_bit(0), normal_axis(2), slide_axis(-1)
 {
   int iarg = 3;
@@ -29,9 +30,10 @@ ComputeRuninFrictionLiggghts::ComputeRuninFrictionLiggghts(LAMMPS *lmp, int &iar
       if (iarg + 3 > narg)
         runin_liggghts::all(lmp, FLERR, "compute runin/friction: keyword bodies needs two group IDs");
       for (int b = 0; b < 2; b++) {
-        if (strcmp(arg[iarg + 1 + b], "wall") == 0)
-          runin_liggghts::all(lmp, FLERR, "compute runin/friction: 'wall' needs fix runin/wall, which LIGGGHTS's "
-                                          "RunIn host does not have yet (doc/liggghts.md)");
+        if (b == 1 && strcmp(arg[iarg + 2], "wall") == 0) {
+          second_body_is_wall = true;
+          continue;
+        }
         const int igroup = group->find(arg[iarg + 1 + b]);
         if (igroup < 0)
           runin_liggghts::all(lmp, FLERR, fmt::format("compute runin/friction: bodies group {} does not exist",
@@ -43,15 +45,16 @@ ComputeRuninFrictionLiggghts::ComputeRuninFrictionLiggghts(LAMMPS *lmp, int &iar
     } else if (keyword == "body") {
       if (iarg + 2 > narg)
         runin_liggghts::all(lmp, FLERR, "compute runin/friction: keyword body needs a group ID");
-      if (strcmp(arg[iarg + 1], "wall") == 0)
-        runin_liggghts::all(lmp, FLERR, "compute runin/friction: 'body wall' needs fix runin/wall, which LIGGGHTS's "
-                                        "RunIn host does not have yet (doc/liggghts.md)");
-      const int igroup = group->find(arg[iarg + 1]);
-      if (igroup < 0)
-        runin_liggghts::all(lmp, FLERR, fmt::format("compute runin/friction: body group {} does not exist",
-                                                    arg[iarg + 1]));
       has_body = true;
-      body_bit = group->bitmask[igroup];
+      if (strcmp(arg[iarg + 1], "wall") == 0) {
+        body_is_wall = true;
+      } else {
+        const int igroup = group->find(arg[iarg + 1]);
+        if (igroup < 0)
+          runin_liggghts::all(lmp, FLERR, fmt::format("compute runin/friction: body group {} does not exist",
+                                                      arg[iarg + 1]));
+        body_bit = group->bitmask[igroup];
+      }
       iarg += 2;
     } else if (keyword == "normal" || keyword == "slide") {
       if (iarg + 2 > narg)
@@ -82,12 +85,22 @@ void ComputeRuninFrictionLiggghts::init()
 {
   sources.clear();
   if (auto *pair = dynamic_cast<RuninContactSource *>(force->pair)) sources.push_back(pair);
+  bool have_wall = false;    // contact hosts among the fixes are the fix runin/wall instances
+  for (int i = 0; i < modify->nfix; i++)
+    if (auto *host = dynamic_cast<RuninContactSource *>(modify->fix[i])) {
+      sources.push_back(host);
+      have_wall = true;
+    }
   if (sources.empty())
-    runin_liggghts::all(lmp, FLERR, "compute runin/friction: requires pair_style runin/asperity");
+    runin_liggghts::all(lmp, FLERR, "compute runin/friction: requires pair_style runin/asperity or a fix runin/wall");
   wear = FixRuninWearStateLiggghts::find(modify);
+  if (second_body_is_wall && !have_wall)
+    runin_liggghts::all(lmp, FLERR, "compute runin/friction: bodies ... wall requires a fix runin/wall");
   if (slide_axis == normal_axis)
     runin_liggghts::all(lmp, FLERR, "compute runin/friction: slide and normal must be different axes");
-  for (auto *source : sources) source->measure_body(has_body ? body_bit : 0);
+  if (body_is_wall && !have_wall)
+    runin_liggghts::all(lmp, FLERR, "compute runin/friction: body wall requires a fix runin/wall");
+  for (auto *source : sources) source->measure_body(has_body && !body_is_wall ? body_bit : 0);
 }
 
 // The arithmetic of ComputeRuninFriction::compute_vector (plugins/lammps), entry for entry.
@@ -122,11 +135,15 @@ void ComputeRuninFrictionLiggghts::compute_vector()
   vector[CONTACT_AREA] = global[8];
   vector[WEAR_VOLUME_BODY1] = global[N + 1];
   vector[WEAR_VOLUME_BODY2] = global[N + 2];
+  if (second_body_is_wall) {
+    vector[WEAR_VOLUME_BODY2] = 0.0;
+    for (const auto *source : sources) vector[WEAR_VOLUME_BODY2] += source->counterface_wear_volume();
+  }
   vector[WEAR_RATE] = update->dt > 0.0 ? global[9] / update->dt : 0.0;
   vector[FRICTIONAL_POWER] = global[10];
 
-  constexpr int BODY = 11;
-  const double *reaction = &global[BODY];
+  constexpr int BODY = 11, COUNTERFACE = 14;
+  const double *reaction = body_is_wall ? &global[COUNTERFACE] : &global[BODY];
   double in_plane = 0.0;
   for (int k = 0; k < 3; k++)
     if (k != normal_axis) in_plane += reaction[k] * reaction[k];

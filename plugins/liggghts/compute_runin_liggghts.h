@@ -27,6 +27,8 @@ class ComputeRuninFrictionLiggghts : public Compute {
   class FixRuninWearStateLiggghts *wear;
   int body_groupbit[2];
   bool bodies_given;
+  bool second_body_is_wall;    // bodies ... wall: the second body's wear is the counterface's
+  bool body_is_wall;           // body wall: the reaction on the counterface of fix runin/wall
   bool has_body;
   int body_bit;
   int normal_axis;

@@ -2,6 +2,7 @@
 // maps before input is read, as plugins/lammps/lmp_runin.cpp does for LAMMPS.
 // Usage is that of liggghts: mpirun -np 2 liggghts_runin -in in.deck
 #include "compute_runin_liggghts.h"
+#include "fix_runin_wall_liggghts.h"
 #include "fix_runin_wear_state_liggghts.h"
 #include "pair_runin_asperity_liggghts.h"
 #include "runin_liggghts_style_maps.h"
@@ -25,6 +26,10 @@ Pair *pair_creator(LAMMPS *lmp)
 {
   return new PairRuninAsperityLiggghts(lmp);
 }
+Fix *wall_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixRuninWallLiggghts(lmp, narg, arg);
+}
 Fix *wear_state_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixRuninWearStateLiggghts(lmp, narg, arg);
@@ -38,6 +43,7 @@ void register_styles(LAMMPS *lmp)
 {
   (*lmp->force->pair_map)["runin/asperity"] = &pair_creator;
   runin_liggghts::fix_map(lmp->modify)["RUNIN/WEAR_STATE"] = &wear_state_creator;
+  runin_liggghts::fix_map(lmp->modify)["runin/wall"] = &wall_creator;
   runin_liggghts::compute_map(lmp->modify)["runin/friction"] = &compute_creator<ComputeRuninFrictionLiggghts>;
   runin_liggghts::compute_map(lmp->modify)["runin/roughness"] = &compute_creator<ComputeRuninRoughnessLiggghts>;
 }

@@ -383,7 +383,7 @@ void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
 
   if (fix_wear && !advance) fix_wear->refresh_geometry_all();
   const bool worn_geometry = reshape && fix_wear;
-  if (worn_geometry) fix_wear->forward_geometry();
+  if (worn_geometry) fix_wear->forward_geometry(!advance);
   if (track_wear) grow_increments();
 
   constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;

@@ -3,12 +3,17 @@
 
   compare_hosts.py scene   --liggghts LG --lmp LMP --mpiexec MPIEXEC --np N --scene NAME --workdir DIR [--set V=X]
   compare_hosts.py bad     --liggghts LG --workdir DIR --pattern REGEX -- <deck lines>
+  compare_hosts.py restart --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
 
 scene: runs the scene's LAMMPS deck (inputs/) with lmp_runin and its LIGGGHTS deck (tests/liggghts/decks/)
 with liggghts_runin, both at N ranks with the same variables, and compares every thermo column both print
 (the mu, wear and roughness entries of compute runin/friction and runin/roughness, the forces on the counter-body)
 row by row: relative difference <= 1e-10 (absolute below 1e-300 for zeros).
 bad: one deck with a wrong style argument must stop with exit 1 and one ERROR line matching REGEX, no crash.
+restart: a LIGGGHTS restart deck (tests/liggghts/decks/in.restart_*) run as mode 0 (N/2 + N/2 steps), mode 1
+(N/2 steps, write_restart) and mode 2 (read_restart, N/2 steps): the final per-atom dumps of modes 0 and 2 and
+the thermo rows of their last run must be identical (bit for bit: every digit of %.17g), and the run must have
+contacts and wear (else the check would be empty).
 """
 import argparse
 import os
@@ -21,9 +26,19 @@ SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..")
 TOLERANCE = 1e-10
 
 SCENES = {
-    # LAMMPS deck, LIGGGHTS deck, variables (shortened runs)
+    # LAMMPS deck, LIGGGHTS deck, variables (shortened runs), text edits applied to both decks (copied into the
+    # work directory)
     "rough_slider": ("inputs/in.rough_slider", "tests/liggghts/decks/in.rough_slider",
-                     {"nsettle": 600, "nslide": 1400, "thermo_every": 100}),
+                     {"nsettle": 600, "nslide": 1400, "thermo_every": 100}, ()),
+    # a 200 um box (10 x 10 base summits): nearly every worn summit is also a ghost (periodic image or the other
+    # rank's), so the worn geometry sent to ghosts enters the forces (without that send it fails at 2 ranks)
+    "rough_slider_small": ("inputs/in.rough_slider", "tests/liggghts/decks/in.rough_slider",
+                           {"nside": 10, "nsettle": 600, "nslide": 1400, "thermo_every": 100}, ()),
+    # rough on flat (fix runin/wall, servo-held load, wear, re-stick after a dwell); the deck prints 10 digits:
+    # every digit for the comparison
+    "runin_wall": ("inputs/in.runin_wall", "tests/liggghts/decks/in.runin_wall",
+                   {"nload": 300, "nslide": 1500, "nhold": 200, "nresume": 500, "thermo_every": 100},
+                   (("thermo_modify   format float %.10g", "thermo_modify   format float %.17g"),)),
 }
 
 
@@ -50,6 +65,12 @@ def run(command, workdir, log, np, mpiexec, variables, extra=()):
     return command
 
 
+def used_ranks(text):
+    """The number of MPI ranks of the processor grid a log reports (0: none found)."""
+    grid = re.search(r"(\d+) by (\d+) by (\d+) MPI processor grid", text)
+    return int(grid.group(1)) * int(grid.group(2)) * int(grid.group(3)) if grid else 0
+
+
 def thermo_blocks(text):
     """Each run's thermo table as a list of dicts; LIGGGHTS drops the c_/v_/f_ prefixes of the header
     names (and cuts them at 8 characters), so rows are keyed by position against the LAMMPS names."""
@@ -74,7 +95,7 @@ def strip(name):
 
 
 def scene(args):
-    lammps_deck, liggghts_deck, variables = SCENES[args.scene]
+    lammps_deck, liggghts_deck, variables, edits = SCENES[args.scene]
     variables = dict(variables)
     for item in args.set or []:
         name, _, value = item.partition("=")
@@ -86,14 +107,24 @@ def scene(args):
     for host, exe, deck, extra in (("lammps", args.lmp, lammps_deck, ()),
                                    ("liggghts", args.liggghts, liggghts_deck, ("-st",))):
         command = run([exe], args.workdir, f"log.{host}", args.np, args.mpiexec, variables, extra)
-        command[command.index("DECK")] = os.path.join(SOURCE_DIR, deck)
+        deck_path = os.path.join(SOURCE_DIR, deck)
+        if edits:
+            text = open(deck_path).read()
+            for old, new in edits:
+                if text.count(old) != 1:
+                    fail(f"{deck}: expected one {old!r}")
+                text = text.replace(old, new)
+            deck_path = os.path.join(args.workdir, f"in.{host}")
+            with open(deck_path, "w") as f:
+                f.write(text)
+        command[command.index("DECK")] = deck_path
         result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
         log = os.path.join(args.workdir, f"log.{host}")
         text = open(log).read() if os.path.exists(log) else ""
         if result.returncode != 0:
             fail(f"{host}: {' '.join(command)} exited with {result.returncode}\n{result.stdout[-1500:]}\n"
                  f"{result.stderr[-1500:]}\n{text[-1500:]}")
-        if f"{args.np} by" not in text and args.np > 1:
+        if used_ranks(text) != args.np and args.np > 1:
             fail(f"{host}: the run did not use {args.np} MPI ranks")
         logs[host] = thermo_blocks(text)
     if len(logs["lammps"]) != len(logs["liggghts"]):
@@ -144,6 +175,48 @@ def bad(args):
     print(f"ok: {errors[0]}")
 
 
+def restart(args):
+    shutil.rmtree(args.workdir, ignore_errors=True)
+    os.makedirs(args.workdir)
+    os.symlink(os.path.join(SOURCE_DIR, "potentials"), os.path.join(args.workdir, "potentials"))
+    deck = os.path.join(SOURCE_DIR, args.deck)
+    tables = {}
+    for mode in (0, 1, 2):
+        command = [args.liggghts, "-st", "-in", deck, "-log", f"log.{mode}", "-screen", "none", "-var", "mode",
+                   str(mode)]
+        if args.np > 1:
+            command = [args.mpiexec, "-np", str(args.np)] + command
+        result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+        text = open(os.path.join(args.workdir, f"log.{mode}")).read() if os.path.exists(
+            os.path.join(args.workdir, f"log.{mode}")) else ""
+        if result.returncode != 0:
+            fail(f"mode {mode}: {' '.join(command)} exited with {result.returncode}\n{result.stdout[-1500:]}\n"
+                 f"{result.stderr[-1500:]}\n{text[-1500:]}")
+        if args.np > 1 and used_ranks(text) != args.np:
+            fail(f"mode {mode}: the run did not use {args.np} MPI ranks")
+        tables[mode] = thermo_blocks(text)
+    dumps = []
+    for mode in (0, 2):
+        with open(os.path.join(args.workdir, f"final.{mode}.dump")) as f:
+            dumps.append(f.read().splitlines())
+    if dumps[0] != dumps[1]:
+        for n, (a, b) in enumerate(zip(*dumps)):
+            if a != b:
+                fail(f"final.0.dump and final.2.dump differ at line {n + 1}:\n  {a}\n  {b}")
+        fail("final.0.dump and final.2.dump differ in length")
+    straight, restarted = tables[0][-1], tables[2][-1]
+    if straight != restarted:
+        fail(f"the thermo rows of the last run differ:\n{straight}\n{restarted}")
+    atoms = [line.split() for line in dumps[0][9:]]
+    worn = sum(1 for words in atoms if float(words[17]) > 0.0 or float(words[21]) > 0.0)
+    contacts = [float(row[header.index("fric[4]" if "fric[4]" in header else "c_fric[4]")])
+                for header, rows in tables[2] for row in rows] if tables[2] else []
+    if not worn or not contacts or max(contacts) <= 0:
+        fail(f"empty check: {worn} worn or flattened atoms, contacts {contacts[:3]}")
+    print(f"{args.deck} at {args.np} rank(s): {len(atoms)} atoms (x, v, omega, f, torque, wear state; {worn} worn "
+          f"or flattened) and {len(restarted[1])} thermo rows bit-identical after write_restart/read_restart")
+
+
 def main():
     parser = argparse.ArgumentParser()
     sub = parser.add_subparsers(dest="mode", required=True)
@@ -160,11 +233,17 @@ def main():
     p.add_argument("--workdir", required=True)
     p.add_argument("--pattern", required=True)
     p.add_argument("lines", nargs="+")
+    p = sub.add_parser("restart")
+    p.add_argument("--liggghts", required=True)
+    p.add_argument("--mpiexec", default="mpiexec")
+    p.add_argument("--np", type=int, default=1)
+    p.add_argument("--deck", required=True)
+    p.add_argument("--workdir", required=True)
     args = parser.parse_args()
     args.liggghts = os.path.abspath(args.liggghts)
     if getattr(args, "lmp", None):
         args.lmp = os.path.abspath(args.lmp)
-    {"scene": scene, "bad": bad}[args.mode](args)
+    {"scene": scene, "bad": bad, "restart": restart}[args.mode](args)
 
 
 if __name__ == "__main__":

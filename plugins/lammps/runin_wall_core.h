@@ -1,0 +1,519 @@
+// The host-neutral part of fix runin/wall, shared by the LAMMPS host (fix_runin_wall.*) and the LIGGGHTS host
+// (plugins/liggghts/fix_runin_wall_liggghts.*): keyword parsing into the contact model, the wall motion and
+// servo, the per-asperity contact loop (geometry + runin::tribo::ContactModel::evaluate + bookkeeping), the
+// messages of its checks and the global restart record. Nothing here touches a host class: the hosts hand in
+// plain atom arrays, the wear-state fix (same column names and inline geometry update in both hosts) and
+// callbacks for numbers, material files, warnings and errors; they keep the MPI reductions, the variables and
+// the per-atom storage.
+#ifndef RUNIN_WALL_CORE_H
+#define RUNIN_WALL_CORE_H
+
+#include "runin_contact_sums.h"
+#include "tribo/asperity_geometry.h"
+#include "tribo/contact.h"
+#include "tribo/contact_model.h"
+#include "tribo/friction_strength.h"
+#include "tribo/load_servo.h"
+#include "tribo/wear.h"
+
+#include "math_extra.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace runin_wall {
+
+namespace tribo = runin::tribo;
+
+inline constexpr int HISTORY_SIZE = tribo::CONTACT_HISTORY_SIZE;
+enum class Control { displacement, force, pressure };
+
+// A constant or an equal-style variable (v_name), evaluated every step by the host.
+struct Setting {
+  double value = 0.0;
+  std::string variable;
+  int ivar = -1;
+};
+
+// What the host provides to the parser. `fail` reports one ERROR line on every rank and does not return;
+// `number` reads a finite number or fails naming it ("fix runin/wall: <name> must be a finite number, got ..");
+// `material` reads a pair of a RunIn material file; `warning` prints on the first rank only.
+struct Hooks {
+  std::function<void(const std::string &)> fail;
+  std::function<double(const std::string &name, const char *text)> number;
+  std::function<tribo::ContactParameters(const char *path, const char *a, const char *b)> material;
+  std::function<void(const std::string &)> warning;
+};
+
+// Everything the keywords of fix runin/wall set.
+struct Config {
+  tribo::ContactParameters parameters;
+  tribo::ContactModelChoice choice;
+  tribo::ContactSettings contact_settings;
+  std::optional<tribo::ContactModel> model;
+  bool reshape = true;        // worn geometry (summit drop, flat) of the wear state enters the normal force
+  double side_sign = 0.0;     // +1 side lo (wall below the atoms), -1 side hi (wall above)
+  double wall_z = 0.0;
+  Setting vel[2], vz;
+  bool vz_given = false;
+  Control control = Control::displacement;
+  double load_target = 0.0, servo_gain = -1.0, servo_vmax = -1.0;
+};
+
+[[noreturn]] inline void fail(const Hooks &hooks, const std::string &message)
+{
+  hooks.fail(message);
+  std::abort();    // not reached: the host's fail stops the run
+}
+
+// fix ID group runin/wall <keywords>: arg[0..narg), the keywords from arg[3].
+inline Config parse(int narg, char **arg, const Hooks &hooks)
+{
+  static const std::map<std::string, int> kKeywordValues = {
+      {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
+      {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
+      {"strength", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}};
+  const std::string style = "fix runin/wall";
+  // a RunIn kernel call whose exception becomes one ERROR "fix runin/wall: <what>"
+  auto kernel = [&](auto &&body) -> decltype(body()) {
+    std::string message;
+    try {
+      return body();
+    } catch (const std::exception &e) {
+      message = style + ": " + e.what();
+    }
+    fail(hooks, message);
+  };
+  auto parse_setting = [&](Setting &s, const char *text, const char *keyword) {
+    if (std::strncmp(text, "v_", 2) == 0) {
+      s.variable = text + 2;
+    } else {
+      s.value = hooks.number(std::string(keyword) + " (a number or v_name)", text);
+      s.variable.clear();
+    }
+  };
+
+  Config c;
+  tribo::ContactParameters &parameters = c.parameters;
+  bool yield_given = false;
+  std::string friction_model_name;    // keyword friction_model; else 'strength' with keyword strength
+  double yield_strength = 0.0, yield_poisson = 0.3;
+  bool have_zplane = false, have_file = false, have_elastic = false, have_friction = false, have_wear = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string keyword = arg[iarg];
+    const auto known = kKeywordValues.find(keyword);
+    if (known == kKeywordValues.end())
+      fail(hooks, fmt::format("fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, "
+                              "wear, archard, reshape, vel, vz, load, pressure, servo, strength, restick, transfer, "
+                              "normal, yield or friction_model)", keyword));
+    const int nvalues = known->second;
+    if (iarg + nvalues >= narg)
+      fail(hooks, fmt::format("fix runin/wall: keyword '{}' needs {} value(s), got {}", keyword, nvalues,
+                              narg - iarg - 1));
+    char **values = &arg[iarg + 1];
+    auto number = [&](int k, const char *name) { return hooks.number(keyword + " " + name, values[k]); };
+
+    if (keyword == "zplane") {
+      c.wall_z = number(0, "Z");
+      have_zplane = true;
+    } else if (keyword == "side") {
+      if (std::strcmp(values[0], "lo") == 0)
+        c.side_sign = 1.0;
+      else if (std::strcmp(values[0], "hi") == 0)
+        c.side_sign = -1.0;
+      else
+        fail(hooks, fmt::format("fix runin/wall: side must be 'lo' or 'hi', got '{}'", values[0]));
+    } else if (keyword == "file") {
+      parameters = hooks.material(values[0], values[1], values[2]);
+      have_file = true;
+    } else if (keyword == "elastic") {
+      parameters.effective_modulus = number(0, "E*");
+      parameters.effective_shear_modulus = number(1, "G*");
+      parameters.restitution = number(2, "e");
+      have_elastic = true;
+    } else if (keyword == "friction") {
+      parameters.mu_static = number(0, "mu_s");
+      parameters.mu_kinetic = number(1, "mu_k");
+      parameters.slip_weakening_distance = number(2, "d_c");
+      have_friction = true;
+    } else if (keyword == "wear") {
+      parameters.wear_coefficient = number(0, "k");
+      parameters.hardness_i = number(1, "H_asperity");
+      parameters.hardness_j = number(2, "H_wall");
+      have_wear = true;
+    } else if (keyword == "archard") {
+      if (std::strcmp(values[0], "plain") == 0)
+        c.contact_settings.archard_form = tribo::ArchardForm::plain;
+      else if (std::strcmp(values[0], "thesis") == 0)
+        c.contact_settings.archard_form = tribo::ArchardForm::thesis;
+      else
+        fail(hooks, fmt::format("fix runin/wall: archard must be 'plain' or 'thesis', got '{}'", values[0]));
+    } else if (keyword == "reshape") {
+      if (std::strcmp(values[0], "yes") == 0)
+        c.reshape = true;
+      else if (std::strcmp(values[0], "no") == 0)
+        c.reshape = false;
+      else
+        fail(hooks, fmt::format("fix runin/wall: reshape must be 'yes' or 'no', got '{}'", values[0]));
+    } else if (keyword == "vel") {
+      parse_setting(c.vel[0], values[0], "vel vx");
+      parse_setting(c.vel[1], values[1], "vel vy");
+    } else if (keyword == "vz") {
+      parse_setting(c.vz, values[0], "vz");
+      c.vz_given = true;
+    } else if (keyword == "load" || keyword == "pressure") {
+      c.load_target = number(0, keyword == "load" ? "F" : "p");
+      if (!(c.load_target > 0.0))
+        fail(hooks, fmt::format("fix runin/wall: {} must be > 0, got {}", keyword, c.load_target));
+      c.control = keyword == "load" ? Control::force : Control::pressure;
+    } else if (keyword == "servo") {
+      c.servo_gain = number(0, "gain");
+      c.servo_vmax = number(1, "vmax");
+      if (!(c.servo_gain > 0.0 && c.servo_gain <= 1.0))
+        fail(hooks, fmt::format("fix runin/wall: servo gain must be in (0, 1], got {}", c.servo_gain));
+      if (!(c.servo_vmax > 0.0)) fail(hooks, fmt::format("fix runin/wall: servo vmax must be > 0, got {}", c.servo_vmax));
+    } else if (keyword == "strength") {
+      parameters.shear_strength = number(0, "tau_s");
+      parameters.ploughing_factor = number(1, "plough");
+      c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
+          tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
+    } else if (keyword == "friction_model") {
+      friction_model_name = values[0];
+      kernel([&] { return tribo::find_sub_model(tribo::SubModelKind::friction, values[0]); });
+    } else if (keyword == "normal") {
+      c.choice.index[static_cast<int>(tribo::SubModelKind::normal)] =
+          kernel([&] { return tribo::find_sub_model(tribo::SubModelKind::normal, values[0]); });
+    } else if (keyword == "yield") {
+      yield_given = true;
+      yield_strength = number(0, "S_y");
+      yield_poisson = number(1, "nu");
+    } else if (keyword == "restick") {
+      c.contact_settings.restick_speed = number(0, "v");
+      if (!(c.contact_settings.restick_speed >= 0.0) || !std::isfinite(c.contact_settings.restick_speed))
+        fail(hooks, fmt::format("fix runin/wall: restick speed must be >= 0 m/s, got {}",
+                                c.contact_settings.restick_speed));
+    } else if (keyword == "transfer") {
+      c.contact_settings.transfer_fraction = number(0, "f");
+      if (!(c.contact_settings.transfer_fraction >= 0.0 && c.contact_settings.transfer_fraction <= 1.0))
+        fail(hooks, fmt::format("fix runin/wall: transfer fraction must be in [0, 1], got {}",
+                                c.contact_settings.transfer_fraction));
+    }
+    iarg += nvalues + 1;
+  }
+
+  if (!have_zplane) fail(hooks, "fix runin/wall: keyword 'zplane' is required");
+  if (c.side_sign == 0.0) fail(hooks, "fix runin/wall: keyword 'side' (lo or hi) is required");
+  if (have_file && (have_elastic || have_friction || have_wear))
+    fail(hooks, "fix runin/wall: give either 'file' or 'elastic'/'friction'/'wear', not both");
+  if (!have_file && !(have_elastic && have_friction && have_wear))
+    fail(hooks, "fix runin/wall: coefficients missing: give 'file PATH ASPERITY WALL' or all of "
+                "'elastic', 'friction' and 'wear'");
+  if (c.control != Control::displacement && c.servo_vmax < 0.0)
+    fail(hooks, "fix runin/wall: load control needs 'servo GAIN VMAX'");
+  if (c.control != Control::displacement && c.vz_given)
+    fail(hooks, "fix runin/wall: 'vz' and 'load'/'pressure' exclude each other");
+
+  if (!friction_model_name.empty())
+    c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
+        tribo::find_sub_model(tribo::SubModelKind::friction, friction_model_name);
+  // S_y and nu of the yielding body: keyword 'yield', else the material file, else Tabor's H / 2.8
+  if (yield_given) {
+    parameters.yield_strength = yield_strength;
+    parameters.poisson_ratio = yield_poisson;
+    parameters.yield_from_hardness = false;
+  } else if (!have_file) {
+    parameters.yield_strength = std::min(parameters.hardness_i, parameters.hardness_j) / tribo::kTaborConstraintFactor;
+    parameters.yield_from_hardness = true;
+  }
+  const bool plastic =
+      c.choice.of(tribo::SubModelKind::normal) ==
+      tribo::find_sub_model(tribo::SubModelKind::normal, tribo::ElasticPlasticNormalModel::name);
+  if (plastic && parameters.yield_from_hardness)
+    hooks.warning(fmt::format("fix runin/wall: no yield strength given (keyword yield or material file): S_y = H / "
+                              "{} = {:.4g} Pa (Tabor), nu = {}", tribo::kTaborConstraintFactor,
+                              parameters.yield_strength, parameters.poisson_ratio));
+
+  // the contact model validates its coefficients; the message names the offending one
+  kernel([&] {
+    if (!(parameters.hardness_i > 0.0))
+      throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", parameters.hardness_i));
+    if (!(parameters.hardness_j > 0.0))
+      throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", parameters.hardness_j));
+    c.model.emplace(c.choice, tribo::contact_coefficients(c.choice, parameters), c.contact_settings);
+  });
+  return c;
+}
+
+// The wall's state between steps (and in the global restart record).
+struct Motion {
+  double wall_z = 0.0, wall_dx = 0.0, wall_dy = 0.0, wall_wear = 0.0, wall_gain = 0.0;
+  double last_normal_force = 0.0;    // elastic sum F_n (no damping) of the last evaluation (servo)
+  double last_stiffness = 0.0;       // sum dF_n/d(overlap) of the last evaluation (servo)
+  double velocity[3] = {0.0, 0.0, 0.0};
+};
+
+// A wall that moves further than a summit radius in one step skips whole contacts. Every rank evaluates the
+// same variables, so the check is collective: the message, or empty.
+inline std::string wall_step_problem(const double *v, double dt, double smallest_radius, long long step_number)
+{
+  if (!std::isfinite(v[0] + v[1] + v[2]))
+    return fmt::format("fix runin/wall: wall velocity ({}, {}, {}) m/s is not finite at step {} (vel/vz values or "
+                       "variables)", v[0], v[1], v[2], step_number);
+  const double step = std::hypot(v[0], v[1], v[2]) * dt;
+  if (step > smallest_radius)
+    return fmt::format("fix runin/wall: at step {} the wall moves {:.4g} m per step (speed {:.4g} m/s, dt = {} s), "
+                       "more than the smallest asperity radius {:.4g} m: contacts are not resolved in time (lower the "
+                       "speed or the timestep)", step_number, step, step / dt, dt, smallest_radius);
+  return {};
+}
+
+// Displacement control: z += vz dt. Load control: runin::tribo::LoadServo moves the wall toward the
+// asperities from the previous step's total normal force and contact stiffness (monotone approach).
+// `area`: the nominal area x * y (pressure control). Throws on a bad servo state (host: collective ERROR).
+inline void move_wall(const Config &c, Motion &m, double dt, double area)
+{
+  m.wall_dx += m.velocity[0] * dt;
+  m.wall_dy += m.velocity[1] * dt;
+  if (c.control == Control::displacement) {
+    m.wall_z += m.velocity[2] * dt;
+    return;
+  }
+  const double target = c.control == Control::force ? c.load_target : c.load_target * area;
+  const tribo::LoadServo servo(c.servo_gain, c.servo_vmax * dt);
+  const double approach = servo.approach(m.last_normal_force, m.last_stiffness, target);
+  m.wall_z += c.side_sign * approach;
+  m.velocity[2] = c.side_sign * approach / dt;
+}
+
+// Per-rank outputs of one contact evaluation, before the host reduces them.
+enum LocalIndex {
+  LOCAL_FX = 0, LOCAL_FY, LOCAL_FZ, LOCAL_CONTACTS, LOCAL_FN, LOCAL_STIFFNESS, LOCAL_LOST, LOCAL_GAINED,
+  LOCAL_CHECK, LOCAL_THROUGH, NLOCAL
+};
+template <class Tag> struct StepLocal {
+  // force on the wall xyz, contacts, elastic normal force and stiffness (servo), wall wear and gain this step;
+  // LOCAL_CHECK sums every contact output (NaN and inf propagate); LOCAL_THROUGH counts walls past a centre
+  double local[NLOCAL] = {};
+  Tag first_bad = std::numeric_limits<Tag>::max();        // lowest atom ID with a non-finite output
+  Tag first_through = std::numeric_limits<Tag>::max();    // lowest atom ID the wall passed the centre of
+  Tag worst_atom = 0;                                      // furthest beyond its normal law's range
+  double worst_range = 1.0, beyond_range = 0.0;            // its range ratio; contacts beyond (ratio > 1)
+};
+
+// The host's per-atom arrays (owned atoms 0..nlocal).
+template <class Tag> struct Atoms {
+  double **x, **v, **f, **omega, **torque;
+  const double *radius, *rmass;
+  const int *mask;
+  const Tag *tag;
+  int nlocal;
+};
+
+// The contacts of the group's asperities with the wall: forces and torques added to the atoms, the per-atom
+// contact history advanced (advance), wear and plastic flattening added to the wear state, the contact sums
+// filled. WearFix: FixRuninWearState (LAMMPS) or FixRuninWearStateLiggghts (the same columns and inline
+// geometry update).
+template <int NORMAL, int FRICTION, class WearFix, class Tag>
+void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **history, WearFix *fix_wear,
+              int groupbit, int body_groupbit, double dt, bool advance, LAMMPS_NS::RuninContactSums &sums,
+              StepLocal<Tag> &out)
+{
+  using ::MathExtra::cross3;
+  using ::MathExtra::dot3;
+  sums = LAMMPS_NS::RuninContactSums();
+  const bool track_wear = advance && c.parameters.wear_coefficient > 0.0;
+  const tribo::ContactModel &model = *c.model;
+  double **x = a.x, **v = a.v, **f = a.f, **omega = a.omega, **torque = a.torque;
+  const double *radius = a.radius, *rmass = a.rmass;
+  const int *mask = a.mask;
+  const Tag *tag = a.tag;
+  const double side_sign = c.side_sign, wall_z = m.wall_z;
+  const double *wall_velocity = m.velocity;
+  double **wear_state = fix_wear ? fix_wear->state() : nullptr;
+  const bool worn_geometry = c.reshape && wear_state;
+  if (worn_geometry && !advance) fix_wear->refresh_geometry_all();    // volumes may have been set or restarted
+  const double normal[3] = {0.0, 0.0, side_sign};    // from the wall to the asperity
+  double *local = out.local;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < a.nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double r = radius[i];
+    // a worn summit sits lower by its wear depth and carries a flat (pair runin/asperity reshape)
+    const double summit_drop = worn_geometry ? wear_state[i][WearFix::WEAR_DEPTH] : 0.0;
+    tribo::ContactGeometry g;
+    g.overlap = r - summit_drop - side_sign * (x[i][2] - wall_z);
+    if (g.overlap <= 0.0) {
+      // the spring and slip belong to one contact; the largest interference belongs to the asperity under
+      // this flat and stays, so a reload retraces the elastic unloading curve up to it
+      for (int k = 0; k < HISTORY_SIZE; k++)
+        if (!tribo::is_plastic_history(k)) history[i][k] = 0.0;
+      continue;
+    }
+    if (g.overlap + std::max(summit_drop, 0.0) > r) {
+      // past the centre of the intact sphere (worn or flattened summits included): no sphere contact law
+      // holds (the run stops after the reduction)
+      local[LOCAL_THROUGH] += 1.0;
+      out.first_through = std::min(out.first_through, tag[i]);
+    }
+    g.flat_radius = worn_geometry ? wear_state[i][WearFix::FLAT_RADIUS] : 0.0;
+    g.summit_drop = std::max(summit_drop, 0.0);
+    g.effective_radius = r;    // a flat wall: the asperity's own radius
+    g.effective_mass = rmass[i];
+    for (int k = 0; k < 3; k++) g.normal[k] = normal[k];
+    const double vr[3] = {v[i][0] - wall_velocity[0], v[i][1] - wall_velocity[1], v[i][2] - wall_velocity[2]};
+    g.normal_velocity = dot3(vr, normal);
+    const double spin[3] = {r * omega[i][0], r * omega[i][1], r * omega[i][2]};
+    double spin_velocity[3];
+    cross3(normal, spin, spin_velocity);
+    for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * normal[k] + spin_velocity[k];
+
+    const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, 1>(g, history[i], dt, advance);
+    const double fn = contact.normal_force;
+    const double *ft = contact.tangential.force;
+    const double outputs = fn + ft[0] + ft[1] + ft[2] + contact.normal.contact_radius + contact.strength.adhesion +
+                           contact.strength.ploughing + contact.wear.lost_a + contact.wear.lost_b;
+    local[LOCAL_CHECK] += outputs;
+    if (!std::isfinite(outputs)) out.first_bad = std::min(out.first_bad, tag[i]);
+    const double range = contact.normal.range_ratio;
+    out.beyond_range += range > 1.0;
+    out.worst_atom = range > out.worst_range ? tag[i] : out.worst_atom;
+    out.worst_range = std::max(range, out.worst_range);
+
+    double tor[3];
+    cross3(normal, ft, tor);
+    const bool in_body = (mask[i] & body_groupbit) != 0;
+    for (int k = 0; k < 3; k++) {
+      const double fk = fn * normal[k] + ft[k];
+      f[i][k] += fk;
+      torque[i][k] -= r * tor[k];
+      local[LOCAL_FX + k] -= fk;
+      if (in_body) sums.body_force[k] += fk;
+    }
+    if (worn_geometry && contact.normal.residual_increment > 0.0) {
+      // the rigid flat does not yield: the asperity's summit sinks by the whole residual growth
+      wear_state[i][WearFix::VOLUME_FLATTENED] +=
+          WearFix::flattened_volume(r, summit_drop, contact.normal.residual_increment);
+      fix_wear->refresh_geometry(i, r);
+    }
+    local[LOCAL_CONTACTS] += 1.0;
+    // the servo regulates the elastic load: with the damping term its own wall speed would feed back
+    // into the force it measures and, for e < 1, make it ring with period 2 steps
+    local[LOCAL_FN] += contact.normal.force;
+    local[LOCAL_STIFFNESS] += contact.normal.stiffness;
+
+    sums.normal_force += fn;
+    for (int k = 0; k < 3; k++) sums.tangential_force[k] -= ft[k];
+    sums.contacts += 1.0;
+    if (!contact.tangential.slipping) sums.sticking_contacts += 1.0;
+    sums.contact_area += pi * contact.normal.contact_radius * contact.normal.contact_radius;
+    sums.adhesion_force += contact.strength.adhesion;
+    sums.ploughing_force += contact.strength.ploughing;
+    if (advance && dt > 0.0)
+      sums.frictional_power += contact.tangential.force_magnitude * contact.tangential.slip_increment / dt;
+    if (track_wear && contact.tangential.slip_increment > 0.0) {
+      const tribo::WearExchange &exchange = contact.wear;
+      if (wear_state) {
+        wear_state[i][WearFix::VOLUME_LOST] += exchange.lost_a;
+        wear_state[i][WearFix::VOLUME_GAINED] += exchange.gained_a;
+        if (worn_geometry) fix_wear->refresh_geometry(i, r);
+      }
+      local[LOCAL_LOST] += exchange.lost_b;
+      local[LOCAL_GAINED] += exchange.gained_b;
+      sums.wear_volume += contact.worn_volume;
+    }
+  }
+  for (int k = 0; k < 3; k++) sums.counterface_force[k] = local[LOCAL_FX + k];
+}
+
+// After the host summed StepLocal::local over ranks into `global`: the wall's totals and state.
+inline void take_totals(const double *global, Motion &m, double *fx3, double &contacts)
+{
+  for (int k = 0; k < 3; k++) fx3[k] = global[LOCAL_FX + k];
+  contacts = global[LOCAL_CONTACTS];
+  m.last_normal_force = global[LOCAL_FN];
+  m.last_stiffness = global[LOCAL_STIFFNESS];
+  m.wall_wear += global[LOCAL_LOST];
+  m.wall_gain += global[LOCAL_GAINED];
+}
+
+inline bool step_finite(const double *global, const Motion &m)
+{
+  return std::isfinite(global[LOCAL_FX] + global[LOCAL_FY] + global[LOCAL_FZ] + global[LOCAL_CHECK] + m.wall_z);
+}
+
+inline std::string past_centre_message(long long step, double wall_z, double count, long long culprit)
+{
+  return fmt::format("fix runin/wall: at step {} the wall (z = {}) has passed the centre of {:.0f} intact "
+                     "asperity sphere(s), first atom {}: the interference exceeds the summit radius, where no "
+                     "contact law holds (load or wall travel too high for these asperities)", step, wall_z, count,
+                     culprit);
+}
+
+inline std::string past_centre_summary(long long count)
+{
+  return fmt::format("fix runin/wall: {} asperity evaluations in this run were past the centre of their summit "
+                     "(outside every contact law's validity; the first is reported above)", count);
+}
+
+inline std::string non_finite_message(long long step, bool have_culprit, long long culprit, const Motion &m, double dt)
+{
+  const std::string atoms = have_culprit ? fmt::format("atom {}", culprit) : std::string("no atom");
+  return fmt::format("fix runin/wall: non-finite contact force, area, strength or wear at step {} (first: {}, "
+                     "z_wall = {}, wall velocity {} {} {}); the run is unstable (a timestep too large: dt = {} s) or a "
+                     "coefficient overflows", step, atoms, m.wall_z, m.velocity[0], m.velocity[1], m.velocity[2], dt);
+}
+
+// Global restart record: the wall position, its in-plane travel, the counterface wear and gain and the
+// servo's last force and stiffness, so a restarted load-controlled run continues smoothly; then the contact
+// model record (sub-model names, coefficient counts and values), checked against the input's on reading.
+// Leads the record: older records start with NaN (with the counterface gain) or with z_wall.
+inline constexpr double kRestartFormatMark = -7.0e77;
+
+inline std::vector<double> restart_record(const Config &c, const Motion &m)
+{
+  std::vector<double> state = {kRestartFormatMark, m.wall_z,    m.wall_dx,           m.wall_dy,
+                               m.wall_wear,        m.wall_gain, m.last_normal_force, m.last_stiffness};
+  const std::vector<double> record = tribo::serialize(c.choice, tribo::contact_coefficients(c.choice, c.parameters));
+  state.push_back(static_cast<double>(record.size()));
+  state.insert(state.end(), record.begin(), record.end());
+  return state;
+}
+
+// Reads the record into `m`; returns a problem (the stored contact model differs from the input's) or empty.
+// Throws (a RunIn kernel exception) on a malformed model record.
+inline std::string read_restart_record(const char *buf, const Config &c, Motion &m)
+{
+  const auto *record = reinterpret_cast<const double *>(buf);
+  const bool with_model = record[0] == kRestartFormatMark;
+  const bool with_gain = with_model || std::isnan(record[0]);    // else written before the counterface gain existed
+  const double *state = with_gain ? record + 1 : record;
+  m.wall_z = state[0];
+  m.wall_dx = state[1];
+  m.wall_dy = state[2];
+  m.wall_wear = state[3];
+  if (with_gain) ++state;
+  m.wall_gain = with_gain ? state[3] : 0.0;
+  m.last_normal_force = state[4];
+  m.last_stiffness = state[5];
+  if (!with_model) return {};
+  const int size = static_cast<int>(state[6]);
+  const auto stored = tribo::deserialize(state + 7, size);
+  if (!(stored.first == c.choice)) return tribo::describe_difference(stored.first, c.choice);
+  return {};
+}
+
+}    // namespace runin_wall
+
+#endif
