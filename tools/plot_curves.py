@@ -74,7 +74,13 @@ def main():
     if contact:
         wear = axes[2]
         wear.plot(t, data["wear_volume_m3"] * 1e18, color="tab:brown")
-        wear.set_ylabel("pin wear volume (um^3)", color="tab:brown")
+        if "disk_wear_volume_m3" in data.dtype.names and np.any(data["disk_wear_volume_m3"] > 0):
+            wear.plot(t, data["disk_wear_volume_m3"] * 1e18, color="tab:olive", linestyle="--", label="disk (track)")
+            wear.plot([], [], color="tab:brown", label="pin")
+            wear.legend(loc="upper left", fontsize=8)
+            wear.set_ylabel("wear volume (um^3)", color="tab:brown")
+        else:
+            wear.set_ylabel("pin wear volume (um^3)", color="tab:brown")
         radius = wear.twinx()
         radius.plot(t, data["contact_radius_m"] * 1e6, color="tab:gray", linestyle=":")
         radius.set_ylabel("contact radius (um)", color="tab:gray")

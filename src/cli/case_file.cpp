@@ -27,7 +27,7 @@ const Schema kSchema = {
     {"", {"title", "pin", "loading", "friction", "run", "solver", "contact", "wear", "output", "sweep"}},
     {"contact", {"tip_radius", "pin_youngs_modulus", "pin_poisson_ratio", "disk_youngs_modulus",
                  "disk_poisson_ratio", "rings", "grid_radius", "materials", "pin_material", "disk_material"}},
-    {"wear", {"k", "hardness", "form", "step_safety", "max_steps"}},
+    {"wear", {"k", "hardness", "form", "step_safety", "max_steps", "disk_k", "disk_hardness"}},
     {"output", {"vtk_times"}},
     {"pin", {"mass", "track_radius", "normal_load"}},
     {"loading", {"drive", "ramp_time", "applied_torque", "target_speed", "target_time", "sliding_speed"}},
@@ -274,6 +274,25 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
                             ? tribo::ArchardForm::thesis
                             : tribo::ArchardForm::plain;
       k.wear.emplace(coefficient, hardness, form);
+      // The disk's own Archard wear of its track (opt-in: without wear.disk_k the disk is not worn, as before).
+      // H_d defaults to the disk material's hardness in contact.materials.
+      if (reader.has("wear.disk_hardness") && !reader.has("wear.disk_k"))
+        reader.fail("wear.disk_hardness", "needs wear.disk_k (the disk's wear coefficient)");
+      if (reader.has("wear.disk_k")) {
+        const double disk_k = reader.non_negative("wear.disk_k");
+        double disk_hardness = 0.0;
+        if (reader.has("wear.disk_hardness")) {
+          disk_hardness = reader.positive("wear.disk_hardness");
+          k.disk_hardness_origin = "wear.disk_hardness";
+        } else if (k.disk.hardness > 0.0) {
+          disk_hardness = k.disk.hardness;
+          k.disk_hardness_origin = k.disk_name + " in " + k.materials_path;
+        } else {
+          reader.fail("wear.disk_hardness", "missing (or name the disk's material with contact.materials and "
+                                            "contact.disk_material)");
+        }
+        k.disk_wear.emplace(disk_k, disk_hardness, form);
+      }
       k.step_safety = reader.positive("wear.step_safety", 0.5);
       if (k.step_safety > 1.0) reader.fail("wear.step_safety", "must be <= 1 (fraction of the stability bound)");
       k.max_wear_steps = reader.positive_integer("wear.max_steps", 1000000);

@@ -32,6 +32,9 @@ struct PinContactCase {
   int rings = 256;
   std::optional<double> grid_radius;       // m; absent: sized from Hertz and the Archard volume
   std::optional<tribo::ArchardWear> wear;  // absent: contact only, no wear
+  // wear.disk_k / disk_hardness: the disk's own Archard wear of its track (same wear.form); absent: not worn.
+  std::optional<tribo::ArchardWear> disk_wear;
+  std::string disk_hardness_origin;        // "wear.disk_hardness" or "<material> in <file>"
   double step_safety = 0.5;
   long max_wear_steps = 1000000;
   double effective_modulus() const { return tribo::effective_modulus(pin, disk); }

@@ -26,6 +26,15 @@ using continuum::PinOnDiskSample;
 struct Row {
   PinOnDiskSample s;
   double wear_volume = 0.0, contact_radius = 0.0, peak_pressure = 0.0, mean_pressure = 0.0;
+  double disk_wear_volume = 0.0, disk_track_depth = 0.0;  // 0 without wear.disk_k
+};
+
+// The disk's worn track at the end of a run, and how it compares with the contact it is left out of.
+struct DiskTrack {
+  double volume = 0.0, depth = 0.0, width = 0.0, length = 0.0, passes = 0.0;
+  double pin_depth = 0.0;            // m, largest wear depth of the pin face
+  double approach_ratio = 0.0;       // max over the run of h_d / (elastic approach)
+  double approach_ratio_time = 0.0;  // s, where that maximum is
 };
 
 struct Frame {  // pin face at one time, for VTK
@@ -42,6 +51,7 @@ struct Curve {
   double grid_radius = 0.0;
   std::vector<double> final_pressure;  // Pa per ring at the end of the run (subsurface stress)
   double ring_width = 0.0;
+  std::optional<DiskTrack> disk;  // with wear.disk_k
 };
 
 // Dynamics first (CVODE), then the wear stepper driven by the sliding distance of each output
@@ -89,6 +99,9 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
   } catch (const std::invalid_argument &e) {
     throw std::runtime_error(std::string(e.what()) + " (raise contact.grid_radius)");
   }
+  std::optional<continuum::DiskTrackWear> disk;
+  if (k.disk_wear) disk.emplace(*k.disk_wear, c.parameters.track_radius);
+  DiskTrack track;
   std::size_t next_frame = 0;
   std::vector<double> frame_times = c.vtk_times;
   std::sort(frame_times.begin(), frame_times.end());
@@ -103,6 +116,20 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
     row.contact_radius = contact.contact_radius;
     row.peak_pressure = contact.peak_pressure;
     row.mean_pressure = contact.mean_pressure;
+    if (disk) {
+      disk->slide(load, std::max(row.s.distance - disk->slid(), 0.0), 2.0 * contact.contact_radius);
+      row.disk_wear_volume = disk->volume();
+      row.disk_track_depth = disk->depth();
+      // Elastic approach: the rigid approach beyond first touch of the (worn) profile, the scale of the gap
+      // that sets the pressure. A groove much shallower than it leaves the pressure as solved on the flat.
+      double touch = pin->profile_height(0);
+      for (int i = 1; i < pin->grid().rings(); ++i) touch = std::min(touch, pin->profile_height(i));
+      const double elastic = contact.approach - touch;
+      if (elastic > 0.0 && disk->depth() / elastic > track.approach_ratio) {
+        track.approach_ratio = disk->depth() / elastic;
+        track.approach_ratio_time = row.s.t;
+      }
+    }
     while (with_frames && next_frame < frame_times.size() && row.s.t >= frame_times[next_frame] - 1e-12) {
       Frame f{row.s.t, {}, {}, {}, {}};
       for (int i = 0; i < pin->grid().rings(); ++i) {
@@ -118,20 +145,30 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
   curve.wear_steps = pin->steps();
   curve.final_pressure = pin->contact().pressure;
   curve.ring_width = pin->grid().ring_width();
+  if (disk) {
+    track.volume = disk->volume();
+    track.depth = disk->depth();
+    track.width = disk->track_width();
+    track.length = disk->worn_length();
+    track.passes = disk->passes();
+    track.pin_depth = *std::max_element(pin->wear_depth().begin(), pin->wear_depth().end());
+    curve.disk = track;
+  }
   return curve;
 }
 
 std::string csv_text(const std::vector<Row> &rows) {
   std::string text =
       "t_s,applied_torque_N_m,friction_force_N,friction_torque_N_m,mu,speed_m_s,sliding_distance_m,state_slip,"
-      "mu_law,roughness,wear_volume_m3,contact_radius_m,peak_pressure_Pa,mean_pressure_Pa\n";
+      "mu_law,roughness,wear_volume_m3,contact_radius_m,peak_pressure_Pa,mean_pressure_Pa,disk_wear_volume_m3,"
+      "disk_track_depth_m\n";
   for (const auto &r : rows) {
     const auto &s = r.s;
     text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g},{:.12g},{:.12g},{:.12g},"
-                        "{:.12g},{:.12g}\n",
+                        "{:.12g},{:.12g},{:.12g},{:.12g}\n",
                         s.t, s.applied_torque, s.friction_force, s.friction_torque, s.mu, s.speed, s.distance,
                         s.state == continuum::ContactState::Slip ? 1 : 0, s.mu_law, s.roughness, r.wear_volume,
-                        r.contact_radius, r.peak_pressure, r.mean_pressure);
+                        r.contact_radius, r.peak_pressure, r.mean_pressure, r.disk_wear_volume, r.disk_track_depth);
   }
   return text;
 }
@@ -208,6 +245,9 @@ std::vector<std::string> write_frames(const std::vector<Frame> &frames, const fs
   return coupling::write_surface_series(out, dir.string(), "pin_face");
 }
 #endif
+
+// Track depth / elastic approach above which the groove left out of the contact solve is reported.
+constexpr double kGrooveTolerance = 0.05;
 
 std::string or_none(double t) { return t < 0.0 ? std::string("none") : fmt::format("{:.6g} s", t); }
 
@@ -319,6 +359,23 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
       fmt::print("  wear volume       {:.6g} m^3 (Archard k W s / {}H = {:.6g}), {} adaptive wear steps\n",
                  last.wear_volume, c.contact->wear->form() == tribo::ArchardForm::thesis ? "3" : "",
                  c.contact->wear->volume(p.normal_load, last.s.distance), curve.wear_steps);
+    if (curve.disk) {
+      const auto &d = *curve.disk;
+      const auto &w = *c.contact->disk_wear;
+      const bool thesis = w.form() == tribo::ArchardForm::thesis;
+      fmt::print("  disk wear         {:.6g} m^3 (Archard k_d W s / {}H_d = {:.6g}), k_d = {:g}, H_d = {:.4g} Pa ({})\n",
+                 d.volume, thesis ? "3" : "", w.volume(p.normal_load, last.s.distance), w.coefficient(), w.hardness(),
+                 c.contact->disk_hardness_origin);
+      fmt::print("  pin + disk        {:.6g} m^3 worn, the pin's part {:.4g}\n", last.wear_volume + d.volume,
+                 last.wear_volume + d.volume > 0.0 ? last.wear_volume / (last.wear_volume + d.volume) : 0.0);
+      fmt::print("  disk track        mean depth {:.4g} m, {:.4g} m wide x {:.4g} m long ({:.3g} passes of 2 pi r); "
+                 "pin wear depth {:.4g} m\n",
+                 d.depth, d.width, d.length, d.passes, d.pin_depth);
+      fmt::print("  groove            track depth / elastic approach <= {:.3g} (t = {:g} s); the contact is solved "
+                 "on the flat disk{}\n",
+                 d.approach_ratio, d.approach_ratio_time,
+                 d.approach_ratio <= kGrooveTolerance ? fmt::format(" (negligible: <= {:g})", kGrooveTolerance) : "");
+    }
   }
   std::vector<std::string> warnings;
   for (std::size_t i = 0; i < stress.size(); ++i) {
@@ -352,6 +409,11 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
     fmt::print("    frictionless: disk peak von Mises {:.4g} Pa at depth {:.3g} m, pin {:.4g} Pa at depth {:.3g} m\n",
                f0.disk.peak.von_mises, f0.disk.peak.z, f0.pin.peak.von_mises, f0.pin.peak.z);
   }
+  if (curve.disk && curve.disk->approach_ratio > kGrooveTolerance)
+    warnings.push_back(fmt::format("WARNING: the disk's track depth reaches {:.3g} x the elastic approach (t = {:g} s, "
+                                   "> {:g}): the worn groove, left out of the contact solve, would change the "
+                                   "contact pressure",
+                                   curve.disk->approach_ratio, curve.disk->approach_ratio_time, kGrooveTolerance));
   for (const auto &w : warnings) fmt::print("  {}\n", w);
   fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", curve.report.steps,
              curve.report.breakaway_times.size(), curve.report.restick_times.size());

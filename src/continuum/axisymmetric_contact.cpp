@@ -268,4 +268,26 @@ double PinWear::wear_volume() const {
   return v;
 }
 
+DiskTrackWear::DiskTrackWear(tribo::ArchardWear wear, double track_radius)
+    : wear_(wear), circumference_(2.0 * M_PI * track_radius) {
+  require(std::isfinite(track_radius) && track_radius > 0.0, "disk track radius must be positive");
+}
+
+void DiskTrackWear::slide(double load, double distance, double contact_width) {
+  require(std::isfinite(distance) && distance >= 0.0, "disk slide distance must be >= 0");
+  require(std::isfinite(contact_width) && contact_width >= 0.0, "disk contact width must be >= 0");
+  volume_ += wear_.volume(load, distance);
+  slid_ += distance;
+  width_ = std::max(width_, contact_width);
+}
+
+double DiskTrackWear::worn_length() const { return std::min(slid_, circumference_); }
+
+double DiskTrackWear::depth() const {
+  const double area = worn_length() * width_;
+  return area > 0.0 ? volume_ / area : 0.0;
+}
+
+double DiskTrackWear::passes() const { return slid_ / circumference_; }
+
 }  // namespace runin::continuum

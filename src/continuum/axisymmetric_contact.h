@@ -92,7 +92,7 @@ struct PinWearParameters {
 };
 
 // Archard wear of the pin tip along the sliding distance: dh_i/ds = (k/H) p_i, gap0 = r^2/2R + h.
-// The disk's track is renewed every revolution and is taken as unworn.
+// The contact is solved against a flat disk: the disk's worn track (DiskTrackWear) is not in the gap.
 class PinWear {
  public:
   PinWear(const PinWearParameters &parameters, tribo::ArchardWear wear, double load);
@@ -125,6 +125,36 @@ class PinWear {
   double slid_ = 0.0;
   long steps_ = 0;
   std::string message_;
+};
+
+// Archard wear of the disk's track under the pin (issue 14 item 5). Each body wears by its own k_i/H_i
+// (with equal k the split of the pair's volume is tribo::wear_share): the disk loses
+//   V_d = (k_d/H_d) int W ds          (plain form; / 3H_d for ArchardForm::thesis)
+// spread over the band the pin has swept: the track length L = min(s, 2 pi r) (one pass covers s; after a
+// revolution the whole circumference) times the width w = the widest contact diameter so far. The mean
+// track depth is h_d = V_d / (L w): one pass leaves (k_d/H_d) W / w, n passes n times that.
+// A bookkeeping model: the groove is not fed back into the contact (see doc/pin_on_disk.md for why that is
+// negligible while h_d << the elastic approach; the CLI checks it).
+class DiskTrackWear {
+ public:
+  // Throws std::invalid_argument on a non-positive or non-finite track radius.
+  DiskTrackWear(tribo::ArchardWear wear, double track_radius);
+
+  // Slides `distance` (>= 0) under the normal force `load` through a contact `contact_width` wide (m).
+  void slide(double load, double distance, double contact_width);
+
+  double volume() const { return volume_; }           // m^3
+  double slid() const { return slid_; }               // m
+  double track_width() const { return width_; }       // m, widest contact diameter so far
+  double worn_length() const;                         // m, min(s, 2 pi r)
+  double depth() const;                               // m, V_d / (L w); 0 before any sliding
+  double passes() const;                              // s / (2 pi r)
+  const tribo::ArchardWear &wear() const { return wear_; }
+
+ private:
+  tribo::ArchardWear wear_;
+  double circumference_;
+  double volume_ = 0.0, slid_ = 0.0, width_ = 0.0;
 };
 
 }  // namespace runin::continuum

@@ -3,7 +3,7 @@
 
 usage: check_pin_on_disk_csv.py DIR --t-end T [--breakaway T_B] [--final-speed V]
                                 [--final-mu-law MU] [--png] [--archard K/H W] [--sweep N]
-                                [--vtk N] [--run-in]
+                                [--vtk N] [--run-in] [--disk-archard K_D/H_D W R_TRACK]
 """
 import argparse
 import csv
@@ -15,7 +15,7 @@ from output_checks import close, finish, leftover_problems, png_problems, read_c
 
 COLUMNS = ["t_s", "applied_torque_N_m", "friction_force_N", "friction_torque_N_m", "mu",
            "speed_m_s", "sliding_distance_m", "state_slip", "mu_law", "roughness", "wear_volume_m3",
-           "contact_radius_m", "peak_pressure_Pa", "mean_pressure_Pa"]
+           "contact_radius_m", "peak_pressure_Pa", "mean_pressure_Pa", "disk_wear_volume_m3", "disk_track_depth_m"]
 SWEEP = ["mu0", "applied_torque_N_m", "breakaway_s", "peak_friction_force_N", "peak_time_s", "steady_time_s",
          "steady_mu", "wear_volume_m3"]
 
@@ -30,6 +30,10 @@ def main():
     parser.add_argument("--png", action="store_true", help="require pin_on_disk.png")
     parser.add_argument("--archard", type=float, nargs=2, metavar=("K_OVER_H", "W"),
                         help="final wear volume = (k/H) W s (rel 1e-9); contact grows, pressure falls")
+    parser.add_argument("--disk-archard", type=float, nargs=3, metavar=("KD_OVER_HD", "W", "R_TRACK"),
+                        help="the disk's track wears: final disk volume = (k_d/H_d) W s (rel 1e-9), pin + disk = "
+                             "both Archard volumes (with --archard), track depth = V_d / (min(s, 2 pi r) x widest "
+                             "contact diameter) (rel 1e-6); without it the disk columns must be 0")
     parser.add_argument("--sweep", type=int, help="mu0 sweep of N values: thesis claim 2 in its summary")
     parser.add_argument("--vtk", type=int, help="expect N pin_face_*.vts frames and pin_face.pvd")
     parser.add_argument("--claims", type=float, nargs=3, metavar=("PEAK", "TIME", "START"),
@@ -75,6 +79,30 @@ def main():
             problems.append("peak/mean pressure did not fall as the pin wore")
         if any(r[12] < r[13] * (1 - 1e-9) for r in rows):
             problems.append("peak pressure below mean pressure")
+    disk = [r[14] for r in rows]
+    depth = [r[15] for r in rows]
+    if args.disk_archard:
+        kd_over_hd, load, track_radius = args.disk_archard
+        expected = kd_over_hd * load * rows[-1][6]
+        if not close(disk[-1], expected, 1e-9):
+            problems.append(f"final disk wear volume {disk[-1]} != Archard (k_d/H_d) W s = {expected}")
+        if args.archard and not close(rows[-1][10] + disk[-1], expected + args.archard[0] * args.archard[1] * rows[-1][6],
+                                      1e-9):
+            problems.append(f"pin + disk volume {rows[-1][10] + disk[-1]} != the sum of both Archard volumes")
+        if any(b < a for a, b in zip(disk, disk[1:])):
+            problems.append("disk wear volume decreases")
+        if not disk[-1] > 0.0:
+            problems.append("the disk is not worn")
+        widest = 0.0
+        for r in rows:
+            widest = max(widest, 2.0 * r[11])
+            band = min(r[6], 2.0 * math.pi * track_radius) * widest
+            want = r[14] / band if band > 0.0 else 0.0
+            if not close(r[15], want, 1e-6):
+                problems.append(f"track depth {r[15]} at t={r[0]} != V_d / (L w) = {want}")
+                break
+    elif any(disk) or any(depth):
+        problems.append("disk wear columns nonzero, but the case does not wear the disk")
     if args.run_in:
         first_slip = next(r for r in rows if r[7] == 1)
         if not first_slip[8] > 1.05 * rows[-1][8]:

@@ -192,3 +192,60 @@ TEST(PinWear, ThesisArchardFormWearsAThirdOfThePlainForm) {
   EXPECT_NEAR(plain.wear_volume() / (1e-4 * kLoad * 5e-3 / 1e9), 1.0, 1e-10);
   EXPECT_NEAR(thesis.wear_volume() / (1e-4 * kLoad * 5e-3 / 3e9), 1.0, 1e-10);
 }
+
+// The disk's track (issue 14 item 5): its own Archard k_d/H_d, spread over the swept band.
+TEST(DiskTrackWear, VolumeIsTheClosedFormForAConstantLoad) {
+  constexpr double k_d = 1e-4, hardness = 0.245e9, track_radius = 0.102, width = 1.9e-4;
+  const double circumference = 2.0 * M_PI * track_radius;
+  for (auto form : {runin::tribo::ArchardForm::plain, runin::tribo::ArchardForm::thesis}) {
+    DiskTrackWear disk(runin::tribo::ArchardWear(k_d, hardness, form), track_radius);
+    const double factor = k_d / (form == runin::tribo::ArchardForm::thesis ? 3.0 * hardness : hardness);
+    EXPECT_EQ(disk.depth(), 0.0);
+    // Uneven increments, as the CVODE output grid with its event times gives them.
+    double s = 0.0;
+    for (int i = 1; i <= 2000; ++i) {
+      const double ds = 1e-3 * (1.0 + 0.5 * std::sin(0.37 * i));
+      disk.slide(kLoad, ds, width * std::min(1.0, i / 500.0));
+      s += ds;
+      EXPECT_NEAR(disk.volume() / (factor * kLoad * s), 1.0, 1e-10) << i;
+      // Track depth: one pass leaves (k_d/H_d) W / w on the swept length; n passes n times that.
+      const double passes = s / circumference;
+      const double expected = passes < 1.0 ? factor * kLoad / disk.track_width()
+                                           : factor * kLoad * s / (circumference * disk.track_width());
+      EXPECT_NEAR(disk.depth() / expected, 1.0, 1e-10) << i;
+      EXPECT_NEAR(disk.passes(), passes, 1e-12);
+    }
+    EXPECT_GT(disk.passes(), 2.0);  // both regimes covered
+    EXPECT_DOUBLE_EQ(disk.track_width(), width);
+    EXPECT_DOUBLE_EQ(disk.worn_length(), circumference);
+  }
+  EXPECT_THROW(DiskTrackWear(runin::tribo::ArchardWear(1e-4, 1e9), 0.0), std::invalid_argument);
+  DiskTrackWear disk(runin::tribo::ArchardWear(1e-4, 1e9), 0.1);
+  EXPECT_THROW(disk.slide(kLoad, -1e-3, 1e-4), std::invalid_argument);
+}
+
+TEST(DiskTrackWear, PinPlusDiskIsTheSumOfBothArchardVolumes) {
+  // Each body by its own k_i/H_i (Cu pin H = 0.87 GPa, Al disk H = 0.245 GPa, potentials/CuAl.runin), slid
+  // together as the CLI does: the pair loses (k_p/H_p + k_d/H_d) W s, and with equal k the pin's part is
+  // tribo::wear_share(H_p, H_d) (the softer disk takes 1/H more).
+  constexpr double h_pin = 0.87e9, h_disk = 0.245e9;
+  const auto hertz = hertz_sphere_on_flat(kTip, cu_al_modulus(), kLoad);
+  for (double k_disk : {1e-4, 3e-5}) {
+    const runin::tribo::ArchardWear pin_archard(1e-4, h_pin), disk_archard(k_disk, h_disk);
+    PinWear pin_wear(pin(4.0 * hertz.contact_radius, 64), pin_archard, kLoad);
+    DiskTrackWear disk(disk_archard, 0.102);
+    double s = 0.0;
+    for (int i = 1; i <= 20; ++i) {
+      const double ds = 2.5e-4 * i;
+      ASSERT_TRUE(pin_wear.advance(ds)) << pin_wear.message();
+      disk.slide(kLoad, ds, 2.0 * pin_wear.contact().contact_radius);
+      s += ds;
+      const double total = (1e-4 / h_pin + k_disk / h_disk) * kLoad * s;
+      EXPECT_NEAR((pin_wear.wear_volume() + disk.volume()) / total, 1.0, 1e-10) << i;
+    }
+    const double pin_part = pin_wear.wear_volume() / (pin_wear.wear_volume() + disk.volume());
+    if (k_disk == 1e-4) EXPECT_NEAR(pin_part, runin::tribo::wear_share(h_pin, h_disk), 1e-10);
+    else EXPECT_GT(pin_part, runin::tribo::wear_share(h_pin, h_disk) + 0.1);
+    EXPECT_NEAR(disk.track_width(), 2.0 * pin_wear.contact().contact_radius, 1e-15);
+  }
+}
