@@ -34,7 +34,7 @@ std::string body_label(const std::string &body, const std::string &material_name
 double peak_difference(const continuum::LineContactStress &x, const continuum::LineContactStress &reference);
 
 // Section below the contact: points (x, 0, -depth) [m], arrays von_mises_<a>_Pa, tresca_<a>_Pa,
-// von_mises_<b>_Pa, tresca_<b>_Pa and body a's six sigma_*_<a>_Pa. Returns the written files (.pvd last).
+// von_mises_<b>_Pa, tresca_<b>_Pa. Returns the written files (.pvd last).
 std::vector<std::string> write_line_stress(const LineStressReport &report, const std::filesystem::path &dir,
                                            const std::string &stem);
 

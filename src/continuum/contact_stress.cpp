@@ -62,7 +62,7 @@ LineContactStress line_contact_stress(const std::vector<double> &x_nodes, const 
   // loaded width) and rescaled to the same resultant: the shear jumps between strips, whose surface stress is
   // log-singular at the strip edges, are then k times smaller (12 node strips across a Hertz contact: the
   // surface peak at mu = 0.95 is 12 % off McEwen without it).
-  constexpr int kSubStrips = 128;
+  constexpr int kSubStrips = 64;
   const int loaded = static_cast<int>(last - first + 1);
   const int k = std::max(1, (kSubStrips + loaded - 1) / loaded);
   const double s = h / k, e0 = x_nodes[first] - 0.5 * h;

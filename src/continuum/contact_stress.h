@@ -39,16 +39,16 @@ struct LineContactStress {
 // section [centre - 1.5 b, centre + 1.5 b] x [0, 1.5 b] (x at cell centres).
 LineContactStress hertz_line_contact_stress(double peak_pressure, double half_width, double friction_coefficient,
                                             const tribo::Material &a, const tribo::Material &b, double centre = 0.0,
-                                            int points = 64);
+                                            int points = 48);
 
 // Any nodal line pressure (a contact solver's output at uniformly spaced nodes x_nodes, the worn profile): the
 // Flamant influence tier on the strips of the loaded nodes (LineTraction::from_nodes), q = mu p. The section is
-// 1.5 b either side of the loaded width's centre and 1.5 b deep, about `points` x `points` points; the x
+// 1.5 b either side of the loaded width's centre and 1.5 b deep, about `points` x `points` points (48 by default); the x
 // points are spaced h / m (m odd) from a node, so none lies on a strip edge (where the surface stress of a
 // shear jump is log-singular). Throws std::invalid_argument for mismatched sizes, non-uniform nodes or no load.
 LineContactStress line_contact_stress(const std::vector<double> &x_nodes, const std::vector<double> &pressure,
                                       double friction_coefficient, const tribo::Material &a,
-                                      const tribo::Material &b, int points = 64);
+                                      const tribo::Material &b, int points = 48);
 
 // The yield strength of a material for the verdict: S_y if known, else Tabor's H / 2.8 (0 if neither);
 // `tabor` tells which.

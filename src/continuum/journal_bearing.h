@@ -168,10 +168,10 @@ JournalBearingSummary summarise(const std::vector<JournalBearingSample> &samples
 // -q; each body its own Poisson ratio and S_y.
 // Influence tier on a solved nodal pressure (any wear profile):
 LineContactStress bore_contact_stress(const ConformalContact &contact, const std::vector<double> &pressure, double mu,
-                                      const tribo::Material &bearing, const tribo::Material &shaft, int points = 64);
+                                      const tribo::Material &bearing, const tribo::Material &shaft, int points = 48);
 // McEwen's closed form on the Hertz line contact of the unworn bore (R_eff = R (R + c) / c, E* of the bore)
 // under load_per_length.
 LineContactStress bore_hertz_stress(const BoreGeometry &bore, double load_per_length, double mu,
-                                    const tribo::Material &bearing, const tribo::Material &shaft, int points = 64);
+                                    const tribo::Material &bearing, const tribo::Material &shaft, int points = 48);
 
 }  // namespace runin::continuum

@@ -125,12 +125,12 @@ class RingLinerWear {
 // depth into each body. The liner (body a) carries the friction shear q = mu p in +x (the ring sliding in +x
 // for mu > 0), the ring face (body b) -q. Influence tier on the ring-cell pressure (any worn face):
 LineContactStress ring_face_stress(const RingLinerWear &wear, const std::vector<double> &pressure, double mu,
-                                   const tribo::Material &liner, const tribo::Material &ring, int points = 64);
+                                   const tribo::Material &liner, const tribo::Material &ring, int points = 48);
 // McEwen's closed form on the Hertz contact of the crowned, unworn face under `load` (N around the bore):
 // crown radius w^2 / (8 crown_height), load per length W / (pi D), E* = contact_modulus. Empty when the face
 // is not Hertzian: no crown, or the Hertz width 2b reaches the face width.
 std::optional<LineContactStress> ring_face_hertz_stress(const RingLinerWearSettings &settings, double load, double mu,
                                                         const tribo::Material &liner, const tribo::Material &ring,
-                                                        int points = 64);
+                                                        int points = 48);
 
 }  // namespace runin::continuum
