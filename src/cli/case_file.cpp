@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <tuple>
 #include <fstream>
 #include <map>
 #include <set>
@@ -117,6 +118,38 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
   } catch (const std::invalid_argument &e) {
     reader.fail("friction", e.what());
   }
+}
+
+std::optional<NamedMaterials> read_named_materials(const CaseReader &reader, const std::string &case_path,
+                                                   const std::string &section, const std::string &key_a,
+                                                   const std::string &key_b) {
+  const std::string file_key = section + ".materials", a_key = section + "." + key_a, b_key = section + "." + key_b;
+  if (!reader.has(file_key) && !reader.has(a_key) && !reader.has(b_key)) return std::nullopt;
+  NamedMaterials m;
+  const std::string file = reader.text(file_key, "");
+  if (file.empty()) reader.fail(file_key, "needed with " + a_key + " / " + b_key);
+  std::filesystem::path resolved(file);
+  if (resolved.is_relative()) {
+    resolved = std::filesystem::path(case_path).parent_path() / file;
+#ifdef RUNIN_SOURCE_DIR
+    if (!std::filesystem::exists(resolved) && std::filesystem::exists(std::filesystem::path(RUNIN_SOURCE_DIR) / file))
+      resolved = std::filesystem::path(RUNIN_SOURCE_DIR) / file;
+#endif
+  }
+  m.path = resolved.lexically_normal().string();
+  if (!std::filesystem::exists(m.path)) reader.fail(file_key, "no such file: " + m.path);
+  m.name_a = reader.text(a_key, "");
+  m.name_b = reader.text(b_key, "");
+  if (m.name_a.empty()) reader.fail(a_key, "needed with " + file_key);
+  if (m.name_b.empty()) reader.fail(b_key, "needed with " + file_key);
+  for (const auto &[key, name, out] : {std::make_tuple(a_key, m.name_a, &m.a), std::make_tuple(b_key, m.name_b, &m.b)}) {
+    try {
+      *out = read_runin_material(m.path, name);
+    } catch (const std::invalid_argument &e) {
+      reader.fail(key, e.what());
+    }
+  }
+  return m;
 }
 
 tribo::Material read_runin_material(const std::string &path, const std::string &name) {

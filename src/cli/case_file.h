@@ -63,6 +63,20 @@ PinOnDiskCase with_mu0(const PinOnDiskCase &c, double mu0);
 // std::invalid_argument naming the file and line (or the missing material).
 tribo::Material read_runin_material(const std::string &path, const std::string &name);
 
+class CaseReader;
+// Two materials named in a RunIn coefficient file, for the subsurface-stress yield verdict of the line contacts
+// (journal bearing, piston ring): `<section>.materials` (the .runin file; relative: to the case file's
+// directory, else to the RunIn source tree) with `<section>.<key_a>` and `<section>.<key_b>`. None of the three
+// keys: nullopt (S_y unknown). A missing partner key or an unknown material fails naming its key (exit 2).
+struct NamedMaterials {
+  std::string path;                  // resolved
+  std::string name_a, name_b;
+  tribo::Material a, b;              // E, nu, H, S_y (0 if the file gives none) from the file
+};
+std::optional<NamedMaterials> read_named_materials(const CaseReader &reader, const std::string &case_path,
+                                                   const std::string &section, const std::string &key_a,
+                                                   const std::string &key_b);
+
 // `friction` (of [friction] model `model`) with the static coefficient replaced by mu0, the thesis's
 // one varied parameter: constant: mu0 (+ alpha V); static_kinetic: mu_static = mu0, mu_kinetic in the
 // case's ratio; feedback: the same law started at the roughness R0 with mu(R0) = mu0

@@ -1,5 +1,6 @@
 #include "cli/cmd_journal_bearing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +14,7 @@
 
 #include "cli/case_file.h"
 #include "cli/journal_bearing_case.h"
+#include "cli/line_stress_report.h"
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/journal_bearing.h"
@@ -177,6 +179,63 @@ std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, 
 }
 #endif
 
+// Subsurface stress below each bearing half (doc/subsurface_stress.md). Start: the unworn bore; McEwen's closed
+// form on the Hertz line contact when the solved pressure is Hertzian (peak within 5 % of Hertz p0), else the
+// influence tier; mu at break-away (largest |F| / N up to the first slip sample). End: the influence tier on the
+// last solved (worn) pressure, with the |mu| of the last slip sample (the last sample without slip). The sign of
+// the shear follows the journal's turning direction.
+std::vector<LineStressReport> subsurface_stress(const JournalBearingCase &c, const Curve &curve) {
+  std::vector<LineStressReport> reports;
+  const auto &samples = curve.samples;
+  const auto &rep = curve.report;
+  if (samples.empty() || rep.initial_pressure.size() != static_cast<std::size_t>(c.parameters.halves) ||
+      rep.final_pressure.size() != rep.initial_pressure.size())
+    return reports;
+  const continuum::ConformalContact contact(c.parameters.bore);
+  bool tabor_bearing = false, tabor_shaft = false;
+  continuum::verdict_yield_strength(c.bearing_material, &tabor_bearing);
+  continuum::verdict_yield_strength(c.shaft_material, &tabor_shaft);
+  const tribo::Material bearing = verdict_material(c.bearing_material), shaft = verdict_material(c.shaft_material);
+  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
+  const JournalBearingSample *last_slip = nullptr, *first_slip = nullptr;
+  for (const auto &s : samples)
+    if (s.state == continuum::ContactState::Slip) {
+      if (!first_slip) first_slip = &s;
+      last_slip = &s;
+    }
+  const JournalBearingSample &end = last_slip ? *last_slip : samples.back();
+  const double dir_start = first_slip ? sign(first_slip->journal_speed) : 1.0;
+  const double mu_start = dir_start * curve.summary.start_friction_force / samples.front().normal_force;
+  for (int h = 0; h < c.parameters.halves; ++h) {
+    LineStressReport r;
+    r.contact = c.parameters.halves == 2 ? (h == 0 ? "lower half" : "upper half") : "bearing";
+    r.label_a = body_label("bearing", c.bearing_material_name);
+    r.label_b = body_label("shaft", c.shaft_material_name);
+    r.field_a = "bearing", r.field_b = "shaft";
+    r.materials_hint = "contact.materials";
+    r.tabor_a = tabor_bearing, r.tabor_b = tabor_shaft;
+    const auto &p_start = rep.initial_pressure[h];
+    const double solved_peak = *std::max_element(p_start.begin(), p_start.end());
+    const auto hertz = continuum::bore_hertz_stress(c.parameters.bore, c.parameters.half_load(h) / c.parameters.bore.axial_width,
+                                                    mu_start, bearing, shaft);
+    const bool hertzian = std::abs(solved_peak / hertz.peak_pressure - 1.0) <= 0.05;
+    r.cross_check = fmt::format("solved unworn pressure: p0 = {:.4g} Pa ({:+.2f} % from Hertz): start from the {}",
+                                solved_peak, 100.0 * (solved_peak / hertz.peak_pressure - 1.0),
+                                hertzian ? "closed form" : "influence tier");
+    r.frames.push_back({samples.front().t, hertzian ? hertz : continuum::bore_contact_stress(contact, p_start, mu_start,
+                                                                                           bearing, shaft)});
+    const double mu_end = sign(end.journal_speed) * std::abs(end.half[h].mu != 0.0 ? end.half[h].mu : end.mu);
+    // The symmetric set-up: the upper half's end state equals the lower's (computed once).
+    if (h == 1 && rep.final_pressure[1] == rep.final_pressure[0] && end.half[1].mu == end.half[0].mu)
+      r.frames.push_back({samples.back().t, reports.front().frames.back().stress});
+    else
+      r.frames.push_back({samples.back().t,
+                          continuum::bore_contact_stress(contact, rep.final_pressure[h], mu_end, bearing, shaft)});
+    reports.push_back(std::move(r));
+  }
+  return reports;
+}
+
 int run(const Options &o, const PlotRunner &plot) {
   const JournalBearingCase c = read_journal_bearing_case(o.case_path, o.law_path);
   const Curve main_curve = run_case(c, *c.friction, true, o.max_wear_updates);
@@ -194,7 +253,9 @@ int run(const Options &o, const PlotRunner &plot) {
   // Everything is computed; the output set is staged and moved in only when complete.
   StagedOutput out(o.output_dir, {"journal_bearing.csv", "journal_bearing_summary.csv", "journal_bearing.png", "journal_bearing_sweep.csv",
                                   "journal_bearing_sweep_summary.csv", "journal_bearing_mu0.png", "vtk/bore.pvd",
-                                  "vtk/bore_*.vts", "vtk/bore_upper.pvd"});
+                                  "vtk/bore_*.vts", "vtk/bore_upper.pvd", "vtk/subsurface.pvd", "vtk/subsurface_*.vts",
+                                  "vtk/subsurface_upper.pvd"});
+  const std::vector<LineStressReport> stress = subsurface_stress(c, main_curve);
   const int halves = c.parameters.halves;
   std::string text = columns(halves) + "\n";
   for (const auto &s : main_curve.samples) text += row(s) + "\n";
@@ -234,6 +295,11 @@ int run(const Options &o, const PlotRunner &plot) {
     const auto upper_written = coupling::write_surface_series(surface_frames(c, contact, main_curve.frames, true),
                                                               (out.staging() / "vtk").string(), "bore_upper");
     vtk_note += fmt::format(", upper half {}", out.destination_of(upper_written.back()).string());
+  }
+  for (std::size_t h = 0; h < stress.size(); ++h) {
+    const auto written_stress = write_line_stress(stress[h], out.staging() / "vtk", h == 0 ? "subsurface" : "subsurface_upper");
+    vtk_note += fmt::format("; subsurface stress{} {} ({} frames)", h == 0 ? "" : " (upper half)",
+                            out.destination_of(written_stress.back()).string(), stress[h].frames.size());
   }
 #endif
   out.commit();
@@ -286,6 +352,9 @@ int run(const Options &o, const PlotRunner &plot) {
                lower.friction_torque, lower.normal_force, 1e9 * lower.wear_volume, 1e-6 * lower.peak_pressure,
                upper.friction_torque, upper.normal_force, 1e9 * upper.wear_volume, 1e-6 * upper.peak_pressure);
   }
+  std::vector<std::string> warnings;
+  for (const auto &report : stress) print_line_stress(report, warnings);
+  for (const auto &w : warnings) fmt::print("  {}\n", w);
   if (one_contact) {
     const auto &o1 = one_contact->summary;
     const auto ratio = [](double a, double b) { return b != 0.0 ? fmt::format("x{:.4g}", a / b) : std::string("n/a"); };

@@ -13,6 +13,7 @@
 #include <fmt/core.h>
 
 #include "cli/case_file.h"
+#include "cli/line_stress_report.h"
 #include "cli/piston_ring_case.h"
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
@@ -121,6 +122,7 @@ struct WearPass {
   std::vector<WearRow> rows;
   std::vector<WearSnapshot> snapshots;
   double initial_peak = 0.0;
+  std::vector<double> initial_pressure, final_pressure;  // Pa per ring cell, first and last sample
 };
 
 WearSnapshot snapshot(const continuum::RingLinerWear &wear, const PistonRingSample &s) {
@@ -162,7 +164,8 @@ std::vector<WearPass> run_wear(std::vector<continuum::RingLinerWear> &wear,
                                                w.archard().coefficient()));
       }
       const auto contact = w.pressure(s.ring_position, s.normal_load);
-      if (i == 0) passes[k].initial_peak = contact.peak;
+      if (i == 0) passes[k].initial_peak = contact.peak, passes[k].initial_pressure = contact.pressure;
+      if (i + 1 == grid.size()) passes[k].final_pressure = contact.pressure;
       passes[k].rows.push_back({w.ring_volume(), w.liner_volume(), contact.width, contact.peak, contact.mean});
     }
     const double t = grid[i].t;
@@ -378,6 +381,60 @@ std::string pack_csv_text(const PistonRingCase &c, const PackRun &run, const std
   return text;
 }
 
+// Subsurface stress below each ring face (doc/subsurface_stress.md). Start: the unworn face; McEwen's closed form
+// on the Hertz contact of the crowned face when it is Hertzian (the Hertz width inside the face and the solved
+// peak within 5 % of Hertz p0), else the influence tier; mu at break-away (largest |F| / W up to the first slip
+// sample). End: the influence tier on the last sample's (worn) pressure, with the |mu| of the last slip sample.
+// The sign of the shear follows the ring's sliding direction on the liner.
+std::vector<LineStressReport> subsurface_stress(const PistonRingCase &c, const PackRun &run,
+                                                const std::vector<continuum::RingLinerWear> &wear,
+                                                const std::vector<WearPass> &passes) {
+  std::vector<LineStressReport> reports;
+  bool tabor_liner = false, tabor_ring = false;
+  continuum::verdict_yield_strength(c.liner_material, &tabor_liner);
+  continuum::verdict_yield_strength(c.ring_material, &tabor_ring);
+  const tribo::Material liner = verdict_material(c.liner_material), ring = verdict_material(c.ring_material);
+  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
+  for (std::size_t k = 0; k < c.rings.size(); ++k) {
+    const auto &samples = run.grid[k];
+    const auto &pass = passes[k];
+    if (samples.empty() || pass.initial_pressure.empty() || pass.final_pressure.empty()) continue;
+    const PistonRingSample *first_slip = nullptr, *last_slip = nullptr;
+    for (const auto &s : samples)
+      if (s.state == continuum::ContactState::Slip) {
+        if (!first_slip) first_slip = &s;
+        last_slip = &s;
+      }
+    const auto &first = samples.front();
+    const PistonRingSample &end = last_slip ? *last_slip : samples.back();
+    const double mu_start = (first_slip ? sign(first_slip->speed) : 1.0) *
+                            run.rings[k].summary.start_friction_force / first.normal_load;
+    const double mu_end = sign(end.speed) * end.mu;
+    LineStressReport r;
+    r.contact = c.rings.size() > 1 ? "ring " + c.rings[k].name + " face" : "ring face";
+    r.label_a = body_label("liner", c.liner_material_name);
+    r.label_b = body_label("ring", c.ring_material_name);
+    r.field_a = "liner", r.field_b = "ring";
+    r.materials_hint = "material.materials";
+    r.tabor_a = tabor_liner, r.tabor_b = tabor_ring;
+    const auto &p_start = pass.initial_pressure;
+    const double solved_peak = *std::max_element(p_start.begin(), p_start.end());
+    const auto hertz = continuum::ring_face_hertz_stress(wear[k].settings(), first.normal_load, mu_start, liner, ring);
+    const bool hertzian = hertz && std::abs(solved_peak / hertz->peak_pressure - 1.0) <= 0.05;
+    if (hertz)
+      r.cross_check = fmt::format("solved unworn pressure: p0 = {:.4g} Pa ({:+.2f} % from Hertz): start from the {}",
+                                  solved_peak, 100.0 * (solved_peak / hertz->peak_pressure - 1.0),
+                                  hertzian ? "closed form" : "influence tier");
+    else
+      r.cross_check = "the unworn face is not Hertzian (no crown, or the Hertz width reaches the face width): start "
+                      "from the influence tier";
+    r.frames.push_back({first.t, hertzian ? *hertz : continuum::ring_face_stress(wear[k], p_start, mu_start, liner, ring)});
+    r.frames.push_back({samples.back().t, continuum::ring_face_stress(wear[k], pass.final_pressure, mu_end, liner, ring)});
+    reports.push_back(std::move(r));
+  }
+  return reports;
+}
+
 int run(const Options &o, const PlotRunner &plot) {
   const PistonRingCase c = read_piston_ring_case(o.case_path, o.law_path);
   const auto &p = c.parameters;
@@ -401,7 +458,9 @@ int run(const Options &o, const PlotRunner &plot) {
   StagedOutput out(o.output_dir, {"piston_ring.csv", "piston_ring_summary.csv", "piston_ring_?.csv", "piston_ring_rings.csv",
                                   "piston_ring_liner.csv", "piston_ring_face.csv", "piston_ring_face_?.csv",
                                   "piston_ring_mu0.csv", "piston_ring.png", "piston_ring_mu0.png", "vtk/liner.pvd",
-                                  "vtk/liner_*.vts", "vtk/ring_face.pvd", "vtk/ring_face_*.vts", "vtk/ring_face_?.pvd"});
+                                  "vtk/liner_*.vts", "vtk/ring_face.pvd", "vtk/ring_face_*.vts", "vtk/ring_face_?.pvd",
+                                  "vtk/subsurface.pvd", "vtk/subsurface_*.vts", "vtk/subsurface_?.pvd"});
+  const std::vector<LineStressReport> stress = subsurface_stress(c, main, wear, passes);
   std::vector<std::string> written;
   if (pack) {
     out.write("piston_ring.csv", pack_csv_text(c, main, passes));
@@ -491,6 +550,11 @@ int run(const Options &o, const PlotRunner &plot) {
   std::vector<std::string> vtk_files;
 #ifdef RUNIN_HAVE_VTK
   vtk_files = write_frames(wear, passes, c.rings, c.circumferential_points, out.staging());
+  std::vector<std::string> stress_files;
+  for (std::size_t k = 0; k < stress.size(); ++k) {
+    const auto more = write_line_stress(stress[k], out.staging() / "vtk", k == 0 ? "subsurface" : "subsurface_" + c.rings[k].name);
+    stress_files.push_back(out.destination_of(more.back()).string());
+  }
 #endif
   out.commit();
 
@@ -561,6 +625,9 @@ int run(const Options &o, const PlotRunner &plot) {
     fmt::print("  ring {} pressure   peak {:.6g} MPa at start -> {:.6g} MPa at end, contact width {:.4g} -> {:.4g} mm\n",
                c.rings[k].name, 1e-6 * passes[k].initial_peak, 1e-6 * passes[k].rows.back().peak,
                1e3 * passes[k].rows.front().width, 1e3 * passes[k].rows.back().width);
+  std::vector<std::string> warnings;
+  for (const auto &report : stress) print_line_stress(report, warnings);
+  for (const auto &w : warnings) fmt::print("  {}\n", w);
   fmt::print("  wear updates      {} (step {:.4g} m = {} x stable_slip_step)\n", updates, wear.front().step(),
              c.wear_settings.fixed_step > 0.0 ? std::string("fixed, not") : fmt::format("{:g}", c.wear_settings.step_safety));
   fmt::print("  CVODE             {} steps\n", main.cvode_steps);
@@ -577,6 +644,9 @@ int run(const Options &o, const PlotRunner &plot) {
     fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
   if (!vtk_files.empty())
     fmt::print(", {} VTK files ({})", vtk_files.size(), out.destination_of(vtk_files.back()).string());
+#ifdef RUNIN_HAVE_VTK
+  for (const auto &f : stress_files) fmt::print(", {} (subsurface stress, 2 frames)", f);
+#endif
   fmt::print("\n");
   return 0;
 }

@@ -13,7 +13,7 @@ const Schema kSchema = {
     {"bearing", {"shaft_radius", "clearance", "length", "youngs_modulus", "poisson_ratio", "load", "halves",
                  "second_half_load"}},
     {"shaft", {"diameter", "length", "youngs_modulus", "poisson_ratio"}},
-    {"contact", {"arc_half_angle", "nodes"}},
+    {"contact", {"arc_half_angle", "nodes", "materials", "bearing_material", "shaft_material"}},
     {"drive", {"ramp_angle", "ramp_time", "run_speed", "inertia", "stiffness", "damping_ratio"}},
     {"wear", {"coefficient", "hardness", "form", "step_fraction", "fixed_step"}},
     {"friction", friction_keys()},
@@ -64,6 +64,16 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   if (nodes < 3 || nodes > 2048) reader.fail("contact.nodes", "must be in [3, 2048], got " + std::to_string(nodes));
   b.nodes = static_cast<int>(nodes);
 
+  // The contact model's E and nu stay the case's; the file gives the yield verdict's S_y (or H).
+  if (const auto named = read_named_materials(reader, path, "contact", "bearing_material", "shaft_material")) {
+    c.bearing_material_name = named->name_a;
+    c.shaft_material_name = named->name_b;
+    c.bearing_material.yield_strength = named->a.yield_strength;
+    c.bearing_material.hardness = named->a.hardness;
+    c.shaft_material.yield_strength = named->b.yield_strength;
+    c.shaft_material.hardness = named->b.hardness;
+  }
+
   p.ramp_angle = reader.number("drive.ramp_angle", 1.0);
   p.ramp_time = reader.positive("drive.ramp_time", 2.0);
   p.run_speed = reader.number("drive.run_speed", 0.0);
@@ -78,6 +88,10 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
     reader.fail("shaft.poisson_ratio", "must be in (-1, 0.5), got " + CaseReader::format(shaft_poisson));
   c.shaft_stiffness =
       continuum::shaft_torsional_stiffness(c.shaft_diameter, c.shaft_length, shaft_modulus, shaft_poisson);
+  c.bearing_material.youngs_modulus = b.youngs_modulus;
+  c.bearing_material.poisson_ratio = b.poisson_ratio;
+  c.shaft_material.youngs_modulus = shaft_modulus;
+  c.shaft_material.poisson_ratio = shaft_poisson;
   c.stiffness_overridden = reader.has("drive.stiffness");
   p.coupling_stiffness = c.stiffness_overridden ? reader.positive("drive.stiffness") : c.shaft_stiffness;
   const double damping_ratio = reader.non_negative("drive.damping_ratio", 0.0);

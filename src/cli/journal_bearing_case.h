@@ -24,6 +24,10 @@ struct JournalBearingCase {
   double shaft_stiffness = 0.0;         // N m/rad, G J / L of the shaft
   bool stiffness_overridden = false;    // drive.stiffness given: it replaces G J / L
   bool one_contact_comparison = true;   // output.one_contact_comparison: re-run with one contact for the summary
+  // Subsurface stress (doc/subsurface_stress.md): nu of each body from [bearing] / [shaft]; S_y (and H) from
+  // contact.materials with contact.bearing_material / contact.shaft_material (names empty: S_y unknown).
+  tribo::Material bearing_material, shaft_material;
+  std::string bearing_material_name, shaft_material_name;
 };
 
 // `law_path` is the --law option; required exactly when friction.model = "law_file".

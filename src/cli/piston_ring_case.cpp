@@ -22,7 +22,7 @@ const Schema &schema() {
                 "land_damping_ratio", "groove_diameter", "land_width"}},
       {"ring_pack", {"model", "groove_diameter", "groove_position", "elastic_pressure", "crown_height", "land_width",
                      "land_stiffness"}},
-      {"material", {"youngs_modulus", "poisson_ratio"}},
+      {"material", {"youngs_modulus", "poisson_ratio", "materials", "ring_material", "liner_material"}},
       {"gas", {"crank_angle_deg", "pressure", "cycle_deg", "factor"}},
       {"friction", friction_keys()},
       {"wear", {"k", "hardness", "form", "hardness_ring", "hardness_liner", "crown_height", "ring_cells",
@@ -85,6 +85,16 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   const double youngs = reader.positive("material.youngs_modulus", 66e9);
   const double poisson = reader.number("material.poisson_ratio", 0.27);
   if (poisson <= -1.0 || poisson >= 0.5) reader.fail("material.poisson_ratio", "must lie in (-1, 0.5)");
+  for (auto *m : {&c.ring_material, &c.liner_material}) m->youngs_modulus = youngs, m->poisson_ratio = poisson;
+  // The contact model's E and nu stay the case's; the file gives the yield verdict's S_y (or H).
+  if (const auto named = read_named_materials(reader, path, "material", "ring_material", "liner_material")) {
+    c.ring_material_name = named->name_a;
+    c.liner_material_name = named->name_b;
+    c.ring_material.yield_strength = named->a.yield_strength;
+    c.ring_material.hardness = named->a.hardness;
+    c.liner_material.yield_strength = named->b.yield_strength;
+    c.liner_material.hardness = named->b.hardness;
+  }
 
   // The rings: [ring_pack] (arrays, one element per ring, groove order A, B, ...) or the one ring of [ring].
   struct Spec {

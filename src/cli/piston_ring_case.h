@@ -37,6 +37,10 @@ struct PistonRingCase {
   std::vector<double> vtk_times;  // s
   int circumferential_points = 48;
   std::vector<double> sweep_mu0;  // [sweep] mu0, empty if absent
+  // Subsurface stress (doc/subsurface_stress.md): nu from [material]; S_y (and H) from material.materials with
+  // material.ring_material / material.liner_material (names empty: S_y unknown).
+  tribo::Material ring_material, liner_material;
+  std::string ring_material_name, liner_material_name;
 };
 
 // `law_path` is the --law option; required exactly when friction.model = "law_file".

@@ -274,6 +274,7 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
   StickSlipState start;
   start.y = {0.0, 0.0, 0.0};
   for (std::size_t h = 0; h < surfaces.size(); ++h) start.y.push_back(system.friction().initial_state());
+  for (const auto &surface : surfaces) report.initial_pressure.push_back(surface.contact.pressure);
   const StickSlipGrid grid{run.t_end, run.output_interval, p.ramp_time, run.max_events};
   JournalBearingHooks hooks(system, surfaces, report, wear_step, wearing, observer, frames, run);
   StickSlipLoop<JournalBearingHooks> loop(hooks, grid, integrator, std::move(start), report);
@@ -284,7 +285,22 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
     loop.break_away();
   }
   loop.run();
+  for (const auto &surface : surfaces) report.final_pressure.push_back(surface.contact.pressure);
   return report;
+}
+
+LineContactStress bore_contact_stress(const ConformalContact &contact, const std::vector<double> &pressure, double mu,
+                                      const tribo::Material &bearing, const tribo::Material &shaft, int points) {
+  std::vector<double> x(static_cast<std::size_t>(contact.nodes()));
+  for (int i = 0; i < contact.nodes(); ++i) x[i] = contact.geometry().shaft_radius * contact.node_angle(i);
+  return line_contact_stress(x, pressure, mu, bearing, shaft, points);
+}
+
+LineContactStress bore_hertz_stress(const BoreGeometry &bore, double load_per_length, double mu,
+                                    const tribo::Material &bearing, const tribo::Material &shaft, int points) {
+  const double r_eff = hertz_effective_radius(bore.shaft_radius, bore.shaft_radius + bore.clearance);
+  const double b = hertz_half_width(load_per_length, r_eff, bore.contact_modulus());
+  return hertz_line_contact_stress(hertz_peak_pressure(load_per_length, b), b, mu, bearing, shaft, 0.0, points);
 }
 
 WearHistory wear_in(const JournalBearingSystem &system, double ds, int steps) {

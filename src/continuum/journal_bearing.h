@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "continuum/conformal_contact.h"
+#include "continuum/contact_stress.h"
 #include "continuum/cvode_integrator.h"
 #include "continuum/stick_slip_loop.h"  // ContactState, SolveStatus
 #include "continuum/sliding_friction.h"
@@ -107,6 +108,9 @@ struct JournalBearingRun {
 struct JournalBearingReport : SolveReport {
   long wear_updates = 0;
   double stable_wear_step = 0.0;  // m, 2H/(k k_c)
+  // Per half (lower, upper): the contact pressure (Pa per arc node) of the unworn bore at the start and the
+  // last solved one (worn bore) at the end, for the subsurface stress.
+  std::vector<std::vector<double>> initial_pressure, final_pressure;
 };
 
 class JournalBearingSystem {
@@ -157,5 +161,17 @@ struct JournalBearingSummary {
 // steady_tolerance of their final values (speed band at least 1e-3 of the peak speed);
 // "not steady" if that is in the last 10 % of the run.
 JournalBearingSummary summarise(const std::vector<JournalBearingSample> &samples);
+
+// Subsurface stress below one bearing half's contact (doc/subsurface_stress.md), plane strain, x = R theta
+// along the bore (arc coordinate, centred on the load line), z the depth into each body. The bearing (body a)
+// carries the friction shear q = mu p in +x (the shaft surface moving in +theta, mu > 0), the shaft (body b)
+// -q; each body its own Poisson ratio and S_y.
+// Influence tier on a solved nodal pressure (any wear profile):
+LineContactStress bore_contact_stress(const ConformalContact &contact, const std::vector<double> &pressure, double mu,
+                                      const tribo::Material &bearing, const tribo::Material &shaft, int points = 48);
+// McEwen's closed form on the Hertz line contact of the unworn bore (R_eff = R (R + c) / c, E* of the bore)
+// under load_per_length.
+LineContactStress bore_hertz_stress(const BoreGeometry &bore, double load_per_length, double mu,
+                                    const tribo::Material &bearing, const tribo::Material &shaft, int points = 48);
 
 }  // namespace runin::continuum

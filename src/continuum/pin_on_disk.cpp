@@ -201,19 +201,6 @@ PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples) {
   return summary;
 }
 
-namespace {
-
-BodyStress body_stress(const tribo::Material &m, tribo::StressField field) {
-  BodyStress b;
-  b.poisson_ratio = m.poisson_ratio;
-  b.yield_strength = m.yield_strength;
-  b.peak = field.peak_von_mises();
-  b.field = std::move(field);
-  return b;
-}
-
-}  // namespace
-
 ContactStress hertz_contact_stress(double p0, double a, double mu, const tribo::Material &pin,
                                    const tribo::Material &disk, int points) {
   ContactStress c;

@@ -17,6 +17,7 @@
 #include "continuum/cvode_integrator.h"
 #include "continuum/sliding_friction.h"
 #include "continuum/stick_slip_loop.h"  // ContactState, SolveStatus, SolveReport
+#include "continuum/contact_stress.h"
 #include "tribo/subsurface_stress.h"
 
 namespace runin::continuum {
@@ -122,13 +123,7 @@ PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples);
 // each body on the section y = 0 through the contact (x along the sliding direction, 64 x 64 points to
 // 1.5 contact radii wide and deep), from the pressure p and the friction shear q = mu p. The disk carries
 // q in the sliding direction, the pin the opposite shear (mu -> -mu); each body uses its own Poisson ratio.
-struct BodyStress {
-  double poisson_ratio = 0.0;
-  double yield_strength = 0.0;  // Pa; 0: unknown (no verdict)
-  tribo::StressPeak peak;       // largest von Mises stress on the section and its place (z = depth)
-  tribo::StressField field;
-  bool yields() const { return yield_strength > 0.0 && peak.von_mises > yield_strength; }
-};
+// BodyStress: continuum/contact_stress.h (shared with the line contacts).
 struct ContactStress {
   std::string method;                  // "Hertz closed form (Hamilton 1983)" or "influence functions (...)"
   double friction_coefficient = 0.0;   // mu used for q = mu p

@@ -228,4 +228,22 @@ double RingLinerWear::shared_liner_volume() const {
   return kPi * s_.bore * dx_ * std::accumulate(liner_wear_->begin(), liner_wear_->end(), 0.0);
 }
 
+LineContactStress ring_face_stress(const RingLinerWear &wear, const std::vector<double> &pressure, double mu,
+                                   const tribo::Material &liner, const tribo::Material &ring, int points) {
+  std::vector<double> x(static_cast<std::size_t>(wear.settings().ring_cells));
+  for (int i = 0; i < wear.settings().ring_cells; ++i) x[i] = wear.ring_cell_centre(i);
+  return line_contact_stress(x, pressure, mu, liner, ring, points);
+}
+
+std::optional<LineContactStress> ring_face_hertz_stress(const RingLinerWearSettings &s, double load, double mu,
+                                                        const tribo::Material &liner, const tribo::Material &ring,
+                                                        int points) {
+  if (!(s.crown_height > 0.0) || !(s.contact_modulus > 0.0) || !(load > 0.0)) return std::nullopt;
+  const double radius = s.ring_width * s.ring_width / (8.0 * s.crown_height);
+  const double per_length = load / (M_PI * s.bore);
+  const double b = std::sqrt(4.0 * per_length * radius / (M_PI * s.contact_modulus));
+  if (!(b < 0.5 * s.ring_width)) return std::nullopt;
+  return hertz_line_contact_stress(2.0 * per_length / (M_PI * b), b, mu, liner, ring, 0.0, points);
+}
+
 }  // namespace runin::continuum

@@ -16,9 +16,11 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "continuum/contact_stress.h"
 #include "continuum/half_plane_contact.h"
 #include "tribo/wear.h"
 
@@ -117,5 +119,18 @@ class RingLinerWear {
   RingLinerWearStatus status_ = RingLinerWearStatus::Ok;
   std::string message_;
 };
+
+// Subsurface stress below a ring face contact (doc/subsurface_stress.md), plane strain (the contact is a line
+// around the bore, D >> w): x is the axial coordinate along the face (ring cell centres, -w/2..w/2), z the
+// depth into each body. The liner (body a) carries the friction shear q = mu p in +x (the ring sliding in +x
+// for mu > 0), the ring face (body b) -q. Influence tier on the ring-cell pressure (any worn face):
+LineContactStress ring_face_stress(const RingLinerWear &wear, const std::vector<double> &pressure, double mu,
+                                   const tribo::Material &liner, const tribo::Material &ring, int points = 48);
+// McEwen's closed form on the Hertz contact of the crowned, unworn face under `load` (N around the bore):
+// crown radius w^2 / (8 crown_height), load per length W / (pi D), E* = contact_modulus. Empty when the face
+// is not Hertzian: no crown, or the Hertz width 2b reaches the face width.
+std::optional<LineContactStress> ring_face_hertz_stress(const RingLinerWearSettings &settings, double load, double mu,
+                                                        const tribo::Material &liner, const tribo::Material &ring,
+                                                        int points = 48);
 
 }  // namespace runin::continuum
