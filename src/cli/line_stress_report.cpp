@@ -22,12 +22,6 @@ std::string body_label(const std::string &body, const std::string &material_name
   return material_name.empty() ? body : fmt::format("{} ({})", body, material_name);
 }
 
-double peak_difference(const continuum::LineContactStress &x, const continuum::LineContactStress &reference) {
-  const auto rel = [](double a, double b) { return b > 0.0 ? std::abs(a / b - 1.0) : 0.0; };
-  return std::max(rel(x.a.peak.von_mises, reference.a.peak.von_mises),
-                  rel(x.b.peak.von_mises, reference.b.peak.von_mises));
-}
-
 std::vector<std::string> write_line_stress(const LineStressReport &report, const std::filesystem::path &dir,
                                            const std::string &stem) {
 #ifdef RUNIN_HAVE_VTK

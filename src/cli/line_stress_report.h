@@ -30,8 +30,6 @@ struct LineStressReport {
 tribo::Material verdict_material(const tribo::Material &m);
 // "bearing (Steel1020)" or "bearing".
 std::string body_label(const std::string &body, const std::string &material_name);
-// Relative difference of the bodies' peak von Mises stresses of two evaluations, largest of a and b.
-double peak_difference(const continuum::LineContactStress &x, const continuum::LineContactStress &reference);
 
 // Section below the contact: points (x, 0, -depth) [m], arrays von_mises_<a>_Pa, tresca_<a>_Pa,
 // von_mises_<b>_Pa, tresca_<b>_Pa. Returns the written files (.pvd last).
