@@ -106,6 +106,21 @@ void scale_key(toml::table &root, const std::string &key, double factor) {
   }
 }
 
+// The variants live in DIR/cases/, so a file the case names relative to its own directory (a materials file)
+// is written as an absolute path, or the variant would look for it next to itself.
+void absolute_file_paths(toml::table &table, const fs::path &case_dir) {
+  for (auto &&[key, node] : table) {
+    if (auto *sub = node.as_table()) {
+      absolute_file_paths(*sub, case_dir);
+    } else if (auto *text = node.as_string()) {
+      const fs::path named(text->get());
+      std::error_code error;
+      if (!text->get().empty() && named.is_relative() && fs::is_regular_file(case_dir / named, error))
+        *text = fs::absolute(case_dir / named).lexically_normal().string();
+    }
+  }
+}
+
 std::string to_toml(const toml::table &root) {
   std::ostringstream text;
   text << toml::toml_formatter(root) << "\n";
@@ -174,6 +189,7 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
 
   toml::table base = parse_toml(o.case_path);
   base.erase("sweep");  // one run per case file: the element's own mu0 sweep is not part of this study
+  absolute_file_paths(base, fs::absolute(o.case_path).parent_path());
   std::vector<std::string> keys = o.keys;
   if (keys.empty())
     for (const char *key : element->free_parameters)
