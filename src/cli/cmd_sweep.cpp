@@ -284,7 +284,11 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
   fmt::print("  wrote            ");
   for (std::size_t i = 0; i < written.size(); ++i) fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
   fmt::print(", {}\n", out.destination("cases").string());
-  return failed ? 1 : 0;
+  // the table is written and kept; the exit status and the one error line say that not every run completed
+  if (failed)
+    throw std::runtime_error(fmt::format("sweep: {} of {} runs failed; their rows in {} name the errors", failed,
+                                         runs.size() - 1, out.destination("sweep.csv").string()));
+  return 0;
 }
 
 }  // namespace

@@ -35,8 +35,9 @@ def expect_failures(args):
     command = [args.runin, "sweep", args.element, args.case, "--output-dir", out, "--no-plot", "--span",
                repr(args.span), "--points", str(args.points)] + [x for key in args.key for x in ("--key", key)]
     result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 1:
-        fail(f"exit {result.returncode} with {args.expect_failed} failing run(s) expected (1):\n{result.stderr}")
+    if result.returncode != 1 or not result.stderr.startswith(f"runin: error: sweep: {args.expect_failed} of "):
+        fail(f"exit {result.returncode} with {args.expect_failed} failing run(s) expected (1, one error line):\n"
+             f"{result.stderr}")
     with open(os.path.join(out, "sweep.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     failed = [r for r in rows if r["status"].startswith("failed: runin: error: ")]

@@ -259,7 +259,7 @@ def cli_cases(rng, count, runin):
         text = open(os.path.join(INPUTS, name)).read()
         command = case_command(runin, name, text)
         op = rng.choice(["empty-dir", "missing-case", "dir-case", "drop-option", "unknown-option", "bad-sub",
-                         "fit-law", "dump-to-vtk"])
+                         "fit-law", "dump-to-vtk", "sweep"])
         files = {name: text}
         if needs_law(text):
             files["law.json"] = None  # filled with the real law by the caller
@@ -276,6 +276,16 @@ def cli_cases(rng, count, runin):
             command.insert(rng.randrange(2, len(command) + 1), rng.choice(["--bogus", "-x", "--output-dir", "--law"]))
         elif op == "bad-sub":
             command[1] = rng.choice(["pin_on_disk", "", "feedbak", "--help-me"])
+        elif op == "sweep":
+            # runin sweep over a real key, a wrong key, or a bad span / point count (subprocess runs per value)
+            element = command[1] if command[1] != "feedback" else rng.choice(["journal-bearing", "feedback"])
+            key = rng.choice(["friction.A", "friction.B", "drive.damping_ratio", "ring.land_damping_ratio", "pin.mass",
+                              "bearing.halves", "friction", "no.such.key", ""])
+            span = rng.choice(["10", "10", "1", "nan", "1e300", "-2", "abc"])
+            points = rng.choice(["3", "3", "4", "1", "11", "x"])
+            command = [runin, "sweep", element, command[2], "--output-dir", "{dir}/out", "--no-plot", "--key", key,
+                       "--span", span, "--points", points] + (command[command.index("--law"):] if "--law" in command else [])
+            op += f" ({element} --key {key!r} --span {span} --points {points})"
         elif op == "fit-law":
             column = rng.choice(["v_slide", "c_fric[3]", "nope", ""])
             source = rng.choice(["{dir}/ave.txt", "{dir}", "{dir}/missing.txt"])
