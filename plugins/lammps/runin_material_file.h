@@ -1,23 +1,20 @@
-// Reader of RunIn coefficient files (potentials/*.runin), shared by pair runin/asperity and
-// fix runin/wall. SI units, '#' comments:
+// LAMMPS side of the RunIn coefficient files (potentials/*.runin; the parser is tribo/material_file.h), shared
+// by pair runin/asperity and fix runin/wall. SI units, '#' comments:
 //   material NAME  E[Pa]  nu[-]  rho[kg/m^3]  H[Pa]  [S_y[Pa]]   (S_y: elastic-plastic contact; else H / 2.8)
 //   pair NAME_A NAME_B  e[-]  mu_s[-]  mu_k[-]  d_c[m]  k[-]
 #pragma once
 
 #include "tribo/contact.h"
 #include "tribo/contact_model.h"
+#include "tribo/material_file.h"
 
 #include <string>
 
 namespace LAMMPS_NS {
 class LAMMPS;
 
-// One material pair as a contact sees it: body a's and body b's materials and the pair entry.
-struct RuninMaterialPair {
-  runin::tribo::Material a, b;
-  double restitution = 1.0, mu_static = 0.0, mu_kinetic = 0.0, slip_weakening_distance = 0.0,
-         wear_coefficient = 0.0;
-};
+// One material pair as a contact sees it (parsed by runin::tribo::parse_material_file).
+using RuninMaterialPair = runin::tribo::MaterialPairEntry;
 
 // Reads the pair (material_a, material_b) on rank 0 and broadcasts it. Any problem (missing file,
 // unknown material or pair, malformed line, impossible value) is one ERROR prefixed by 'style'.

@@ -1,5 +1,5 @@
-// Reader of RunIn coefficient files (potentials/*.runin) for the LIGGGHTS host: the format of
-// plugins/lammps/runin_material_file.h (LAMMPS's reader uses LAMMPS's tokenizer, which LIGGGHTS lacks):
+// RunIn coefficient files (potentials/*.runin) for the LIGGGHTS host, parsed by tribo/material_file.h as in
+// the LAMMPS styles:
 //   material NAME  E[Pa]  nu[-]  rho[kg/m^3]  H[Pa]  [S_y[Pa]]
 //   pair NAME_A NAME_B  e[-]  mu_s[-]  mu_k[-]  d_c[m]  k[-]
 // Read on rank 0 and broadcast; any problem is one ERROR prefixed by `style`.
@@ -7,6 +7,7 @@
 
 #include "tribo/contact.h"
 #include "tribo/contact_model.h"
+#include "tribo/material_file.h"
 
 #include <string>
 
@@ -16,11 +17,7 @@ class LAMMPS;
 
 namespace runin_liggghts {
 
-struct MaterialPair {
-  runin::tribo::Material a, b;
-  double restitution = 1.0, mu_static = 0.0, mu_kinetic = 0.0, slip_weakening_distance = 0.0,
-         wear_coefficient = 0.0;
-};
+using MaterialPair = runin::tribo::MaterialPairEntry;
 
 MaterialPair read_material_pair(LAMMPS_NS::LAMMPS *lmp, const std::string &file, const std::string &material_a,
                                 const std::string &material_b, const std::string &style);

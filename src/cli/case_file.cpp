@@ -1,4 +1,6 @@
 #include "cli/case_file.h"
+
+#include "tribo/material_file.h"
 #include "cli/case_reader.h"
 
 #include <cmath>
@@ -155,38 +157,11 @@ std::optional<NamedMaterials> read_named_materials(const CaseReader &reader, con
 tribo::Material read_runin_material(const std::string &path, const std::string &name) {
   std::ifstream in(path);
   if (!in) throw std::invalid_argument("cannot open " + path);
-  std::string line;
-  int lineno = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    std::istringstream words(line);
-    std::string kind, which;
-    if (!(words >> kind) || kind != "material" || !(words >> which) || which != name) continue;
-    std::vector<double> v;
-    std::string word;
-    while (words >> word) {
-      try {
-        std::size_t used = 0;
-        v.push_back(std::stod(word, &used));
-        if (used != word.size() || !std::isfinite(v.back())) throw std::invalid_argument(word);
-      } catch (const std::exception &) {
-        throw std::invalid_argument(path + " line " + std::to_string(lineno) + ": material " + name +
-                                    ": not a finite number: '" + word + "'");
-      }
-    }
-    if (v.size() != 4 && v.size() != 5)
-      throw std::invalid_argument(path + " line " + std::to_string(lineno) + ": material needs NAME E nu rho H [S_y]");
-    tribo::Material m;
-    m.youngs_modulus = v[0];
-    m.poisson_ratio = v[1];
-    m.hardness = v[3];
-    m.yield_strength = v.size() == 5 ? v[4] : 0.0;
-    m.validate(path + " line " + std::to_string(lineno) + ": material " + name);
-    return m;
+  try {
+    return tribo::parse_material_file(in, path).material(name);
+  } catch (const std::exception &e) {  // MaterialFileError, InvalidCoefficient: both name the file
+    throw std::invalid_argument(e.what());
   }
-  throw std::invalid_argument(path + ": no material '" + name + "'");
 }
 
 PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path) {
