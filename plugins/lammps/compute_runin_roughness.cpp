@@ -1,4 +1,5 @@
 #include "compute_runin_roughness.h"
+#include "runin_roughness_core.h"
 #include "runin_errors.h"
 
 #include "fix_runin_wear_state.h"
@@ -62,7 +63,7 @@ ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) 
   }
 
   vector_flag = 1;
-  size_vector = NFIXED + static_cast<int>(depths.size());
+  size_vector = runin_roughness::NFIXED + static_cast<int>(depths.size());
   extvector = 0;
   vector = new double[size_vector];
   for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
@@ -114,36 +115,10 @@ void ComputeRuninRoughness::compute_vector()
 {
   invoked_vector = update->ntimestep;
   const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-
-  // reduction 1: count, sum, highest and lowest summit
-  runin::tribo::HeightRange range;
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) range.add(summit(i));
-  double sums[2] = {range.count, range.sum}, extremes[2] = {range.max, -range.min};
-  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
-  MPI_Allreduce(MPI_IN_PLACE, extremes, 2, MPI_DOUBLE, MPI_MAX, world);
-  range.count = sums[0];
-  range.sum = sums[1];
-  range.max = extremes[0];
-  range.min = -extremes[1];
-
-  // reduction 2: power sums about the mean plane and bearing counts below the highest summit
   runin_lammps::kernel_call(lmp, FLERR, "compute runin/roughness", true, [&] {
-    runin::tribo::HeightMoments moments(range.mean(), range.max, depths);
-    for (int i = 0; i < nlocal; i++)
-      if (mask[i] & groupbit) moments.add(summit(i));
-    MPI_Allreduce(MPI_IN_PLACE, moments.sums().data(), static_cast<int>(moments.size()), MPI_DOUBLE, MPI_SUM,
-                  world);
-    const auto stats = runin::tribo::roughness(range, moments);
-    vector[RA] = stats.Ra;
-    vector[RQ] = stats.Rq;
-    vector[RSK] = stats.Rsk;
-    vector[RKU] = stats.Rku;
-    vector[RP] = stats.Rp;
-    vector[RV] = stats.Rv;
-    vector[RZ] = stats.Rz;
-    for (std::size_t k = 0; k < depths.size(); k++) vector[NFIXED + k] = stats.bearing[k];
+    runin_roughness::compute_vector(
+        world, atom->nlocal, [&](int i) { return (mask[i] & groupbit) != 0; }, [&](int i) { return summit(i); },
+        depths, vector);
   });
 }
 

@@ -18,7 +18,6 @@ namespace LAMMPS_NS {
 
 class ComputeRuninRoughness : public Compute {
  public:
-  enum Entry { RA = 0, RQ, RSK, RKU, RP, RV, RZ, NFIXED };
   enum PerAtomColumn { HEIGHT = 0, WEAR_DEPTH, NPERATOM };
 
   ComputeRuninRoughness(class LAMMPS *, int, char **);

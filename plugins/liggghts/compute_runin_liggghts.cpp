@@ -1,4 +1,5 @@
 #include "compute_runin_liggghts.h"
+#include "../lammps/runin_roughness_core.h"
 
 #include "../lammps/runin_contact_sums.h"
 #include "fix_runin_wear_state_liggghts.h"
@@ -204,7 +205,7 @@ ComputeRuninRoughnessLiggghts::ComputeRuninRoughnessLiggghts(LAMMPS *lmp, int &i
     }
   }
   vector_flag = 1;
-  size_vector = NFIXED + static_cast<int>(depths.size());
+  size_vector = runin_roughness::NFIXED + static_cast<int>(depths.size());
   extvector = 0;
   vector = new double[size_vector];
   for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
@@ -232,30 +233,9 @@ void ComputeRuninRoughnessLiggghts::compute_vector()
 {
   invoked_vector = update->ntimestep;
   const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  runin::tribo::HeightRange range;
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) range.add(summit(i));
-  double sums[2] = {range.count, range.sum}, extremes[2] = {range.max, -range.min};
-  MPI_Allreduce(MPI_IN_PLACE, sums, 2, MPI_DOUBLE, MPI_SUM, world);
-  MPI_Allreduce(MPI_IN_PLACE, extremes, 2, MPI_DOUBLE, MPI_MAX, world);
-  range.count = sums[0];
-  range.sum = sums[1];
-  range.max = extremes[0];
-  range.min = -extremes[1];
   runin_liggghts::kernel_call(lmp, FLERR, "compute runin/roughness", true, [&] {
-    runin::tribo::HeightMoments moments(range.mean(), range.max, depths);
-    for (int i = 0; i < nlocal; i++)
-      if (mask[i] & groupbit) moments.add(summit(i));
-    MPI_Allreduce(MPI_IN_PLACE, moments.sums().data(), static_cast<int>(moments.size()), MPI_DOUBLE, MPI_SUM, world);
-    const auto stats = runin::tribo::roughness(range, moments);
-    vector[RA] = stats.Ra;
-    vector[RQ] = stats.Rq;
-    vector[RSK] = stats.Rsk;
-    vector[RKU] = stats.Rku;
-    vector[RP] = stats.Rp;
-    vector[RV] = stats.Rv;
-    vector[RZ] = stats.Rz;
-    for (std::size_t k = 0; k < depths.size(); k++) vector[NFIXED + k] = stats.bearing[k];
+    runin_roughness::compute_vector(
+        world, atom->nlocal, [&](int i) { return (mask[i] & groupbit) != 0; }, [&](int i) { return summit(i); },
+        depths, vector);
   });
 }

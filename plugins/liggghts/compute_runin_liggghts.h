@@ -37,7 +37,6 @@ class ComputeRuninFrictionLiggghts : public Compute {
 
 class ComputeRuninRoughnessLiggghts : public Compute {
  public:
-  enum Entry { RA = 0, RQ, RSK, RKU, RP, RV, RZ, NFIXED };
   ComputeRuninRoughnessLiggghts(class LAMMPS *, int &, int, char **);
   ~ComputeRuninRoughnessLiggghts();
   void init() override;
