@@ -258,19 +258,19 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
     csv += r.summary ? run_summary_row(*r.summary) : std::string(",,,,,");
     csv += fmt::format(",{},{}\n", r.case_name, r.summary ? std::string("ok") : csv_quote("failed: " + r.problem));
   };
-  for (const auto &key : keys) {
+  // the runs were queued key by key, smallest value first, after the base case: the table takes them in that
+  // order, with the base case's row in the middle of each key's rows
+  std::size_t next = 1;
+  for (const auto &key : keys)
     for (int i = 0; i < o.points; ++i) {
       if (i == o.points / 2) {
         add_row(key, 1.0, *number_at(base, key), runs.front());
-        continue;
+      } else {
+        const Run &r = runs[next++];
+        add_row(key, r.factor, r.value, r);
+        failed += !r.summary;
       }
-      for (const auto &r : runs)
-        if (r.key == key && r.factor == factors[i]) {
-          add_row(key, r.factor, r.value, r);
-          failed += !r.summary;
-        }
     }
-  }
   out.write("sweep.csv", csv);
   std::vector<std::string> written = {"sweep.csv"};
   if (!o.no_plot) {
