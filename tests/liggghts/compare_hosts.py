@@ -22,6 +22,9 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lammps"))
+from run_deck import mpi_env  # noqa: E402  (the LAMMPS tier's MPI environment: run as root, oversubscribe)
+
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TOLERANCE = 1e-10
 
@@ -40,15 +43,6 @@ SCENES = {
                    {"nload": 300, "nslide": 1500, "nhold": 200, "nresume": 500, "thermo_every": 100},
                    (("thermo_modify   format float %.10g", "thermo_modify   format float %.17g"),)),
 }
-
-
-def mpi_env():
-    env = dict(os.environ)
-    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
-    env.setdefault("OMP_NUM_THREADS", "1")
-    return env
 
 
 def fail(message):
