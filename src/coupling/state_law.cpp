@@ -1,0 +1,243 @@
+#include "coupling/state_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "coupling/ave_time_reader.h"
+#include "coupling/json_input.h"
+
+namespace runin::coupling {
+
+namespace {
+
+constexpr const char *kFormat = "runin-state-law";
+constexpr int kVersion = 1;
+
+std::string format_number(double x) {
+  std::ostringstream out;
+  out.precision(6);
+  out << x;
+  return out.str();
+}
+
+bool may_be_negative(StateField field) { return field == StateField::Rsk; }
+
+void check_grid(const std::vector<double> &grid, const char *name, bool starts_at_zero) {
+  if (grid.size() < 2) throw std::invalid_argument(std::string(name) + ": at least 2 values are needed");
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    if (!std::isfinite(grid[i])) throw std::invalid_argument(std::string(name) + ": non-finite value");
+    if (i > 0 && !(grid[i] > grid[i - 1]))
+      throw std::invalid_argument(std::string(name) + ": values must increase strictly");
+  }
+  if (starts_at_zero && grid.front() != 0.0) throw std::invalid_argument(std::string(name) + ": must start at 0");
+  if (!starts_at_zero && !(grid.front() > 0.0))
+    throw std::invalid_argument(std::string(name) + ": values must be positive");
+}
+
+void check_table(const std::vector<std::vector<double>> &grid, const std::string &name, std::size_t np,
+                 std::size_t nh, bool allow_negative) {
+  if (grid.size() != np)
+    throw std::invalid_argument(name + ": " + std::to_string(grid.size()) + " rows, expected one per pressure (" +
+                                std::to_string(np) + ")");
+  for (const auto &row : grid) {
+    if (row.size() != nh)
+      throw std::invalid_argument(name + ": a row has " + std::to_string(row.size()) +
+                                  " values, expected one per worn depth (" + std::to_string(nh) + ")");
+    for (double x : row) {
+      if (!std::isfinite(x)) throw std::invalid_argument(name + ": non-finite value");
+      if (!allow_negative && x < 0.0) throw std::invalid_argument(name + ": negative value " + format_number(x));
+    }
+  }
+}
+
+std::vector<double> read_vector(const nlohmann::json &node, const std::string &key) {
+  if (!node.is_array()) throw std::invalid_argument(key + ": expected an array of numbers");
+  std::vector<double> out;
+  for (const auto &x : node) {
+    if (!x.is_number()) throw std::invalid_argument(key + ": expected an array of numbers");
+    out.push_back(x.get<double>());
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> read_matrix(const nlohmann::json &node, const std::string &key) {
+  if (!node.is_array()) throw std::invalid_argument(key + ": expected an array of rows");
+  std::vector<std::vector<double>> out;
+  for (const auto &row : node) out.push_back(read_vector(row, key));
+  return out;
+}
+
+}  // namespace
+
+const char *to_string(StateField field) {
+  switch (field) {
+    case StateField::MuBody: return "mu_body";
+    case StateField::Rq: return "rq";
+    case StateField::Rsk: return "rsk";
+    case StateField::AreaFraction: return "area_fraction";
+    case StateField::WearRate: return "wear_rate";
+    case StateField::CounterfaceWearRate: return "counterface_wear_rate";
+    case StateField::SlidingDistance: return "sliding_distance";
+  }
+  return "?";
+}
+
+StateLaw::StateLaw(std::vector<double> pressure, std::vector<double> worn_depth,
+                   std::array<StateFieldTable, state_field_count> fields, nlohmann::json metadata)
+    : pressure_(std::move(pressure)), depth_(std::move(worn_depth)), fields_(std::move(fields)),
+      metadata_(std::move(metadata)) {
+  check_grid(pressure_, "pressure", false);
+  check_grid(depth_, "worn_depth", true);
+  const std::size_t np = pressure_.size(), nh = depth_.size();
+  for (std::size_t f = 0; f < state_field_count; ++f) {
+    const auto field = static_cast<StateField>(f);
+    const std::string name = to_string(field);
+    const auto &t = fields_[f];
+    const bool negative_ok = may_be_negative(field);
+    check_table(t.mean, name + ".mean", np, nh, negative_ok);
+    if (t.low.empty() != t.high.empty()) throw std::invalid_argument(name + ": low and high come together");
+    if (!t.low.empty()) {
+      check_table(t.low, name + ".low", np, nh, negative_ok);
+      check_table(t.high, name + ".high", np, nh, negative_ok);
+      for (std::size_t i = 0; i < np; ++i)
+        for (std::size_t j = 0; j < nh; ++j)
+          if (!(t.low[i][j] <= t.mean[i][j] && t.mean[i][j] <= t.high[i][j]))
+            throw std::invalid_argument(name + ": low <= mean <= high fails at pressure " +
+                                        format_number(pressure_[i]) + " Pa, worn depth " + format_number(depth_[j]) +
+                                        " m");
+    }
+  }
+  log_pressure_.resize(np);
+  std::transform(pressure_.begin(), pressure_.end(), log_pressure_.begin(), [](double p) { return std::log(p); });
+  if (!metadata_.is_object()) throw std::invalid_argument("metadata must be a JSON object");
+}
+
+bool StateLaw::has_band() const { return !fields_[0].low.empty(); }
+
+StateLaw StateLaw::from_json(const nlohmann::json &document, const std::string &path) {
+  try {
+    if (!document.is_object()) throw std::invalid_argument("expected a JSON object");
+    if (document.value("format", std::string()) != kFormat)
+      throw std::invalid_argument(std::string("format: expected \"") + kFormat + "\"");
+    if (!document.contains("version") || !document["version"].is_number_integer() ||
+        document["version"].get<int>() != kVersion)
+      throw std::invalid_argument("version: expected " + std::to_string(kVersion));
+    for (const char *key : {"pressure", "worn_depth", "fields"})
+      if (!document.contains(key)) throw std::invalid_argument(std::string("missing key \"") + key + "\"");
+    auto pressure = read_vector(document["pressure"], "pressure");
+    auto depth = read_vector(document["worn_depth"], "worn_depth");
+    const auto &fields = document["fields"];
+    if (!fields.is_object()) throw std::invalid_argument("fields: expected an object");
+    std::array<StateFieldTable, state_field_count> tables;
+    for (std::size_t f = 0; f < state_field_count; ++f) {
+      const std::string name = to_string(static_cast<StateField>(f));
+      if (!fields.contains(name)) throw std::invalid_argument("fields: missing \"" + name + "\"");
+      const auto &node = fields[name];
+      if (!node.is_object() || !node.contains("mean"))
+        throw std::invalid_argument("fields." + name + ": expected an object with \"mean\"");
+      tables[f].mean = read_matrix(node["mean"], "fields." + name + ".mean");
+      if (node.contains("low")) tables[f].low = read_matrix(node["low"], "fields." + name + ".low");
+      if (node.contains("high")) tables[f].high = read_matrix(node["high"], "fields." + name + ".high");
+    }
+    nlohmann::json metadata = nlohmann::json::object();
+    for (auto it = document.begin(); it != document.end(); ++it)
+      if (it.key() != "format" && it.key() != "version" && it.key() != "pressure" && it.key() != "worn_depth" &&
+          it.key() != "fields")
+        metadata[it.key()] = it.value();
+    return StateLaw(std::move(pressure), std::move(depth), std::move(tables), std::move(metadata));
+  } catch (const std::invalid_argument &e) {
+    throw InputFormatError(path + ": state law: " + e.what());
+  } catch (const nlohmann::json::exception &e) {
+    throw InputFormatError(path + ": state law: " + e.what());
+  }
+}
+
+StateLaw StateLaw::read_file(const std::string &path) {
+  std::ifstream in = open_input(path, "state law");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return from_json(parse_json_input(text.str(), path), path);
+}
+
+nlohmann::json StateLaw::to_json() const {
+  nlohmann::json out = metadata_;
+  out["format"] = kFormat;
+  out["version"] = kVersion;
+  out["pressure"] = pressure_;
+  out["worn_depth"] = depth_;
+  nlohmann::json fields = nlohmann::json::object();
+  for (std::size_t f = 0; f < state_field_count; ++f) {
+    nlohmann::json node = {{"mean", fields_[f].mean}};
+    if (!fields_[f].low.empty()) {
+      node["low"] = fields_[f].low;
+      node["high"] = fields_[f].high;
+    }
+    fields[to_string(static_cast<StateField>(f))] = std::move(node);
+  }
+  out["fields"] = std::move(fields);
+  return out;
+}
+
+StateLaw::Cell StateLaw::locate(double pressure, double worn_depth, OutOfRange policy, RangeUse *use) const {
+  if (!std::isfinite(pressure) || !(pressure > 0.0))
+    throw std::out_of_range("state law: pressure " + format_number(pressure) + " Pa is not positive and finite");
+  if (!std::isfinite(worn_depth))
+    throw std::out_of_range("state law: worn depth " + format_number(worn_depth) + " m is not finite");
+  if (use) ++use->lookups;
+  Cell cell;
+  double lp = std::log(pressure);
+  if (pressure < pressure_.front() || pressure > pressure_.back()) {
+    if (policy == OutOfRange::Error)
+      throw std::out_of_range("state law: pressure " + format_number(pressure) + " Pa outside the law's range [" +
+                              format_number(pressure_.front()) + ", " + format_number(pressure_.back()) + "] Pa");
+    if (use) ++(pressure < pressure_.front() ? use->below_pressure : use->above_pressure);
+    lp = std::clamp(lp, log_pressure_.front(), log_pressure_.back());
+  }
+  const auto np = log_pressure_.size();
+  cell.ip = static_cast<std::size_t>(std::upper_bound(log_pressure_.begin(), log_pressure_.end(), lp) -
+                                     log_pressure_.begin());
+  cell.ip = std::min(std::max<std::size_t>(cell.ip, 1), np - 1) - 1;
+  cell.wp = (lp - log_pressure_[cell.ip]) / (log_pressure_[cell.ip + 1] - log_pressure_[cell.ip]);
+  cell.wp = std::clamp(cell.wp, 0.0, 1.0);
+
+  double h = std::max(worn_depth, 0.0);
+  if (h > depth_.back()) {
+    if (use) ++use->beyond_depth;
+    h = depth_.back();
+  }
+  const auto nh = depth_.size();
+  cell.ih = static_cast<std::size_t>(std::upper_bound(depth_.begin(), depth_.end(), h) - depth_.begin());
+  cell.ih = std::min(std::max<std::size_t>(cell.ih, 1), nh - 1) - 1;
+  cell.wh = std::clamp((h - depth_[cell.ih]) / (depth_[cell.ih + 1] - depth_[cell.ih]), 0.0, 1.0);
+  return cell;
+}
+
+double StateLaw::interpolate(const std::vector<std::vector<double>> &grid, const Cell &c) const {
+  const double lower = (1.0 - c.wh) * grid[c.ip][c.ih] + c.wh * grid[c.ip][c.ih + 1];
+  const double upper = (1.0 - c.wh) * grid[c.ip + 1][c.ih] + c.wh * grid[c.ip + 1][c.ih + 1];
+  return (1.0 - c.wp) * lower + c.wp * upper;
+}
+
+double StateLaw::value(StateField field, double pressure, double worn_depth, Band band, OutOfRange policy,
+                       RangeUse *use) const {
+  const auto &t = table(field);
+  const auto &grid = band == Band::Mean || t.low.empty() ? t.mean : band == Band::Low ? t.low : t.high;
+  return interpolate(grid, locate(pressure, worn_depth, policy, use));
+}
+
+StateLawValues StateLaw::values(double pressure, double worn_depth, OutOfRange policy, RangeUse *use) const {
+  const Cell c = locate(pressure, worn_depth, policy, use);
+  StateLawValues v;
+  v.mu_body = interpolate(table(StateField::MuBody).mean, c);
+  v.rq = interpolate(table(StateField::Rq).mean, c);
+  v.rsk = interpolate(table(StateField::Rsk).mean, c);
+  v.area_fraction = interpolate(table(StateField::AreaFraction).mean, c);
+  v.wear_rate = interpolate(table(StateField::WearRate).mean, c);
+  v.counterface_wear_rate = interpolate(table(StateField::CounterfaceWearRate).mean, c);
+  return v;
+}
+
+}  // namespace runin::coupling

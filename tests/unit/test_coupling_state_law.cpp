@@ -1,0 +1,129 @@
+// State law tables (issue 11): bilinear interpolation in (ln p, h), the range policies, JSON round trip and the
+// checks on a malformed file.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "coupling/ave_time_reader.h"
+#include "coupling/state_law.h"
+
+using namespace runin::coupling;
+
+namespace {
+
+// mu = 0.1 + 0.2 ln(p / 1 MPa) / ln 10 - 1e5 h: bilinear in (ln p, h), so interpolation must be exact.
+double mu_exact(double p, double h) { return 0.3 + 0.2 * std::log(p / 1e6) / std::log(10.0) - 1e5 * h; }
+
+StateLaw make_law(bool band = true) {
+  const std::vector<double> p = {1e6, 1e7, 1e8}, h = {0.0, 1e-7, 2e-7};
+  std::array<StateFieldTable, state_field_count> fields;
+  for (std::size_t f = 0; f < state_field_count; ++f) {
+    auto &t = fields[f];
+    t.mean.assign(p.size(), std::vector<double>(h.size()));
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = 0; j < h.size(); ++j) t.mean[i][j] = mu_exact(p[i], h[j]) + f;
+    if (band) {
+      t.low = t.mean;
+      t.high = t.mean;
+      for (auto &row : t.low)
+        for (double &x : row) x -= 0.01;
+      for (auto &row : t.high)
+        for (double &x : row) x += 0.02;
+    }
+  }
+  return StateLaw(p, h, fields, {{"material", "Steel1020/Steel1020"}});
+}
+
+}  // namespace
+
+TEST(StateLaw, BilinearInLogPressureAndDepthIsExact) {
+  const auto law = make_law();
+  for (double p : {1e6, 2.5e6, 3.3e7, 1e8})
+    for (double h : {0.0, 3e-8, 1.5e-7, 2e-7})
+      EXPECT_NEAR(law.value(StateField::MuBody, p, h), mu_exact(p, h), 1e-12) << p << " " << h;
+  const auto v = law.values(4e6, 5e-8);
+  EXPECT_NEAR(v.mu_body, mu_exact(4e6, 5e-8), 1e-12);
+  EXPECT_NEAR(v.wear_rate, mu_exact(4e6, 5e-8) + 4, 1e-12);
+  EXPECT_NEAR(law.value(StateField::MuBody, 4e6, 5e-8, Band::Low), mu_exact(4e6, 5e-8) - 0.01, 1e-12);
+  EXPECT_NEAR(law.value(StateField::MuBody, 4e6, 5e-8, Band::High), mu_exact(4e6, 5e-8) + 0.02, 1e-12);
+}
+
+TEST(StateLaw, DepthBeyondTheGridHoldsTheLastRowAndIsCounted) {
+  const auto law = make_law();
+  RangeUse use;
+  EXPECT_NEAR(law.value(StateField::MuBody, 1e7, 5e-7, Band::Mean, OutOfRange::Error, &use), mu_exact(1e7, 2e-7),
+              1e-12);
+  EXPECT_EQ(use.beyond_depth, 1);
+  EXPECT_EQ(use.lookups, 1);
+}
+
+TEST(StateLaw, PressureOutsideIsAnErrorOrACountedClamp) {
+  const auto law = make_law();
+  EXPECT_THROW(law.value(StateField::MuBody, 5e5, 0.0), std::out_of_range);
+  EXPECT_THROW(law.value(StateField::MuBody, 2e8, 0.0), std::out_of_range);
+  EXPECT_THROW(law.value(StateField::MuBody, std::nan(""), 0.0), std::out_of_range);
+  EXPECT_THROW(law.value(StateField::MuBody, 1e7, std::nan("")), std::out_of_range);
+  RangeUse use;
+  EXPECT_NEAR(law.value(StateField::MuBody, 5e5, 0.0, Band::Mean, OutOfRange::Clamp, &use), mu_exact(1e6, 0.0),
+              1e-12);
+  EXPECT_NEAR(law.value(StateField::MuBody, 2e8, 0.0, Band::Mean, OutOfRange::Clamp, &use), mu_exact(1e8, 0.0),
+              1e-12);
+  EXPECT_EQ(use.below_pressure, 1);
+  EXPECT_EQ(use.above_pressure, 1);
+}
+
+TEST(StateLaw, JsonRoundTripKeepsTablesAndMetadata) {
+  const auto law = make_law();
+  const auto back = StateLaw::from_json(law.to_json(), "law.json");
+  EXPECT_EQ(back.pressure(), law.pressure());
+  EXPECT_EQ(back.worn_depth(), law.worn_depth());
+  EXPECT_TRUE(back.has_band());
+  EXPECT_EQ(back.metadata().at("material"), "Steel1020/Steel1020");
+  EXPECT_DOUBLE_EQ(back.value(StateField::Rsk, 2e6, 1e-7), law.value(StateField::Rsk, 2e6, 1e-7));
+  EXPECT_FALSE(StateLaw::from_json(make_law(false).to_json(), "x").has_band());
+}
+
+TEST(StateLaw, MalformedFilesGiveOneLineNamingTheKey) {
+  const auto good = make_law().to_json();
+  auto expect_error = [](nlohmann::json doc, const std::string &needle) {
+    try {
+      StateLaw::from_json(doc, "law.json");
+      ADD_FAILURE() << "no error for " << needle;
+    } catch (const InputFormatError &e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("law.json: state law: "), std::string::npos) << what;
+      EXPECT_NE(what.find(needle), std::string::npos) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  };
+  auto doc = good;
+  doc["format"] = "something";
+  expect_error(doc, "format");
+  doc = good;
+  doc["version"] = 2;
+  expect_error(doc, "version");
+  doc = good;
+  doc.erase("fields");
+  expect_error(doc, "fields");
+  doc = good;
+  doc["pressure"] = {1e7, 1e6, 1e8};
+  expect_error(doc, "pressure");
+  doc = good;
+  doc["worn_depth"] = {1e-9, 1e-7, 2e-7};
+  expect_error(doc, "worn_depth");
+  doc = good;
+  doc["fields"]["mu_body"]["mean"][1] = {0.1, 0.2};
+  expect_error(doc, "mu_body.mean");
+  doc = good;
+  doc["fields"]["wear_rate"]["mean"][0][0] = -1.0;
+  expect_error(doc, "wear_rate.mean");
+  doc = good;
+  doc["fields"]["rq"]["low"][0][0] = 1e3;
+  expect_error(doc, "rq: low <= mean <= high");
+  doc = good;
+  doc["fields"].erase("rsk");
+  expect_error(doc, "rsk");
+  doc = good;
+  doc["fields"]["area_fraction"]["mean"][0][0] = "x";
+  expect_error(doc, "area_fraction.mean");
+}
