@@ -440,7 +440,12 @@ int run_homogenise(const Options &o) {
     std::vector<const Sample *> missing;
     for (const Sample *s : todo)
       if (!s->complete()) missing.push_back(s);
-    if (!missing.empty()) {
+    if (missing.size() == 1 && todo.size() == 1) {
+      // it ran alone already: its log names the ERROR
+      std::string error = first_line_starting(missing.front()->log(), "ERROR");
+      if (error.empty()) error = fmt::format("no output and no ERROR line in its log (mpirun exit status {})", status);
+      failures.push_back({missing.front(), error});
+    } else if (!missing.empty()) {
       fmt::print("runin homogenise: mpirun exited with status {}, {} samples incomplete; running each alone to find "
                  "the failing ones\n",
                  status, missing.size());
