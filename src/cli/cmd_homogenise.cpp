@@ -403,7 +403,7 @@ int run_homogenise(const Options &o) {
   const fs::path deck = fs::absolute(o.deck.empty() ? fs::path(RUNIN_SOURCE_DIR) / "inputs" / "in.rve_wall"
                                                     : fs::path(o.deck));
   std::error_code error;
-  if (!fs::is_regular_file(deck, error)) throw InputError("--deck: no such file: " + deck.string());
+  if (!fs::is_regular_file(deck, error)) throw InputError("--deck: not a file: " + deck.string());
   std::string lmp = o.lmp;
   if (lmp.empty()) {
     const fs::path beside = fs::read_symlink("/proc/self/exe", error).parent_path() / "lmp_runin";
@@ -470,8 +470,8 @@ int run_homogenise(const Options &o) {
   std::map<const Sample *, std::string> failed;
   for (const auto &f : failures) failed[f.sample] = f.error;
   for (const auto &f : failures)
-    fmt::print(stderr, "runin homogenise: sample FAILED: {} (accel {:g}, key {}): {}; log {}\n", f.sample->label(),
-               f.sample->acceleration, f.sample->key, f.error, f.sample->log().string());
+    fmt::print("runin homogenise: sample FAILED: {} (accel {:g}, key {}): {}; log {}\n", f.sample->label(),
+               f.sample->acceleration, f.sample->key, f.error, f.sample->log().string());  // stderr: the one error line
 
   // The law: every pressure needs at least one good seed; mean over the good seeds, band = their min and max.
   std::vector<std::size_t> empty_pressures;

@@ -140,7 +140,10 @@ def mode_fail(args):
     err = first.stderr.strip().splitlines()
     if not err or not err[-1].startswith("runin: error: homogenise: 1 of 4 samples failed") or "seed 12630" not in err[-1]:
         fail(f"last stderr line does not name the failed sample: {err[-1:]}")
-    if not any("sample FAILED: p = 4e+06 Pa, seed 12630" in line and "runin_forced_failure" in line for line in err):
+    if len(err) != 1:
+        fail(f"stderr is not one line: {err}")
+    if not any("sample FAILED: p = 4e+06 Pa, seed 12630" in line and "runin_forced_failure" in line
+               for line in first.stdout.splitlines()):
         fail("no report of the failed sample with its ERROR line")
     read = read_law(args, law)  # written: every pressure has a good seed
     with open(law) as f:
