@@ -320,6 +320,10 @@ Curves sample_curves(const Sample &s, const std::vector<double> &grid) {
   const std::vector<double> h_all = running_max(table.column("v_h")), hcf_all = running_max(table.column("v_h_cf"));
   const std::array<const std::vector<double> *, 4> direct = {&table.column("v_mu_body"), &table.column("v_rq"),
                                                              &table.column("v_rsk"), &table.column("v_area_fraction")};
+  for (const char *name : {"v_s", "v_h", "v_h_cf", "v_mu_body", "v_rq", "v_rsk", "v_area_fraction"})
+    for (std::size_t i = 0; i < table.rows(); ++i)
+      if (!std::isfinite(table.column(name)[i]))
+        throw std::runtime_error(fmt::format("{}: {} is not finite in row {}", s.output().string(), name, i + 1));
   // rows once sliding has begun (the loading phase has s = 0 and no friction yet)
   std::vector<std::size_t> rows;
   for (std::size_t i = 0; i < table.rows(); ++i)
