@@ -3,6 +3,7 @@
 seeds of 36 summits. Standard library only.
 
   check_homogenise.py --runin BIN --lmp LMP --reader READ_LAW --deck DECK --workdir DIR --mode MODE
+  (--deck default: no --deck option, i.e. the shipped inputs/in.rve_wall; mode fail needs a deck file)
 
 MODE build:  a cold run (4 samples under one mpirun, 2 partitions) writes a law the continuum reader
              (runin_read_state_law = coupling::StateLaw::read_file) accepts, with the grid, seeds, band and
@@ -51,8 +52,9 @@ def fail(message):
 
 
 def homogenise(args, case, law, cache, deck, expect):
-    command = [args.runin, "homogenise", case, "--output", law, "--cache-dir", cache, "--np", "2", "--lmp", args.lmp,
-               "--deck", deck]
+    command = [args.runin, "homogenise", case, "--output", law, "--cache-dir", cache, "--np", "2", "--lmp", args.lmp]
+    if deck != "default":  # default: runin's own, inputs/in.rve_wall
+        command += ["--deck", deck]
     start = time.monotonic()
     result = subprocess.run(command, capture_output=True, text=True)
     seconds = time.monotonic() - start
@@ -80,7 +82,7 @@ def setup(args, name):
 
 
 def mode_build(args):
-    work, case = setup(args, "build")
+    work, case = setup(args, "build" if args.deck != "default" else "build_rve_wall")
     law, cache = os.path.join(work, "law.json"), os.path.join(work, "cache")
     first, cold = homogenise(args, case, law, cache, args.deck, 0)
     if "4 samples to run" not in first.stdout or "mpirun -np 2" not in first.stdout:
