@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/case_file.h"
+#include "cli/homogenise_curves.h"
 #include "cli/homogenise_plan.h"
 #include "cli/runin_version.h"
 #include "cli/staged_file.h"
@@ -287,95 +288,7 @@ std::vector<Failure> run_isolated(const std::vector<const Sample *> &todo, int n
   return failures;
 }
 
-// ---------------------------------------------------------------------------------------------------------------
-// One sample's curves on the law's h grid
-
 constexpr std::size_t kFields = coupling::state_field_count;
-
-struct Curves {
-  std::array<std::vector<double>, kFields> field;  // [field][depth index]
-};
-
-// Least-squares slope of y over x on rows [a, b] (inclusive); 0 if x does not vary.
-double slope(const std::vector<double> &x, const std::vector<double> &y, std::size_t a, std::size_t b) {
-  const double n = static_cast<double>(b - a + 1);
-  double sx = 0, sy = 0;
-  for (std::size_t i = a; i <= b; ++i) sx += x[i], sy += y[i];
-  const double mx = sx / n, my = sy / n;
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = a; i <= b; ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
-  return sxx > 0 ? sxy / sxx : 0.0;
-}
-
-std::vector<double> running_max(std::vector<double> v) {
-  for (std::size_t i = 1; i < v.size(); ++i) v[i] = std::max(v[i], v[i - 1]);
-  return v;
-}
-
-// Throws std::runtime_error naming the defect (the caller adds the sample).
-Curves sample_curves(const Sample &s, const std::vector<double> &grid) {
-  const coupling::AveTimeTable table = coupling::read_ave_time(s.output().string());
-  const auto &s_cell = table.column("v_s");
-  // wear only grows: the running maximum removes round-off dips, so h is non-decreasing
-  const std::vector<double> h_all = running_max(table.column("v_h")), hcf_all = running_max(table.column("v_h_cf"));
-  const std::array<const std::vector<double> *, 4> direct = {&table.column("v_mu_body"), &table.column("v_rq"),
-                                                             &table.column("v_rsk"), &table.column("v_area_fraction")};
-  for (const char *name : {"v_s", "v_h", "v_h_cf", "v_mu_body", "v_rq", "v_rsk", "v_area_fraction"})
-    for (std::size_t i = 0; i < table.rows(); ++i)
-      if (!std::isfinite(table.column(name)[i]))
-        throw std::runtime_error(fmt::format("{}: {} is not finite in row {}", s.output().string(), name, i + 1));
-  // rows once sliding has begun (the loading phase has s = 0 and no friction yet)
-  std::vector<std::size_t> rows;
-  for (std::size_t i = 0; i < table.rows(); ++i)
-    if (s_cell[i] > 0.0) rows.push_back(i);
-  if (rows.size() < 2) throw std::runtime_error("fewer than 2 output rows with sliding (s > 0)");
-  std::vector<double> S, H, HCF;
-  std::array<std::vector<double>, 4> D;
-  for (std::size_t i : rows) {
-    S.push_back(s_cell[i]);
-    H.push_back(h_all[i]);
-    HCF.push_back(hcf_all[i]);
-    for (std::size_t f = 0; f < 4; ++f) D[f].push_back((*direct[f])[i]);
-  }
-  const double depth = grid.back();
-  if (!(H.back() >= depth))
-    throw std::runtime_error(fmt::format("reached h = {:.6g} m of depth {:.6g} m within nslide (raise grid.nslide or "
-                                         "grid.acceleration)",
-                                         H.back(), depth));
-  const double dh = grid[1] - grid[0];
-  Curves c;
-  for (auto &f : c.field) f.resize(grid.size());
-  for (std::size_t j = 0; j < grid.size(); ++j) {
-    const double hj = grid[j];
-    // the first row at or above hj, and the last one below it: the bracket spans any flat stretch of h
-    const std::size_t i = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj) - H.begin());
-    double w = 1.0;
-    std::size_t lo = i, hi = i;
-    if (i > 0 && H[i] > hj) {
-      lo = i - 1;
-      w = (hj - H[lo]) / (H[hi] - H[lo]);
-    }
-    auto at = [&](const std::vector<double> &v) { return v[lo] + w * (v[hi] - v[lo]); };
-    using F = coupling::StateField;
-    c.field[static_cast<std::size_t>(F::MuBody)][j] = at(D[0]);
-    c.field[static_cast<std::size_t>(F::Rq)][j] = at(D[1]);
-    c.field[static_cast<std::size_t>(F::Rsk)][j] = at(D[2]);
-    c.field[static_cast<std::size_t>(F::AreaFraction)][j] = at(D[3]);
-    c.field[static_cast<std::size_t>(F::SlidingDistance)][j] = at(S) * s.acceleration;
-    // wear rates: least-squares slope over the rows with h within one grid step of hj (at least 3 rows)
-    std::size_t a = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj - dh) - H.begin());
-    std::size_t b = static_cast<std::size_t>(std::upper_bound(H.begin(), H.end(), hj + dh) - H.begin());
-    b = b == 0 ? 0 : b - 1;
-    if (b < a) b = a;
-    while (b - a + 1 < 3 && (a > 0 || b + 1 < H.size())) {
-      if (a > 0) --a;
-      if (b - a + 1 < 3 && b + 1 < H.size()) ++b;
-    }
-    c.field[static_cast<std::size_t>(F::WearRate)][j] = std::max(0.0, slope(S, H, a, b)) / s.acceleration;
-    c.field[static_cast<std::size_t>(F::CounterfaceWearRate)][j] = std::max(0.0, slope(S, HCF, a, b)) / s.acceleration;
-  }
-  return c;
-}
 
 // ---------------------------------------------------------------------------------------------------------------
 
@@ -459,14 +372,13 @@ int run_homogenise(const Options &o) {
   }
 
   // Each complete sample on the h grid; a sample that cannot be read or did not reach the depth fails too.
-  std::vector<double> grid;
-  for (long j = 0; j < c.depth_points; ++j)
-    grid.push_back(j == c.depth_points - 1 ? c.depth : c.depth * static_cast<double>(j) / (c.depth_points - 1));
-  std::map<const Sample *, Curves> curves;
+  const std::vector<double> grid = depth_grid(c.depth, c.depth_points);
+  std::map<const Sample *, DepthCurves> curves;
   for (const auto &s : samples) {
     if (!s.complete()) continue;
     try {
-      curves.emplace(&s, sample_curves(s, grid));
+      curves.emplace(&s, resample_on_depth_grid(cell_series(coupling::read_ave_time(s.output().string())), grid,
+                                                s.acceleration));
     } catch (const std::exception &e) {
       failures.push_back({&s, e.what()});
     }
@@ -481,7 +393,7 @@ int run_homogenise(const Options &o) {
   std::vector<std::size_t> empty_pressures;
   std::array<coupling::StateFieldTable, kFields> tables;
   for (std::size_t ip = 0; ip < c.pressures.size(); ++ip) {
-    std::vector<const Curves *> good;
+    std::vector<const DepthCurves *> good;
     for (const auto &s : samples)
       if (s.ip == ip && curves.count(&s)) good.push_back(&curves.at(&s));
     if (good.empty()) {
@@ -492,7 +404,7 @@ int run_homogenise(const Options &o) {
       std::vector<double> mean(grid.size()), low(grid.size()), high(grid.size());
       for (std::size_t j = 0; j < grid.size(); ++j) {
         double sum = 0, lo = good.front()->field[f][j], hi = lo;
-        for (const Curves *g : good) {
+        for (const DepthCurves *g : good) {
           const double v = g->field[f][j];
           sum += v, lo = std::min(lo, v), hi = std::max(hi, v);
         }
