@@ -98,7 +98,7 @@ pid_t spawn(const std::vector<std::string> &args, const fs::path &cwd, const fs:
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  // posix_spawn has no portable chdir action in glibc 2.36 (posix_spawn_file_actions_addchdir_np is there)
+  // POSIX has no chdir action before POSIX.1-2024; glibc has had the _np one since 2.29
   posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
   pid_t pid = 0;
   const int rc = posix_spawnp(&pid, args.front().c_str(), &actions, nullptr, argv.data(), envp.data());
@@ -333,7 +333,10 @@ int run_homogenise(const Options &o) {
   }
   lmp = fs::absolute(lmp).string();
   const fs::path cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
-  fs::create_directories(cache_dir);
+  fs::create_directories(cache_dir, error);
+  if (error || !fs::is_directory(cache_dir))
+    throw std::runtime_error("cannot create the cache directory " + cache_dir.string() +
+                             (error ? ": " + error.message() : std::string()));
 
   const CodeIdentity code{runin_version(), lmp, sha256_hex(file_bytes(lmp))};
   const std::string deck_text = file_bytes(deck);
