@@ -143,7 +143,14 @@ std::string CvodeIntegrator::failure_message(int flag, double t, double target) 
   }
 }
 
-CvodeIntegrator::StepResult CvodeIntegrator::advance(double target) {
+CvodeIntegrator::StepResult CvodeIntegrator::advance_to_stop(double t_stop) { return advance(t_stop, t_stop); }
+
+CvodeIntegrator::StepResult CvodeIntegrator::advance_to_output(double t_out, double t_stop) {
+  if (!(t_out <= t_stop)) throw std::invalid_argument("CvodeIntegrator::advance_to_output: t_out past t_stop");
+  return advance(t_out, t_stop);
+}
+
+CvodeIntegrator::StepResult CvodeIntegrator::advance(double target, double t_stop) {
   Impl &s = *impl_;
   StepResult result;
   result.roots_found.assign(static_cast<std::size_t>(s.root_count), 0);
@@ -154,7 +161,10 @@ CvodeIntegrator::StepResult CvodeIntegrator::advance(double target) {
     result.t = s.t;
     return result;
   }
-  check(CVodeSetStopTime(s.memory, target), "CVodeSetStopTime");  // never step across a kink/output
+  // Never step across t_stop; set on every call (a stop time, once reached, may be cleared, and a
+  // restart keeps the previous one). CV_NORMAL: when a step passes target, CVODE returns y(target)
+  // from its interpolant and keeps its own state at the end of that step.
+  check(CVodeSetStopTime(s.memory, t_stop), "CVodeSetStopTime");
   sunrealtype t_reached = s.t;
   const int flag = CVode(s.memory, target, s.y, &t_reached, CV_NORMAL);
   const double *y = N_VGetArrayPointer(s.y);

@@ -19,7 +19,7 @@ class CvodeIntegrator {
     Method method = Method::Bdf;
     double rtol = 1e-8;
     double atol = 1e-12;  // scalar, same for every component
-    long max_steps = 100000;  // per advance() call
+    long max_steps = 100000;  // per advance_to_stop()/advance_to_output() call
   };
 
   enum class Outcome { ReachedTarget, FoundRoot, Failed };
@@ -41,13 +41,25 @@ class CvodeIntegrator {
   // increasing (+1), decreasing (-1) or any (0) crossings.
   void restart(double t0, const std::vector<double> &y0, Rhs rhs, Roots roots,
                const std::vector<int> &directions);
-  // Integrates towards `target` without stepping past it; stops early at a root.
-  StepResult advance(double target);
+  // Two ways to advance; both stop early at a root (FoundRoot, the state at the root), and CVODE
+  // never steps past `t_stop` (a kink or jump of the right-hand side, e.g. a drive's ramp end, or
+  // the end of the run: the right-hand side is not evaluated beyond it).
+  //
+  // To a stop: integrates to `t_stop` and lands on it (CVODE's stop time); the state is CVODE's
+  // solution there, and the next step starts from it, so the next phase may restart at a kink.
+  StepResult advance_to_stop(double t_stop);
+  // To an output time `t_out` <= `t_stop` (dense output): CVODE steps as its error control allows,
+  // past `t_out` when it can (never past `t_stop`), and the state is its interpolating polynomial at
+  // `t_out` (CVodeGetDky), within the local error of the steps. Outputs then cost no steps of their
+  // own: the step count follows the solution, not the output grid. With t_out == t_stop it is
+  // advance_to_stop(t_stop).
+  StepResult advance_to_output(double t_out, double t_stop);
 
   const std::vector<double> &state() const { return state_; }
   long total_steps() const;
 
  private:
+  StepResult advance(double target, double t_stop);
   std::string failure_message(int flag, double t, double target) const;
 
   struct Impl;

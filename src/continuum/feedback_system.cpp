@@ -53,7 +53,7 @@ FeedbackReport simulate(const FeedbackSystem &system, const FeedbackRun &run, co
   long next_grid = 1;
   while (t < run.t_end - round_off) {
     const double target = std::min(static_cast<double>(next_grid) * run.output_interval, run.t_end);
-    const auto step = integrator.advance(target);
+    const auto step = integrator.advance_to_output(target, run.t_end);  // dense output, one stop at t_end
     y = integrator.state();
     t = step.t;
     if (step.outcome != CvodeIntegrator::Outcome::ReachedTarget) {

@@ -5,7 +5,9 @@
 // One CVODE problem per contact phase: stick ends when the break-away function crosses zero
 // upwards, slip ends when the sliding velocity y[speed_index] (signed by the direction) crosses
 // zero downwards. The integrator is restarted after each event and at the drive's kink, and
-// the output grid gets a sample before and after each event.
+// the output grid gets a sample before and after each event and one at the kink. CVODE stops
+// (lands exactly) only at the kink and at t_end; it steps across output times and returns them
+// from its interpolant (CvodeIntegrator::advance_to_output), so outputs cost no steps.
 #pragma once
 
 #include <algorithm>
@@ -104,10 +106,12 @@ class StickSlipLoop {
     int events = 0;
     while (s_.t < grid_.t_end - round_off) {
       const double grid_time = std::min(static_cast<double>(next_grid) * grid_.output_interval, grid_.t_end);
-      const bool kink_first = grid_.kink > 0.0 && s_.t < grid_.kink - round_off && grid_.kink < grid_time - round_off;
-      const double target = kink_first ? grid_.kink : grid_time;
-
-      const auto step = integrator_.advance(target);
+      // CVODE stops only at the drive's kink and at the end; output times are sampled from its
+      // interpolant (dense output), so the steps follow the solution, not the output grid.
+      const bool kink_ahead = grid_.kink > 0.0 && s_.t < grid_.kink - round_off && grid_.kink < grid_.t_end - round_off;
+      const double stop = kink_ahead ? grid_.kink : grid_.t_end;
+      const bool at_stop = grid_time >= stop - round_off;  // the next output is the stop (or lies past it)
+      const auto step = at_stop ? integrator_.advance_to_stop(stop) : integrator_.advance_to_output(grid_time, stop);
       s_.y = integrator_.state();
       s_.t = step.t;
       if (step.outcome == CvodeIntegrator::Outcome::Failed) {
@@ -138,11 +142,8 @@ class StickSlipLoop {
         continue;
       }
       emit();
-      if (kink_first) {
-        start_phase();  // restart at the kink instead of stepping across it
-      } else {
-        ++next_grid;
-      }
+      if (at_stop && kink_ahead) start_phase();  // restart at the kink instead of stepping across it
+      if (!at_stop || grid_time <= stop + round_off) ++next_grid;  // the kink on an output time: one sample
     }
     report_.end_time = s_.t;
     report_.steps = integrator_.total_steps();
