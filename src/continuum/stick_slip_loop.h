@@ -56,6 +56,9 @@ struct StickSlipHooksBase {
   std::vector<int> extra_root_directions(ContactState) const { return {}; }
   // Called when any extra root is found; false (with `message`) stops the run as a failure.
   bool on_extra_roots(StickSlipState &, const std::vector<int> &, std::string &) { return true; }
+  // Called after each output-grid sample has been emitted: true when the system changed there (operator
+  // splitting: the friction of the next interval was updated), so the integrator restarts from that sample.
+  bool refresh(StickSlipState &) { return false; }
 };
 
 // rhs and emit for a system class with rhs(t, y, dydt, state, direction) and
@@ -138,11 +141,9 @@ class StickSlipLoop {
         continue;
       }
       emit();
-      if (kink_first) {
-        start_phase();  // restart at the kink instead of stepping across it
-      } else {
-        ++next_grid;
-      }
+      const bool changed = hooks_.refresh(s_);
+      if (kink_first || changed) start_phase();  // restart at the kink instead of stepping across it
+      if (!kink_first) ++next_grid;
     }
     report_.end_time = s_.t;
     report_.steps = integrator_.total_steps();
