@@ -114,9 +114,11 @@ NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressur
 double NodeStateLaw::stable_contact_step(const std::vector<double> &pressure, double stiffness, double safety) {
   if (pressure.size() != h_.size()) throw std::invalid_argument("node state law: pressure size mismatch");
   double factor = 0.0;  // max w/p, 1/Pa
+  const double p_min = law_->pressure().front(), p_max = law_->pressure().back();
   for (std::size_t i = 0; i < h_.size(); ++i)
-    if (pressure[i] > 0.0)
-      factor = std::max(factor, law_->values(pressure[i], h_[i], policy_).wear_rate / pressure[i]);
+    if (pressure[i] > 0.0)  // a clamped node's rate does not follow p: its secant is taken at the grid edge
+      factor = std::max(factor, law_->values(pressure[i], h_[i], policy_).wear_rate /
+                                    std::clamp(pressure[i], p_min, p_max));
   if (!(factor > 0.0) || !(stiffness > 0.0)) return std::numeric_limits<double>::infinity();
   return safety * 2.0 / (stiffness * factor);
 }

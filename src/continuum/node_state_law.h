@@ -57,7 +57,8 @@ class NodeStateLaw {
   double substep_bound() const { return substep_; }
   // Bound on the outer (contact re-solve) step for a contact whose pressure falls by `stiffness` Pa per metre
   // of uniform wear: the linearised update h += (w/p)(p0 - K h) ds is stable for ds < 2 / (K max_i w_i/p_i);
-  // returns safety times that (infinity without wear or load).
+  // returns safety times that (infinity without wear or load). A node outside the pressure grid (clamped) has a
+  // rate that does not follow its pressure: its w/p is taken at the nearest grid pressure.
   double stable_contact_step(const std::vector<double> &pressure, double stiffness, double safety);
 
  private:

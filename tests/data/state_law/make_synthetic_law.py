@@ -5,14 +5,17 @@ mu_body(p, h)   = 0.15 + (0.35 + 0.05 log10(p / 1e7)) exp(-h / hc)      run-in f
 wear_rate(p, h) = (k/H) p (0.2 + 0.8 exp(-h / hc))                      Archard-like, decaying with h
 counterface     = 0.3 wear_rate
 sliding_distance(p, h) = int_0^h dh' / wear_rate(p, h')                 closed form
-Rq, Rsk, area_fraction: smooth placeholders. Run: python3 make_synthetic_law.py > synthetic_law.json
+Rq, Rsk, area_fraction: smooth placeholders. Run: python3 make_synthetic_law.py > synthetic_law.json; python3 make_synthetic_law.py 1e-11 > fast_law.json
 """
 import json
 import math
+import sys
 
-K_OVER_H = 1e-13  # 1/Pa
+# 1e-13 (default): synthetic_law.json; 1e-11: fast_law.json (the short runs of the line contacts)
+K_OVER_H = float(sys.argv[1]) if len(sys.argv) > 1 else 1e-13  # 1/Pa
 HC = 4e-7         # m
-pressure = [1e6 * 10 ** (0.5 * i) for i in range(7)]  # 1e6 .. 1e9 Pa
+# 1e6 .. 1e9 Pa; the fast law from 1e4 Pa (the line contacts' edges)
+pressure = [1e6 * 10 ** (0.5 * i) for i in range(7)] if K_OVER_H == 1e-13 else [1e4 * 10 ** (0.5 * i) for i in range(11)]
 depth = [2e-6 * j / 40 for j in range(41)]
 
 
@@ -49,6 +52,6 @@ law = {
         "sliding_distance": table(distance),
     },
     "material": "synthetic",
-    "provenance": {"generator": "tests/data/state_law/make_synthetic_law.py"},
+    "provenance": {"generator": "tests/data/state_law/make_synthetic_law.py", "k_over_h": K_OVER_H},
 }
 print(json.dumps(law, indent=1))
