@@ -53,7 +53,7 @@ double NodeStateLaw::mu_effective(const std::vector<double> &pressure, const std
   return load > 0.0 ? weighted / load : 0.0;
 }
 
-std::vector<double> NodeStateLaw::node_mu(const std::vector<double> &pressure) {
+std::vector<double> NodeStateLaw::node_mu(const std::vector<double> &pressure) const {
   if (pressure.size() != h_.size()) throw std::invalid_argument("node state law: pressure size mismatch");
   std::vector<double> mu(h_.size(), 0.0);
   for (std::size_t i = 0; i < h_.size(); ++i)

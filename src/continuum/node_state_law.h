@@ -40,7 +40,7 @@ class NodeStateLaw {
   // Pressure-weighted friction coefficient; 0 if no node carries load. Sizes must equal size().
   double mu_effective(const std::vector<double> &pressure, const std::vector<double> &area);
   // Per-node mu(p_i, h_i); 0 where p_i <= 0.
-  std::vector<double> node_mu(const std::vector<double> &pressure);
+  std::vector<double> node_mu(const std::vector<double> &pressure) const;
   // Static coefficient for the stick/break-away limit: the pressure-weighted peak over h of mu(p_i, h) (the
   // law's peak at each node's pressure). Not counted in use().
   double peak_mu(const std::vector<double> &pressure, const std::vector<double> &area) const;
