@@ -3,6 +3,8 @@
 
 --flat P: flat punch at the uniform nominal pressure P: mu_eff(s) and h(s) reproduce the law integrated directly
           along s (dh/ds = wear_rate(P, h), RK4 on the law's own bilinear (ln p, h) interpolation) within 1 %.
+--cell-curve (with --flat P on a grid pressure of the law): mu_eff at the cell's own sliding distances (the law's
+          sliding_distance column at P) equals the cell's mu_body there within 1 %: the cell's mu(s) reproduced.
 Always:   the friction force of each slip row is the mu_eff held over the interval before it (operator splitting,
           F = sum_i mu_i p_i A_i = mu_eff W); h and the worn volumes never decrease; the disk's worn volume is
           the law's counterface/body ratio (--counterface-ratio) of the pin's.
@@ -51,6 +53,7 @@ def main():
     ap.add_argument("--flat", type=float)
     ap.add_argument("--counterface-ratio", type=float)
     ap.add_argument("--vtk", type=int)
+    ap.add_argument("--cell-curve", action="store_true")
     ap.add_argument("--min-distance", type=float, default=0.0)
     a = ap.parse_args()
     rows = list(csv.DictReader(open(os.path.join(a.out_dir, "pin_on_disk.csv"))))
@@ -105,6 +108,24 @@ def main():
             fail("no run-in: mu_eff %g -> %g" % (mu0, mu1))
         if worst_mu > 0.01 or worst_h > 0.01:
             fail("flat punch departs from the law by more than 1 %")
+        if a.cell_curve:
+            i = min(range(len(law.p)), key=lambda k: abs(math.log(law.p[k] / p)))
+            if abs(law.p[i] / p - 1) > 1e-6:
+                fail("--cell-curve needs P on the law's pressure grid")
+            mu_col = [float(r["mu_eff"]) for r in rows]
+            worst, compared = 0.0, 0
+            for s_cell, mu_cell in zip(law.f["sliding_distance"][i], law.f["mu_body"][i]):
+                if s_cell <= 0 or s_cell > s[-1]:
+                    continue
+                k = bisect.bisect_left(s, s_cell)
+                f = (s_cell - s[k - 1]) / (s[k] - s[k - 1])
+                mu = mu_col[k - 1] + f * (mu_col[k] - mu_col[k - 1])
+                worst = max(worst, abs(mu - mu_cell) / mu_cell)
+                compared += 1
+            print("cell curve at p = %g Pa: %d points of the law's (sliding_distance, mu_body), worst relative error %.3g"
+                  % (law.p[i], compared, worst))
+            if compared < 5 or worst > 0.01:
+                fail("the cell's mu(s) is not reproduced within 1 %")
     if a.vtk is not None:
         frames = sorted(glob.glob(os.path.join(a.out_dir, "pin_face_*.vts")))
         if len(frames) != a.vtk:
