@@ -83,7 +83,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
   static const std::map<std::string, int> kKeywordValues = {
       {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
       {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
-      {"strength", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}};
+      {"strength", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}, {"wear_scale", 1}};
   const std::string style = "fix runin/wall";
   // a RunIn kernel call whose exception becomes one ERROR "fix runin/wall: <what>"
   auto kernel = [&](auto &&body) -> decltype(body()) {
@@ -109,6 +109,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
   bool yield_given = false;
   std::string friction_model_name;    // keyword friction_model; else 'strength' with keyword strength
   double yield_strength = 0.0, yield_poisson = 0.3;
+  double wear_scale = 1.0;    // keyword wear_scale: wear acceleration, a factor on Archard k of both bodies
   bool have_zplane = false, have_file = false, have_elastic = false, have_friction = false, have_wear = false;
   int iarg = 3;
   while (iarg < narg) {
@@ -117,7 +118,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
     if (known == kKeywordValues.end())
       fail(hooks, fmt::format("fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, "
                               "wear, archard, reshape, vel, vz, load, pressure, servo, strength, restick, transfer, "
-                              "normal, yield or friction_model)", keyword));
+                              "normal, yield, friction_model or wear_scale)", keyword));
     const int nvalues = known->second;
     if (iarg + nvalues >= narg)
       fail(hooks, fmt::format("fix runin/wall: keyword '{}' needs {} value(s), got {}", keyword, nvalues,
@@ -199,6 +200,10 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
       yield_given = true;
       yield_strength = number(0, "S_y");
       yield_poisson = number(1, "nu");
+    } else if (keyword == "wear_scale") {
+      wear_scale = number(0, "factor");
+      if (!(wear_scale > 0.0) || !std::isfinite(wear_scale))
+        fail(hooks, fmt::format("fix runin/wall: wear_scale factor must be > 0 and finite, got {}", wear_scale));
     } else if (keyword == "restick") {
       c.contact_settings.restick_speed = number(0, "v");
       if (!(c.contact_settings.restick_speed >= 0.0) || !std::isfinite(c.contact_settings.restick_speed))
@@ -225,6 +230,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
   if (c.control != Control::displacement && c.vz_given)
     fail(hooks, "fix runin/wall: 'vz' and 'load'/'pressure' exclude each other");
 
+  parameters.wear_coefficient *= wear_scale;
   if (!friction_model_name.empty())
     c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
         tribo::find_sub_model(tribo::SubModelKind::friction, friction_model_name);

@@ -6,6 +6,7 @@
 //   runin journal-bearing CASE.toml [--law law.json] --output-dir DIR [--no-plot]
 //   runin piston-ring CASE.toml [--law law.json] --output-dir DIR [--no-plot]
 //   runin sweep ELEMENT CASE.toml --output-dir DIR [--key KEY]... [--span 10] [--points 3] [--no-plot]
+//   runin homogenise CASE.toml [--output law.json] [--cache-dir DIR] [--np N] [--lmp PATH] [--deck PATH]
 // Exit codes: 0 success, 1 numerical/plot/I/O failure, 2 bad input.
 #include <cmath>
 #include <cstdlib>
@@ -24,6 +25,7 @@
 #include "cli/case_file.h"
 #include "cli/cmd_pin_on_disk.h"
 #include "cli/cmd_journal_bearing.h"
+#include "cli/cmd_homogenise.h"
 #include "cli/cmd_piston_ring.h"
 #include "cli/cmd_sweep.h"
 #include "cli/staged_file.h"
@@ -299,6 +301,7 @@ int main(int argc, char **argv) {
   const Subcommand journal_bearing = add_journal_bearing_command(app, run_python_plot);
   const Subcommand piston_ring = add_piston_ring_command(app, run_python_plot);
   const Subcommand sweep = add_sweep_command(app, run_python_plot);
+  const Subcommand homogenise = add_homogenise_command(app);
 
   try {
     app.parse(argc, argv);
@@ -312,6 +315,7 @@ int main(int argc, char **argv) {
     if (journal_bearing.app->parsed()) return journal_bearing.run();
     if (piston_ring.app->parsed()) return piston_ring.run();
     if (sweep.app->parsed()) return sweep.run();
+    if (homogenise.app->parsed()) return homogenise.run();
     if (pod_cmd->parsed()) return run_pin_on_disk(pod, run_python_plot);
     return 2;
   } catch (const InputError &e) {

@@ -180,7 +180,8 @@ def deck_cases(rng, count, lmp):
 
 
 def shipped_cases():
-    return sorted(n for n in os.listdir(INPUTS) if n.endswith((".toml", ".json")))
+    """The machine-element case files (the homogenise case runs the LAMMPS cell: its own op in cli_cases)."""
+    return sorted(n for n in os.listdir(INPUTS) if n.endswith((".toml", ".json")) and not n.startswith("homogenise_"))
 
 
 def needs_law(text):
@@ -259,7 +260,7 @@ def cli_cases(rng, count, runin):
         text = open(os.path.join(INPUTS, name)).read()
         command = case_command(runin, name, text)
         op = rng.choice(["empty-dir", "missing-case", "dir-case", "drop-option", "unknown-option", "bad-sub",
-                         "fit-law", "dump-to-vtk", "sweep"])
+                         "fit-law", "dump-to-vtk", "sweep", "homogenise"])
         files = {name: text}
         if needs_law(text):
             files["law.json"] = None  # filled with the real law by the caller
@@ -286,6 +287,27 @@ def cli_cases(rng, count, runin):
             command = [runin, "sweep", element, command[2], "--output-dir", "{dir}/out", "--no-plot", "--key", key,
                        "--span", span, "--points", points] + (command[command.index("--law"):] if "--law" in command else [])
             op += f" ({element} --key {key!r} --span {span} --points {points})"
+        elif op == "homogenise":
+            # runin homogenise on its shipped case, mutated or not, with a bad option; the deck is always missing
+            # or a directory, so no case reaches LAMMPS (the case is validated first: its errors come before the deck's)
+            name = "homogenise_steel.toml"
+            text = open(os.path.join(INPUTS, name)).read()
+            mutate = rng.choice(["none", "number", "type", "delete"])
+            if mutate == "number":
+                text, mutation = replace_number(rng, text, values=EXTREME)
+            elif mutate == "type":
+                text, mutation = replace_number(rng, text, values=(), wrong_types=('"abc"', "[1, 2]", "{ a = 1 }", "true"))
+            elif mutate == "delete":
+                text, mutation = delete_token(rng, text)
+            else:
+                mutation = "case as shipped"
+            files = {name: text}
+            option, value = rng.choice([("--np", "0"), ("--np", "-1"), ("--np", "abc"), ("--np", "1e9"),
+                                        ("--output", ""), ("--cache-dir", ""), ("--lmp", "{dir}/no_lmp"),
+                                        ("--bogus", "1"), ("--np", "2")])
+            command = [runin, "homogenise", "{dir}/" + name, "--cache-dir", "{dir}/cache", "--output",
+                       "{dir}/out/law.json", "--deck", rng.choice(["{dir}/no_deck.in", "{dir}"]), option, value]
+            op += f" ({mutation}; {option} {value!r})"
         elif op == "fit-law":
             column = rng.choice(["v_slide", "c_fric[3]", "nope", ""])
             source = rng.choice(["{dir}/ave.txt", "{dir}", "{dir}/missing.txt"])

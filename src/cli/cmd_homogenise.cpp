@@ -1,0 +1,525 @@
+#include "cli/cmd_homogenise.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/case_file.h"
+#include "cli/homogenise_curves.h"
+#include "cli/homogenise_plan.h"
+#include "cli/runin_version.h"
+#include "cli/staged_file.h"
+#include "coupling/ave_time_reader.h"
+#include "coupling/state_law.h"
+
+extern char **environ;
+
+namespace runin::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+  std::string case_path, output = "law.json", cache_dir, lmp, deck;
+  int np = 0;  // 0: the number of cores
+  std::string command_line;
+};
+
+// ---------------------------------------------------------------------------------------------------------------
+// Processes
+
+std::string quoted(const std::string &text) { return "\"" + text + "\""; }
+
+// `name` as given if it holds a '/', else the first executable of that name on PATH; empty if none.
+std::string find_executable(const std::string &name) {
+  if (name.find('/') != std::string::npos) return access(name.c_str(), X_OK) == 0 ? name : std::string();
+  const char *path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');) {
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / name;
+    if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
+  }
+  return {};
+}
+
+// The environment of every mpirun: Open MPI as root (containers, CI), oversubscription allowed, one thread per rank
+// (as tools/run-pipeline and tests/lammps/run_deck.py); the caller's own settings win.
+std::vector<std::string> mpi_environment() {
+  std::map<std::string, std::string> env;
+  for (char **e = environ; *e; ++e) {
+    const std::string entry(*e);
+    const auto eq = entry.find('=');
+    if (eq != std::string::npos) env[entry.substr(0, eq)] = entry.substr(eq + 1);
+  }
+  if (geteuid() == 0) {
+    env.emplace("OMPI_ALLOW_RUN_AS_ROOT", "1");
+    env.emplace("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1");
+  }
+  env.emplace("OMPI_MCA_rmaps_base_oversubscribe", "1");
+  env.emplace("OMP_NUM_THREADS", "1");
+  std::vector<std::string> out;
+  for (const auto &[k, v] : env) out.push_back(k + "=" + v);
+  return out;
+}
+
+// Starts `args` in `cwd` with stdout and stderr to `output`; returns the pid.
+pid_t spawn(const std::vector<std::string> &args, const fs::path &cwd, const fs::path &output) {
+  std::vector<std::string> env_text = mpi_environment();
+  std::vector<char *> argv, envp;
+  std::vector<std::string> copy = args;
+  for (auto &a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  for (auto &e : env_text) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  // POSIX has no chdir action before POSIX.1-2024; glibc has had the _np one since 2.29
+  posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, args.front().c_str(), &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) throw std::runtime_error("cannot start " + args.front() + " (set RUNIN_MPIRUN to the mpirun to use)");
+  return pid;
+}
+
+// Exit status of a finished child, or nullopt while it runs.
+std::optional<int> poll_child(pid_t pid) {
+  int status = 0;
+  const pid_t done = waitpid(pid, &status, WNOHANG);
+  if (done == 0) return std::nullopt;
+  if (done < 0) return 255;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string mpirun_program() {
+  const char *env = std::getenv("RUNIN_MPIRUN");
+  return env && *env ? env : "mpirun";
+}
+
+std::string first_line_starting(const fs::path &file, const std::string &prefix) {
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) return line;
+  return {};
+}
+
+std::string last_line(const fs::path &file) {
+  std::ifstream in(file);
+  std::string last;
+  for (std::string line; std::getline(in, line);)
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  return last;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Samples in the cache
+
+std::string g17(double x) { return fmt::format("{:.17g}", x); }
+
+// The sample's include file: its log, its variables (index variables are not redefined by a second `variable X
+// index`, so each is deleted first), the deck, then `clear` for the next sample of the partition.
+void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &deck) {
+  fs::create_directories(s.dir);
+  std::error_code ignore;
+  fs::remove(s.dir / "out.dat.part", ignore);
+  const std::vector<std::pair<std::string, std::string>> vars = {
+      {"material", c.material_file}, {"rough", c.rough},         {"counterface", c.counterface},
+      {"R", g17(c.R)},               {"sigma", g17(c.sigma)},    {"spacing", g17(c.spacing)},
+      {"nside", std::to_string(c.nside)}, {"pressure", g17(s.pressure)}, {"speed", g17(c.speed)},
+      {"seed", std::to_string(s.seed)},   {"accel", g17(s.acceleration)}, {"depth", g17(c.depth)},
+      {"nslide", std::to_string(c.nslide)}, {"nout", std::to_string(c.nout)}, {"out", s.output().string()},
+  };
+  std::string text = "# runin homogenise: sample " + s.key + " (" + s.label() + ")\n";
+  text += "log " + quoted(s.log().string()) + "\n";
+  text += "print \"$(version)\" file " + quoted((s.dir / "lammps_version").string()) + " screen no\n";
+  for (const auto &[name, value] : vars)
+    text += fmt::format("variable {} delete\nvariable {} index {}\n", name, name, quoted(value));
+  text += "include " + quoted(deck.string()) + "\nclear\n";
+  StagedFile vars_file(s.dir / "sample.in");
+  vars_file.write(text);
+  vars_file.commit();
+  StagedFile inputs(s.dir / "inputs.json");
+  inputs.write(s.inputs.dump(2) + "\n");
+  inputs.commit();
+}
+
+struct Failure {
+  const Sample *sample;
+  std::string error;
+};
+
+// A scratch directory for one mpirun (uloop's tmp.lammps.variable lives in the working directory).
+fs::path make_workdir(const fs::path &cache_dir) {
+  const fs::path runs = cache_dir / "runs";
+  fs::create_directories(runs);
+  for (int i = 0;; ++i) {
+    const fs::path dir = runs / fmt::format("{}-{}-{}", std::time(nullptr), getpid(), i);
+    std::error_code error;
+    if (fs::create_directory(dir, error)) return dir;
+    if (error) throw std::runtime_error("cannot create " + dir.string() + ": " + error.message());
+  }
+}
+
+class Progress {
+ public:
+  Progress(std::vector<const Sample *> pending, std::size_t total, Clock::time_point start)
+      : pending_(std::move(pending)), total_(total), start_(start) {}
+  void poll() {
+    for (auto it = pending_.begin(); it != pending_.end();) {
+      if ((*it)->complete()) {
+        ++done_;
+        fmt::print("runin homogenise: sample {}/{} done: {} ({:.1f} s)\n", done_, total_, (*it)->label(),
+                   std::chrono::duration<double>(Clock::now() - start_).count());
+        std::fflush(stdout);
+        it = pending_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
+  std::size_t done() const { return done_; }
+
+ private:
+  std::vector<const Sample *> pending_;
+  std::size_t total_, done_ = 0;
+  Clock::time_point start_;
+};
+
+// All `todo` samples under one mpirun: N partitions of one rank each, a uloop over the samples. Returns mpirun's
+// exit status. An ERROR in one partition aborts the whole mpirun (lmp_runin turns LAMMPS's partition-mode abort
+// exception into MPI_Abort); what completed before stays in the cache.
+int run_partitioned(const std::vector<const Sample *> &todo, int n, const std::string &lmp, const fs::path &cache_dir,
+                    Progress &progress) {
+  const fs::path work = make_workdir(cache_dir);
+  for (std::size_t k = 0; k < todo.size(); ++k) {
+    std::ofstream f(work / fmt::format("sample_{}.in", k + 1));
+    f << "include " << quoted((todo[k]->dir / "sample.in").string()) << "\n";
+  }
+  {
+    std::ofstream driver(work / "driver.in");
+    driver << "# runin homogenise: " << todo.size() << " samples over " << n << " partitions\n"
+           << "variable runin_sample uloop " << todo.size() << "\n"
+           << "label runin_next\n"
+           << "include sample_${runin_sample}.in\n"  // relative to the working directory: no $ in quotes
+           << "next runin_sample\n"
+           << "jump SELF runin_next\n";
+    if (!driver) throw std::runtime_error("cannot write " + (work / "driver.in").string());
+  }
+  std::vector<std::string> args = {mpirun_program(), "-np", std::to_string(n), "--oversubscribe", lmp};
+  if (n > 1) args.insert(args.end(), {"-partition", fmt::format("{}x1", n)});
+  args.insert(args.end(), {"-in", (work / "driver.in").string(), "-log", (work / "log.lammps").string(), "-screen",
+                           "none"});
+  fmt::print("runin homogenise: {} {} ... ({} samples, {} partitions; logs in each sample's directory)\n", args[0],
+             fmt::format("-np {}", n), todo.size(), n);
+  std::fflush(stdout);
+  const pid_t pid = spawn(args, work, work / "mpirun.out");
+  std::optional<int> status;
+  while (!(status = poll_child(pid))) {
+    progress.poll();
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  progress.poll();
+  if (*status == 0) fs::remove_all(work);  // kept on failure: mpirun.out and the partition logs
+  return *status;
+}
+
+// Each sample alone (its own mpirun -np 1), up to `n` at a time: a failing sample no longer takes the others down,
+// and its log names its ERROR.
+std::vector<Failure> run_isolated(const std::vector<const Sample *> &todo, int n, const std::string &lmp,
+                                  const fs::path &cache_dir, Progress &progress) {
+  const fs::path work = make_workdir(cache_dir);
+  std::vector<Failure> failures;
+  std::vector<std::pair<pid_t, std::size_t>> running;
+  std::size_t next = 0;
+  auto finish = [&](std::size_t k, int status) {
+    const Sample &s = *todo[k];
+    if (s.complete()) return;
+    std::string error = first_line_starting(s.log(), "ERROR");
+    if (error.empty()) error = last_line(work / fmt::format("sample_{}.out", k + 1));
+    if (error.empty()) error = fmt::format("no output and no ERROR line (exit status {})", status);
+    failures.push_back({&s, error});
+  };
+  while (next < todo.size() || !running.empty()) {
+    while (next < todo.size() && static_cast<int>(running.size()) < n) {
+      const std::vector<std::string> args = {mpirun_program(), "-np", "1", "--oversubscribe", lmp,
+                                             "-in", (todo[next]->dir / "sample.in").string(),
+                                             "-log", (work / fmt::format("sample_{}.log", next + 1)).string(),
+                                             "-screen", "none"};
+      running.emplace_back(spawn(args, work, work / fmt::format("sample_{}.out", next + 1)), next);
+      ++next;
+    }
+    for (auto it = running.begin(); it != running.end();) {
+      if (const auto status = poll_child(it->first)) {
+        finish(it->second, *status);
+        it = running.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    progress.poll();
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  if (failures.empty()) fs::remove_all(work);
+  return failures;
+}
+
+constexpr std::size_t kFields = coupling::state_field_count;
+
+// ---------------------------------------------------------------------------------------------------------------
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return text;
+}
+
+std::string host_name() {
+  char name[256] = {};
+  if (gethostname(name, sizeof name - 1) != 0) return "unknown";
+  return name;
+}
+
+fs::path default_cache_dir() {
+  if (const char *xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "runin" / "homogenise";
+  if (const char *home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "runin" / "homogenise";
+  return fs::path(".runin-cache") / "homogenise";
+}
+
+int run_homogenise(const Options &o) {
+  const auto start = Clock::now();
+  const HomogeniseCase c = read_homogenise_case(o.case_path);
+  if (o.np < 0) throw InputError("--np: must be positive");
+  const fs::path deck = fs::absolute(o.deck.empty() ? fs::path(RUNIN_SOURCE_DIR) / "inputs" / "in.rve_wall"
+                                                    : fs::path(o.deck));
+  std::error_code error;
+  if (!fs::is_regular_file(deck, error)) throw InputError("--deck: not a file: " + deck.string());
+  std::string lmp = o.lmp;
+  if (lmp.empty()) {
+    const fs::path beside = fs::read_symlink("/proc/self/exe", error).parent_path() / "lmp_runin";
+    lmp = !error && access(beside.c_str(), X_OK) == 0 ? beside.string() : find_executable("lmp_runin");
+    if (lmp.empty()) throw std::runtime_error("cannot find lmp_runin beside runin or on PATH (use --lmp)");
+  } else {
+    const std::string found = find_executable(lmp);
+    if (found.empty()) throw InputError("--lmp: not an executable: " + lmp);
+    lmp = found;
+  }
+  lmp = fs::absolute(lmp).string();
+  const fs::path cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
+  fs::create_directories(cache_dir, error);
+  if (error || !fs::is_directory(cache_dir))
+    throw std::runtime_error("cannot create the cache directory " + cache_dir.string() +
+                             (error ? ": " + error.message() : std::string()));
+
+  const CodeIdentity code{runin_version(), lmp, sha256_hex(file_bytes(lmp))};
+  const std::string deck_text = file_bytes(deck);
+  const std::vector<Sample> samples = plan_samples(c, deck_text, code, cache_dir);
+  std::vector<const Sample *> todo;
+  for (const auto &s : samples)
+    if (!s.complete()) todo.push_back(&s);
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int np = static_cast<int>(std::min<std::size_t>(o.np > 0 ? o.np : cores, std::max<std::size_t>(1, todo.size())));
+  fmt::print("runin homogenise: {}: {} pressures x {} seeds = {} samples of {} summits; {} cached in {}\n",
+             o.case_path, c.pressures.size(), c.seeds.size(), samples.size(), c.nside * c.nside,
+             samples.size() - todo.size(), cache_dir.string());
+  fmt::print("runin homogenise: {} samples to run\n", todo.size());
+  std::fflush(stdout);
+
+  std::vector<Failure> failures;
+  if (!todo.empty()) {
+    for (const Sample *s : todo) prepare_sample(c, *s, deck);
+    Progress progress(todo, todo.size(), start);
+    const int status = run_partitioned(todo, np, lmp, cache_dir, progress);
+    std::vector<const Sample *> missing;
+    for (const Sample *s : todo)
+      if (!s->complete()) missing.push_back(s);
+    if (missing.size() == 1 && todo.size() == 1) {
+      // it ran alone already: its log names the ERROR
+      std::string error = first_line_starting(missing.front()->log(), "ERROR");
+      if (error.empty()) error = fmt::format("no output and no ERROR line in its log (mpirun exit status {})", status);
+      failures.push_back({missing.front(), error});
+    } else if (!missing.empty()) {
+      fmt::print("runin homogenise: mpirun exited with status {}, {} samples incomplete; running each alone to find "
+                 "the failing ones\n",
+                 status, missing.size());
+      std::fflush(stdout);
+      failures = run_isolated(missing, std::min<int>(np, static_cast<int>(missing.size())), lmp, cache_dir, progress);
+    }
+  }
+
+  // Each complete sample on the h grid; a sample that cannot be read or did not reach the depth fails too.
+  const std::vector<double> grid = depth_grid(c.depth, c.depth_points);
+  std::map<const Sample *, DepthCurves> curves;
+  for (const auto &s : samples) {
+    if (!s.complete()) continue;
+    try {
+      curves.emplace(&s, resample_on_depth_grid(cell_series(coupling::read_ave_time(s.output().string())), grid,
+                                                s.acceleration));
+    } catch (const std::exception &e) {
+      failures.push_back({&s, e.what()});
+    }
+  }
+  std::map<const Sample *, std::string> failed;
+  for (const auto &f : failures) failed[f.sample] = f.error;
+  for (const auto &f : failures)
+    fmt::print("runin homogenise: sample FAILED: {} (accel {:g}, key {}): {}; log {}\n", f.sample->label(),
+               f.sample->acceleration, f.sample->key, f.error, f.sample->log().string());  // stderr: the one error line
+
+  // The law: every pressure needs at least one good seed; mean over the good seeds, band = their min and max.
+  std::vector<std::size_t> empty_pressures;
+  std::array<coupling::StateFieldTable, kFields> tables;
+  for (std::size_t ip = 0; ip < c.pressures.size(); ++ip) {
+    std::vector<const DepthCurves *> good;
+    for (const auto &s : samples)
+      if (s.ip == ip && curves.count(&s)) good.push_back(&curves.at(&s));
+    if (good.empty()) {
+      empty_pressures.push_back(ip);
+      continue;
+    }
+    for (std::size_t f = 0; f < kFields; ++f) {
+      std::vector<double> mean(grid.size()), low(grid.size()), high(grid.size());
+      for (std::size_t j = 0; j < grid.size(); ++j) {
+        double sum = 0, lo = good.front()->field[f][j], hi = lo;
+        for (const DepthCurves *g : good) {
+          const double v = g->field[f][j];
+          sum += v, lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+        mean[j] = std::clamp(sum / static_cast<double>(good.size()), lo, hi);  // round-off may leave [lo, hi]
+        low[j] = lo, high[j] = hi;
+      }
+      tables[f].mean.push_back(std::move(mean));
+      tables[f].low.push_back(std::move(low));
+      tables[f].high.push_back(std::move(high));
+    }
+  }
+  std::string failed_list;
+  for (const auto &f : failures) failed_list += (failed_list.empty() ? "" : "; ") + f.sample->label();
+  if (!empty_pressures.empty()) {
+    std::string list;
+    for (std::size_t ip : empty_pressures) list += (list.empty() ? "" : ", ") + fmt::format("{:.4g}", c.pressures[ip]);
+    throw std::runtime_error(fmt::format("homogenise: no law written: no good seed at p = {} Pa; {} of {} samples "
+                                         "failed: {}",
+                                         list, failures.size(), samples.size(), failed_list));
+  }
+
+  // Metadata
+  std::string lammps_version = "unknown";
+  for (const auto &s : samples)
+    if (curves.count(&s)) {
+      std::ifstream in(s.dir / "lammps_version");
+      std::string line;
+      if (std::getline(in, line) && !line.empty()) {
+        lammps_version = line;
+        break;
+      }
+    }
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto &s : samples) {
+    nlohmann::json entry = {{"pressure", s.pressure}, {"seed", s.seed}, {"acceleration", s.acceleration},
+                            {"key", s.key}, {"status", failed.count(&s) ? "failed" : "ok"}};
+    if (failed.count(&s)) entry["error"] = failed.at(&s);
+    list.push_back(entry);
+  }
+  nlohmann::json metadata = {
+      {"title", c.title},
+      {"material",
+       {{"file", c.material_file}, {"sha256", sha256_hex(file_bytes(c.material_file))}, {"rough", c.rough},
+        {"counterface", c.counterface}}},
+      {"surface",
+       {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}, {"summits", c.nside * c.nside}}},
+      {"speed", c.speed},
+      {"samples",
+       {{"seeds", c.seeds},
+        {"acceleration", c.acceleration},
+        {"depth", c.depth},
+        {"nslide", c.nslide},
+        {"nout", c.nout},
+        {"band", "low/high: minimum/maximum over the good seeds at each point; mean: their mean"},
+        {"deck", {{"path", deck.string()}, {"sha256", sha256_hex(deck_text)}}},
+        {"cache_dir", cache_dir.string()},
+        {"list", list}}},
+      {"provenance",
+       {{"runin_version", runin_version()},
+        {"runin_git", runin_git_describe()},
+        {"lammps_version", lammps_version},
+        {"lmp", {{"path", lmp}, {"sha256", code.lmp_sha256}}},
+        {"command_line", o.command_line},
+        {"case", {{"path", fs::absolute(o.case_path).lexically_normal().string()},
+                  {"sha256", sha256_hex(file_bytes(o.case_path))}}},
+        {"date_utc", utc_now()},
+        {"host", host_name()}}},
+  };
+  std::vector<double> pressures = c.pressures;
+  const coupling::StateLaw law = [&] {
+    try {
+      return coupling::StateLaw(pressures, grid, tables, metadata);
+    } catch (const std::invalid_argument &e) {
+      throw std::runtime_error(std::string("homogenise: the samples give no valid state law: ") + e.what());
+    }
+  }();
+  StagedFile out(fs::absolute(o.output));
+  out.write(law.to_json().dump(1) + "\n");
+  out.commit();
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  fmt::print("runin homogenise: wrote {} ({} pressures {:.4g} .. {:.4g} Pa x {} depths 0 .. {:.4g} m, {} seeds; "
+             "{:.2f} s)\n",
+             o.output, c.pressures.size(), c.pressures.front(), c.pressures.back(), grid.size(), c.depth,
+             c.seeds.size(), seconds);
+  if (!failures.empty())
+    throw std::runtime_error(fmt::format("homogenise: {} of {} samples failed (the law uses the other seeds): {}",
+                                         failures.size(), samples.size(), failed_list));
+  return 0;
+}
+
+}  // namespace
+
+Subcommand add_homogenise_command(CLI::App &app) {
+  auto o = std::make_shared<Options>();
+  auto *cmd = app.add_subcommand("homogenise",
+                                 "Sample the rough-on-flat cell over a pressure grid and seeds (LAMMPS partitions) and "
+                                 "write the state law");
+  cmd->add_option("case", o->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
+  cmd->add_option("--output", o->output, "state law file to write (JSON)")->capture_default_str()->check(non_empty_path());
+  cmd->add_option("--cache-dir", o->cache_dir,
+                  "sample cache (default $XDG_CACHE_HOME/runin/homogenise, else ~/.cache/runin/homogenise)")
+      ->check(non_empty_path());
+  cmd->add_option("--np", o->np, "MPI ranks = LAMMPS partitions (default: the number of cores)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--lmp", o->lmp, "LAMMPS executable with the RunIn styles (default: lmp_runin beside runin)");
+  cmd->add_option("--deck", o->deck, "cell deck (default: inputs/in.rve_wall of the RunIn source tree)");
+  return {cmd, [o] {
+            // the command line as run, for the provenance: /proc/self/cmdline (NUL-separated)
+            std::ifstream in("/proc/self/cmdline", std::ios::binary);
+            for (std::string arg; std::getline(in, arg, '\0');) o->command_line += (o->command_line.empty() ? "" : " ") + arg;
+            return run_homogenise(*o);
+          }};
+}
+
+}  // namespace runin::cli

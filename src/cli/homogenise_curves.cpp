@@ -1,0 +1,120 @@
+#include "cli/homogenise_curves.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace runin::cli {
+
+namespace {
+
+std::string g6(double x) {
+  std::ostringstream out;
+  out.precision(6);
+  out << x;
+  return out.str();
+}
+
+// Least-squares slope of y over x on rows [a, b] (inclusive); 0 if x does not vary.
+double slope(const std::vector<double> &x, const std::vector<double> &y, std::size_t a, std::size_t b) {
+  const double n = static_cast<double>(b - a + 1);
+  double sx = 0, sy = 0;
+  for (std::size_t i = a; i <= b; ++i) sx += x[i], sy += y[i];
+  const double mx = sx / n, my = sy / n;
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = a; i <= b; ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+  return sxx > 0 ? sxy / sxx : 0.0;
+}
+
+void running_max(std::vector<double> &v) {
+  for (std::size_t i = 1; i < v.size(); ++i) v[i] = std::max(v[i], v[i - 1]);
+}
+
+}  // namespace
+
+CellSeries cell_series(const coupling::AveTimeTable &table) {
+  CellSeries c;
+  const std::array<std::pair<const char *, std::vector<double> *>, 7> columns = {{{"v_s", &c.s},
+                                                                                  {"v_h", &c.h},
+                                                                                  {"v_h_cf", &c.h_cf},
+                                                                                  {"v_mu_body", &c.mu_body},
+                                                                                  {"v_rq", &c.rq},
+                                                                                  {"v_rsk", &c.rsk},
+                                                                                  {"v_area_fraction", &c.area_fraction}}};
+  for (const auto &[name, out] : columns) {
+    *out = table.column(name);  // InputFormatError (a runtime_error) naming the file and the columns it has
+    for (std::size_t i = 0; i < out->size(); ++i)
+      if (!std::isfinite((*out)[i]))
+        throw std::runtime_error(table.source() + ": " + name + " is not finite in data row " + std::to_string(i + 1));
+  }
+  return c;
+}
+
+std::vector<double> depth_grid(double depth, long points) {
+  std::vector<double> grid;
+  for (long j = 0; j < points; ++j)
+    grid.push_back(j == points - 1 ? depth : depth * static_cast<double>(j) / static_cast<double>(points - 1));
+  return grid;
+}
+
+DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<double> &grid, double acceleration) {
+  // rows once sliding has begun (the loading phase has s = 0 and no friction yet)
+  CellSeries c;
+  for (std::size_t i = 0; i < cell.s.size(); ++i)
+    if (cell.s[i] > 0.0) {
+      c.s.push_back(cell.s[i]);
+      c.h.push_back(cell.h[i]);
+      c.h_cf.push_back(cell.h_cf[i]);
+      c.mu_body.push_back(cell.mu_body[i]);
+      c.rq.push_back(cell.rq[i]);
+      c.rsk.push_back(cell.rsk[i]);
+      c.area_fraction.push_back(cell.area_fraction[i]);
+    }
+  if (c.s.size() < 2) throw std::runtime_error("fewer than 2 output rows with sliding (s > 0)");
+  // wear only grows: the running maximum removes round-off dips, so h is non-decreasing
+  running_max(c.h);
+  running_max(c.h_cf);
+  const std::vector<double> &H = c.h;
+  const double depth = grid.back();
+  if (!(H.back() >= depth))
+    throw std::runtime_error("reached h = " + g6(H.back()) + " m of depth " + g6(depth) +
+                             " m within nslide (raise grid.nslide or grid.acceleration)");
+  const double dh = grid.size() > 1 ? grid[1] - grid[0] : depth;
+  DepthCurves out;
+  for (auto &f : out.field) f.resize(grid.size());
+  using F = coupling::StateField;
+  auto field = [&](F f) -> std::vector<double> & { return out.field[static_cast<std::size_t>(f)]; };
+  for (std::size_t j = 0; j < grid.size(); ++j) {
+    const double hj = grid[j];
+    // the first row at or above hj, and the last one below it: the bracket crosses a flat stretch at its end
+    const std::size_t i = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj) - H.begin());
+    std::size_t lo = i, hi = i;
+    double w = 1.0;
+    if (i > 0 && H[i] > hj) {
+      lo = i - 1;
+      w = (hj - H[lo]) / (H[hi] - H[lo]);  // H[hi] > hj > H[lo]
+    }
+    auto at = [&](const std::vector<double> &v) { return v[lo] + w * (v[hi] - v[lo]); };
+    field(F::MuBody)[j] = at(c.mu_body);
+    field(F::Rq)[j] = at(c.rq);
+    field(F::Rsk)[j] = at(c.rsk);
+    field(F::AreaFraction)[j] = at(c.area_fraction);
+    field(F::SlidingDistance)[j] = at(c.s) * acceleration;
+    // wear rates: least-squares slope over the rows with h within one grid step of hj (at least 3 rows)
+    std::size_t a = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj - dh) - H.begin());
+    std::size_t b = static_cast<std::size_t>(std::upper_bound(H.begin(), H.end(), hj + dh) - H.begin());
+    a = std::min(a, H.size() - 1);
+    b = b == 0 ? 0 : b - 1;
+    if (b < a) b = a;
+    while (b - a + 1 < 3 && (a > 0 || b + 1 < H.size())) {
+      if (a > 0) --a;
+      if (b - a + 1 < 3 && b + 1 < H.size()) ++b;
+    }
+    field(F::WearRate)[j] = std::max(0.0, slope(c.s, H, a, b)) / acceleration;
+    field(F::CounterfaceWearRate)[j] = std::max(0.0, slope(c.s, c.h_cf, a, b)) / acceleration;
+  }
+  return out;
+}
+
+}  // namespace runin::cli

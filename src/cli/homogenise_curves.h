@@ -1,0 +1,37 @@
+// `runin homogenise`: one cell sample's output (the columns of the in.rve_wall contract) on the state law's grid of
+// worn depths h (doc/homogenise.md, "From samples to the law"). No I/O beyond the table: unit-tested on its own.
+#pragma once
+
+#include <array>
+#include <stdexcept>
+#include <vector>
+
+#include "coupling/ave_time_reader.h"
+#include "coupling/state_law.h"
+
+namespace runin::cli {
+
+// The contract columns of one sample (cell units: s and the rates at the accelerated k).
+struct CellSeries {
+  std::vector<double> s, h, h_cf, mu_body, rq, rsk, area_fraction;
+};
+
+// Reads v_s, v_h, v_h_cf, v_mu_body, v_rq, v_rsk, v_area_fraction; throws std::runtime_error for a missing column
+// (coupling::InputFormatError) or a non-finite value (naming the column and row).
+CellSeries cell_series(const coupling::AveTimeTable &table);
+
+// 0 .. depth in `points` even steps (the last one exactly depth).
+std::vector<double> depth_grid(double depth, long points);
+
+struct DepthCurves {
+  std::array<std::vector<double>, coupling::state_field_count> field;  // [StateField][depth index]
+};
+
+// Every field of the state law on `grid` for one sample run at `acceleration` (physical s = acceleration x cell s,
+// physical rates = cell rates / acceleration). Uses the rows with s > 0; h made non-decreasing by a running
+// maximum; fields linear in h between the last row below a grid depth and the first at or above it; wear rates a
+// least-squares slope dh/ds over the rows within one grid step (at least 3 rows). Throws std::runtime_error when
+// fewer than 2 rows slide or the sample's h stops short of grid.back() ("reached h = ... m of depth ... m").
+DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<double> &grid, double acceleration);
+
+}  // namespace runin::cli

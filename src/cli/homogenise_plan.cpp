@@ -1,0 +1,195 @@
+#include "cli/homogenise_plan.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/core.h>
+#include <openssl/evp.h>
+
+#include "cli/case_file.h"
+#include "cli/case_reader.h"
+
+namespace runin::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const Schema &schema() {
+  static const Schema s = {
+      {"", {"title", "material", "surface", "sliding", "grid"}},
+      {"material", {"file", "rough", "counterface"}},
+      {"surface", {"R", "sigma", "spacing", "nside"}},
+      {"sliding", {"speed"}},
+      {"grid",
+       {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "nslide",
+        "nout"}},
+  };
+  return s;
+}
+
+std::string required_text(const CaseReader &reader, const std::string &key) {
+  if (!reader.has(key)) reader.fail(key, "missing (required)");
+  const std::string value = reader.text(key, "");
+  if (value.empty()) reader.fail(key, "must not be empty");
+  if (value.find_first_of(" \t\n\"'") != std::string::npos)
+    reader.fail(key, "must not contain blanks or quotes (it is passed to LAMMPS as one word)");
+  return value;
+}
+
+}  // namespace
+
+long derived_seed(long j) { return 4711 + 7919 * j; }
+
+HomogeniseCase read_homogenise_case(const std::string &path) {
+  const toml::table root = parse_toml(path);
+  CaseReader reader(path, root, schema());
+  reader.reject_unknown_keys();
+  HomogeniseCase c;
+  c.path = path;
+  c.title = reader.text("title", "");
+
+  // [material]: a RunIn coefficient file (relative: to the case file's directory, else to the RunIn source tree)
+  const std::string file = required_text(reader, "material.file");
+  fs::path resolved(file);
+  if (resolved.is_relative()) {
+    resolved = fs::path(path).parent_path() / file;
+#ifdef RUNIN_SOURCE_DIR
+    if (!fs::exists(resolved) && fs::exists(fs::path(RUNIN_SOURCE_DIR) / file)) resolved = fs::path(RUNIN_SOURCE_DIR) / file;
+#endif
+  }
+  std::error_code error;
+  if (!fs::is_regular_file(resolved, error)) reader.fail("material.file", "no such file: " + resolved.string());
+  c.material_file = fs::absolute(resolved).lexically_normal().string();
+  if (c.material_file.find_first_of(" \t\n\"'") != std::string::npos)
+    reader.fail("material.file", "the resolved path must not contain blanks or quotes: " + c.material_file);
+  c.rough = required_text(reader, "material.rough");
+  c.counterface = required_text(reader, "material.counterface");
+  for (const auto &[key, name] : {std::make_pair("material.rough", c.rough), std::make_pair("material.counterface",
+                                                                                            c.counterface)}) {
+    try {
+      read_runin_material(c.material_file, name);
+    } catch (const std::invalid_argument &e) {
+      reader.fail(key, e.what());
+    }
+  }
+
+  // [surface]
+  c.R = reader.positive("surface.R", c.R);
+  c.sigma = reader.positive("surface.sigma", c.sigma);
+  c.spacing = reader.positive("surface.spacing", c.spacing);
+  if (c.sigma >= c.R) reader.fail("surface.sigma", "must be below surface.R (summit heights are a small fraction of R)");
+  c.nside = reader.positive_integer("surface.nside", c.nside, 1000);
+
+  // [sliding]
+  c.speed = reader.positive("sliding.speed", c.speed);
+
+  // [grid]
+  c.pressure_min = reader.positive("grid.pressure_min");
+  c.pressure_max = reader.positive("grid.pressure_max");
+  if (!(c.pressure_max > c.pressure_min))
+    reader.fail("grid.pressure_max", fmt::format("must be above grid.pressure_min = {:g}, got {:g}", c.pressure_min,
+                                                 c.pressure_max));
+  const long pressures = reader.positive_integer("grid.pressures", 8, 100);
+  if (pressures < 2) reader.fail("grid.pressures", "a law needs at least 2 pressures, got " + std::to_string(pressures));
+  for (long i = 0; i < pressures; ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(pressures - 1);
+    c.pressures.push_back(i == pressures - 1 ? c.pressure_max
+                                             : c.pressure_min * std::pow(c.pressure_max / c.pressure_min, t));
+  }
+  const long seeds = reader.positive_integer("grid.seeds", 3, 100);
+  for (long j = 0; j < seeds; ++j) c.seeds.push_back(derived_seed(j));
+
+  const bool is_array = root.at_path("grid.acceleration").is_array();
+  if (!reader.has("grid.acceleration")) {
+    c.acceleration.assign(c.pressures.size(), 1.0);
+  } else {
+    // one number, or one per pressure
+    if (is_array)
+      c.acceleration = reader.numbers("grid.acceleration");
+    else
+      c.acceleration.assign(c.pressures.size(), reader.number("grid.acceleration"));
+    if (is_array && c.acceleration.size() != c.pressures.size())
+      reader.fail("grid.acceleration", fmt::format("has {} values; give one number or one per pressure ({})",
+                                                   c.acceleration.size(), c.pressures.size()));
+    for (std::size_t i = 0; i < c.acceleration.size(); ++i)
+      if (!(c.acceleration[i] >= 1.0))
+        reader.fail("grid.acceleration", fmt::format("{}must be >= 1 (a factor on the Archard k), got {:g}",
+                                                     is_array ? fmt::format("element {}: ", i) : std::string(),
+                                                     c.acceleration[i]));
+  }
+  c.depth = reader.positive("grid.depth");
+  if (c.depth >= c.R) reader.fail("grid.depth", "must be below surface.R");
+  c.depth_points = reader.positive_integer("grid.depth_points", c.depth_points, 10000);
+  if (c.depth_points < 2) reader.fail("grid.depth_points", "must be at least 2 (0 and depth)");
+  c.nslide = reader.positive_integer("grid.nslide", c.nslide, 1000000000L);
+  c.nout = reader.positive_integer("grid.nout", c.nout, 1000000000L);
+  if (c.nout > c.nslide) reader.fail("grid.nout", fmt::format("must be at most grid.nslide = {}", c.nslide));
+  return c;
+}
+
+std::string sha256_hex(const std::string &bytes) {
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  if (EVP_Digest(bytes.data(), bytes.size(), digest, &length, EVP_sha256(), nullptr) != 1)
+    throw std::runtime_error("SHA-256 failed (libcrypto)");
+  std::string hex;
+  for (unsigned int i = 0; i < length; ++i) hex += fmt::format("{:02x}", digest[i]);
+  return hex;
+}
+
+std::string file_bytes(const fs::path &path) {
+  std::ifstream in(path, std::ios::binary);
+  std::error_code error;
+  if (!in || fs::is_directory(path, error)) throw std::runtime_error("cannot read " + path.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw std::runtime_error("cannot read " + path.string());
+  return text.str();
+}
+
+bool Sample::complete() const {
+  std::error_code error;
+  return fs::is_regular_file(output(), error);
+}
+
+std::string Sample::label() const { return fmt::format("p = {:.4g} Pa, seed {}", pressure, seed); }
+
+std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &deck_text, const CodeIdentity &code,
+                                 const fs::path &cache_dir) {
+  const std::string material_sha = sha256_hex(file_bytes(c.material_file));
+  const std::string deck_sha = sha256_hex(deck_text);
+  std::vector<Sample> samples;
+  for (std::size_t ip = 0; ip < c.pressures.size(); ++ip)
+    for (std::size_t is = 0; is < c.seeds.size(); ++is) {
+      Sample s;
+      s.ip = ip;
+      s.is = is;
+      s.pressure = c.pressures[ip];
+      s.acceleration = c.acceleration[ip];
+      s.seed = c.seeds[is];
+      // nlohmann::json objects keep their keys sorted and dump doubles to round trip: a canonical text.
+      s.inputs = {
+          {"material", {{"sha256", material_sha}, {"rough", c.rough}, {"counterface", c.counterface}}},
+          {"surface", {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}}},
+          {"pressure", s.pressure},
+          {"speed", c.speed},
+          {"seed", s.seed},
+          {"acceleration", s.acceleration},
+          {"depth", c.depth},
+          {"nslide", c.nslide},
+          {"nout", c.nout},
+          {"deck_sha256", deck_sha},
+          {"code", {{"runin_version", code.runin_version}, {"lmp_sha256", code.lmp_sha256}}},
+          {"cache_format", 1},
+      };
+      s.key = sha256_hex(s.inputs.dump());
+      s.dir = cache_dir / s.key;
+      samples.push_back(std::move(s));
+    }
+  return samples;
+}
+
+}  // namespace runin::cli

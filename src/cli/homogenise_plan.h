@@ -1,0 +1,72 @@
+// `runin homogenise`: the case (which cell, which pressure grid, which seeds), the plan of samples it implies and
+// the content-addressed cache of their outputs (doc/homogenise.md).
+//
+// A sample is one run of the cell deck at one (pressure, seed). Its cache key is the SHA-256 of a canonical JSON of
+// everything that determines its output: the material file's content and the two names, the surface, p, v, seed,
+// acceleration, depth, nslide, nout, the deck's content, the RunIn version and the SHA-256 of the LAMMPS executable
+// that runs it. The sample lives in <cache>/<key>/; it is complete when <cache>/<key>/out.dat exists (the deck
+// renames its output to that name as its very last act).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace runin::cli {
+
+struct HomogeniseCase {
+  std::string path, title;
+  // [material]
+  std::string material_file;  // resolved
+  std::string rough, counterface;
+  // [surface]
+  double R = 1.0e-4, sigma = 2.0e-7, spacing = 2.0e-5;
+  long nside = 64;
+  // [sliding]
+  double speed = 0.1;
+  // [grid]
+  double pressure_min = 0.0, pressure_max = 0.0;
+  std::vector<double> pressures;      // log-spaced, pressure_min .. pressure_max
+  std::vector<long> seeds;            // derived: seed_j = 4711 + 7919 j
+  std::vector<double> acceleration;   // one per pressure (one number in the case: repeated)
+  double depth = 0.0;                 // target mean worn depth of the rough body [m]
+  long depth_points = 11;             // columns of the law's h grid, 0 .. depth
+  long nslide = 100000, nout = 100;
+};
+
+// Reads and validates CASE (TOML, or JSON when it ends in .json); unknown keys, missing required keys and impossible
+// values are InputError "<file>: key '<key>': <problem>" (exit 2).
+HomogeniseCase read_homogenise_case(const std::string &path);
+
+// The j-th seed of every pressure (the same seeds at every pressure: common random numbers across the grid).
+long derived_seed(long j);
+
+std::string sha256_hex(const std::string &bytes);
+std::string file_bytes(const std::filesystem::path &path);  // throws std::runtime_error naming the file
+
+// What every sample shares besides its own (p, seed, acceleration).
+struct CodeIdentity {
+  std::string runin_version;  // PROJECT_VERSION
+  std::string lmp_path, lmp_sha256;
+};
+
+struct Sample {
+  std::size_t ip = 0, is = 0;  // pressure and seed indices
+  double pressure = 0.0, acceleration = 1.0;
+  long seed = 0;
+  nlohmann::json inputs;  // canonical inputs (the key's preimage)
+  std::string key;        // sha256 of inputs.dump()
+  std::filesystem::path dir;
+  std::filesystem::path output() const { return dir / "out.dat"; }
+  std::filesystem::path log() const { return dir / "log.lammps"; }
+  bool complete() const;
+  std::string label() const;  // "p = 1e+06 Pa, seed 4711"
+};
+
+// One sample per (pressure, seed), pressure-major.
+std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &deck_text, const CodeIdentity &code,
+                                 const std::filesystem::path &cache_dir);
+
+}  // namespace runin::cli

@@ -1,0 +1,185 @@
+#!/usr/bin/env python3
+"""runin homogenise end to end on the test fixture cell (tests/cli/homogenise/in.rve_fixture), 2 pressures x 2
+seeds of 36 summits. Standard library only.
+
+  check_homogenise.py --runin BIN --lmp LMP --reader READ_LAW --deck DECK --workdir DIR --mode MODE
+  (--deck default: no --deck option, i.e. the shipped inputs/in.rve_wall; mode fail needs a deck file)
+
+MODE build:  a cold run (4 samples under one mpirun, 2 partitions) writes a law the continuum reader
+             (runin_read_state_law = coupling::StateLaw::read_file) accepts, with the grid, seeds, band and
+             provenance; the top pressure's wear rate is the Archard rate k p / H of the physical k (the cell ran
+             at acceleration x k); a rerun finds every sample cached ("0 samples to run", no mpirun) and writes
+             the same tables. Prints both wall times (not asserted; doc/homogenise.md has the measured ones).
+MODE fail:   a deck that stops with an ERROR for one (pressure, seed): the other samples complete and are cached,
+             the failing one is named with its ERROR line, the law is written from the other seed, exit 1; a
+             rerun runs only the failing sample again. A deck that fails at every seed of one pressure: exit 1,
+             no law written.
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+CASE = """title = "homogenise test fixture"
+[material]
+file = "{material}"
+rough = "Steel1020"
+counterface = "Steel1020"
+[surface]
+nside = 6
+[sliding]
+speed = 0.1
+[grid]
+pressure_min = 1.0e6
+pressure_max = 4.0e6
+pressures = 2
+seeds = 2
+acceleration = [2000.0, 1000.0]
+depth = 2.0e-9
+depth_points = 5
+nslide = 4000
+nout = 10
+"""
+SEED_1 = 4711 + 7919  # the second derived seed (homogenise_plan.cpp: derived_seed)
+K, H = 7.0e-3, 1.19e9  # the fixture's Archard k and hardness
+
+
+def fail(message):
+    sys.exit(f"check_homogenise: {message}")
+
+
+def homogenise(args, case, law, cache, deck, expect):
+    command = [args.runin, "homogenise", case, "--output", law, "--cache-dir", cache, "--np", "2", "--lmp", args.lmp]
+    if deck != "default":  # default: runin's own, inputs/in.rve_wall
+        command += ["--deck", deck]
+    start = time.monotonic()
+    result = subprocess.run(command, capture_output=True, text=True)
+    seconds = time.monotonic() - start
+    print(result.stdout + result.stderr)
+    if result.returncode != expect:
+        fail(f"{' '.join(command)}: exit {result.returncode}, expected {expect}")
+    return result, seconds
+
+
+def read_law(args, law):
+    result = subprocess.run([args.reader, law], capture_output=True, text=True)
+    if result.returncode != 0:
+        fail(f"the continuum reader rejects {law}: {result.stderr}")
+    return json.loads(result.stdout)
+
+
+def setup(args, name):
+    work = os.path.join(args.workdir, name)
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    case = os.path.join(work, "case.toml")
+    with open(case, "w") as f:
+        f.write(CASE.format(material=args.material))
+    return work, case
+
+
+def mode_build(args):
+    work, case = setup(args, "build" if args.deck != "default" else "build_rve_wall")
+    law, cache = os.path.join(work, "law.json"), os.path.join(work, "cache")
+    first, cold = homogenise(args, case, law, cache, args.deck, 0)
+    if "4 samples to run" not in first.stdout or "mpirun -np 2" not in first.stdout:
+        fail("the cold run did not run 4 samples under one mpirun -np 2")
+    if "sample 4/4 done" not in first.stdout:
+        fail("no progress line 'sample 4/4 done'")
+    read = read_law(args, law)
+    if len(read["pressure"]) != 2 or len(read["worn_depth"]) != 5 or not read["has_band"]:
+        fail(f"grid or band: {read}")
+    with open(law) as f:
+        doc = json.load(f)
+    if doc["samples"]["seeds"] != [4711, SEED_1] or doc["samples"]["acceleration"] != [2000.0, 1000.0]:
+        fail(f"samples: {doc['samples']}")
+    keys = {s["key"] for s in doc["samples"]["list"]}
+    if len(keys) != 4 or any(s["status"] != "ok" for s in doc["samples"]["list"]):
+        fail("the law does not list 4 good samples with distinct cache keys")
+    for key in keys:
+        if not os.path.isfile(os.path.join(cache, key, "out.dat")):
+            fail(f"sample {key} is not in the cache")
+    prov = doc["provenance"]
+    for field in ("runin_version", "runin_git", "lammps_version", "lmp", "command_line", "date_utc", "host", "case"):
+        if not prov.get(field):
+            fail(f"provenance.{field} missing")
+    if doc["material"]["rough"] != "Steel1020" or len(doc["material"]["sha256"]) != 64:
+        fail(f"material: {doc['material']}")
+    # physical wear rate at the top pressure: Archard k p / H (the cell's k was acceleration x k)
+    p = read["pressure"][-1]
+    rate = read["mid_depth"][-1]["wear_rate"]
+    if abs(rate / (K * p / H) - 1.0) > 0.25:
+        fail(f"wear rate at p = {p:g}: {rate:.4g}, Archard k p / H = {K * p / H:.4g}")
+
+    second, warm = homogenise(args, case, law, cache, args.deck, 0)
+    if "0 samples to run" not in second.stdout or "mpirun" in second.stdout:
+        fail("the rerun did not take every sample from the cache")
+    with open(law) as f:
+        again = json.load(f)
+    if again["fields"] != doc["fields"] or again["pressure"] != doc["pressure"]:
+        fail("the cached rerun wrote different tables")
+    print(f"check_homogenise: cold {cold:.2f} s, cached rerun {warm:.3f} s (4 samples of 36 summits)")
+
+
+def failing_deck(args, work, condition):
+    deck = os.path.join(work, "in.rve_fail")
+    with open(args.deck) as f:
+        text = f.read()
+    with open(deck, "w") as f:
+        f.write(text.replace("units           si",
+                             f'if "{condition}" then "runin_forced_failure"\nunits           si', 1))
+    return deck
+
+
+def mode_fail(args):
+    work, case = setup(args, "fail")
+    law, cache = os.path.join(work, "law.json"), os.path.join(work, "cache")
+    deck = failing_deck(args, work, f"${{pressure}} > 3.0e6 && ${{seed}} == {SEED_1}")
+    first, _ = homogenise(args, case, law, cache, deck, 1)
+    err = first.stderr.strip().splitlines()
+    if not err or not err[-1].startswith("runin: error: homogenise: 1 of 4 samples failed") or "seed 12630" not in err[-1]:
+        fail(f"last stderr line does not name the failed sample: {err[-1:]}")
+    if len(err) != 1:
+        fail(f"stderr is not one line: {err}")
+    if not any("sample FAILED: p = 4e+06 Pa, seed 12630" in line and "runin_forced_failure" in line
+               for line in first.stdout.splitlines()):
+        fail("no report of the failed sample with its ERROR line")
+    read = read_law(args, law)  # written: every pressure has a good seed
+    with open(law) as f:
+        doc = json.load(f)
+    status = {(s["pressure"], s["seed"]): s["status"] for s in doc["samples"]["list"]}
+    if status[(4.0e6, SEED_1)] != "failed" or list(status.values()).count("ok") != 3:
+        fail(f"statuses: {status}")
+    if read["mid_depth"][-1]["mu_body"] <= 0:
+        fail("the top pressure has no law from its good seed")
+    again, _ = homogenise(args, case, law, cache, deck, 1)
+    if "1 samples to run" not in again.stdout:
+        fail("the rerun did not keep the 3 good samples cached")
+
+    # every seed of one pressure fails: no law
+    work2, case2 = setup(args, "fail_pressure")
+    law2 = os.path.join(work2, "law.json")
+    deck2 = failing_deck(args, work2, "${pressure} > 3.0e6")
+    third, _ = homogenise(args, case2, law2, os.path.join(work2, "cache"), deck2, 1)
+    last = third.stderr.strip().splitlines()[-1]
+    if not last.startswith("runin: error: homogenise: no law written: no good seed at p = 4e+06 Pa"):
+        fail(f"last line: {last}")
+    if os.path.exists(law2):
+        fail("a law was written with a pressure that has no good seed")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    for option in ("--runin", "--lmp", "--reader", "--deck", "--workdir", "--material"):
+        parser.add_argument(option, required=True)
+    parser.add_argument("--mode", choices=["build", "fail"], required=True)
+    args = parser.parse_args()
+    {"build": mode_build, "fail": mode_fail}[args.mode](args)
+    print("check_homogenise: ok")
+
+
+if __name__ == "__main__":
+    main()
