@@ -17,7 +17,7 @@ namespace runin::cli {
 const std::set<std::string> &friction_keys() {
   static const std::set<std::string> keys = {"model", "mu0", "mu_static", "mu_kinetic", "alpha", "speed_term",
                                              "distance_scale", "branch", "kind", "C1", "C2", "K1", "K2",
-                                             "A", "B", "R0", "basis"};
+                                             "A", "B", "R0", "basis", "law", "out_of_range"};
   return keys;
 }
 
@@ -28,7 +28,7 @@ using continuum::SlidingFriction;
 // Allowed keys per table; "" is the top level.
 const Schema kSchema = {
     {"", {"title", "pin", "loading", "friction", "run", "solver", "contact", "wear", "output", "sweep"}},
-    {"contact", {"tip_radius", "pin_youngs_modulus", "pin_poisson_ratio", "disk_youngs_modulus",
+    {"contact", {"tip", "flat_radius", "tip_radius", "pin_youngs_modulus", "pin_poisson_ratio", "disk_youngs_modulus",
                  "disk_poisson_ratio", "rings", "grid_radius", "materials", "pin_material", "disk_material"}},
     {"wear", {"k", "hardness", "form", "step_safety", "max_steps", "disk_k", "disk_hardness"}},
     {"output", {"vtk_times"}},
@@ -54,6 +54,7 @@ const std::map<std::string, std::set<std::string>> kModelKeys = {
     {"static_kinetic", {"mu_static", "mu_kinetic"}},
     {"law_file", {"distance_scale", "branch"}},
     {"feedback", {"kind", "C1", "C2", "K1", "K2", "A", "B", "R0", "basis"}},
+    {"state_law", {"law", "out_of_range", "mu_static"}},
 };
 
 
@@ -61,7 +62,7 @@ const std::map<std::string, std::set<std::string>> kModelKeys = {
 
 continuum::SlidingFriction read_friction(const CaseReader &reader, const std::optional<std::string> &law_path) {
   const std::string model =
-      reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback"});
+      reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
   for (const auto &[other, keys] : kModelKeys)
     if (other != model)
       for (const auto &key : keys)
@@ -84,6 +85,33 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       const double mu_kinetic = reader.non_negative("friction.mu_kinetic");
       if (mu_kinetic > mu_static) reader.fail("friction.mu_kinetic", "must not exceed friction.mu_static");
       return SlidingFriction::static_kinetic(mu_static, mu_kinetic, alpha);
+    }
+    if (model == "state_law") {
+      // The homogenised path (issue 11): per-node mu(p, h) and dh/ds from a runin-state-law file. Relative
+      // paths: to the case file's directory, else to the RunIn source tree.
+      auto state = std::make_shared<continuum::StateLawFriction>();
+      const std::string file = reader.text("friction.law", "");
+      if (file.empty()) reader.fail("friction.law", "missing (required): the state law file (runin homogenise)");
+      std::filesystem::path resolved(file);
+      if (resolved.is_relative()) {
+        resolved = std::filesystem::path(reader.path()).parent_path() / file;
+#ifdef RUNIN_SOURCE_DIR
+        if (!std::filesystem::exists(resolved) && std::filesystem::exists(std::filesystem::path(RUNIN_SOURCE_DIR) / file))
+          resolved = std::filesystem::path(RUNIN_SOURCE_DIR) / file;
+#endif
+      }
+      state->path = resolved.lexically_normal().string();
+      if (!std::filesystem::exists(state->path)) reader.fail("friction.law", "no such file: " + state->path);
+      try {
+        state->law = std::make_shared<const coupling::StateLaw>(coupling::StateLaw::read_file(state->path));
+      } catch (const coupling::InputFormatError &e) {
+        reader.fail("friction.law", e.what());
+      }
+      state->policy = reader.choice("friction.out_of_range", {"error", "clamp"}, std::string("error")) == "clamp"
+                          ? coupling::OutOfRange::Clamp
+                          : coupling::OutOfRange::Error;
+      if (reader.has("friction.mu_static")) state->mu_static = reader.non_negative("friction.mu_static");
+      return SlidingFriction::state_law(std::move(state), alpha);
     }
     if (model == "feedback") {
       const auto kind = reader.choice("friction.kind", {"lubricated", "dry"}, std::string("dry")) == "dry"
@@ -227,9 +255,21 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   c.friction_model = reader.text("friction.model", "");
   if (targeted) c.torque_target = std::make_pair(reader.number("loading.target_speed"), reader.number("loading.target_time"));
   if (reader.has("wear") && !reader.has("contact")) reader.fail("wear", "needs a [contact] table (tip geometry)");
+  const bool state_law = c.friction->state_law() != nullptr;
+  if (state_law && !reader.has("contact"))
+    reader.fail("friction.model", "'state_law' needs a [contact] table (the per-node pressures)");
   if (reader.has("contact")) {
     PinContactCase k;
-    k.tip_radius = reader.positive("contact.tip_radius");
+    k.flat = reader.choice("contact.tip", {"sphere", "flat"}, std::string("sphere")) == "flat";
+    if (k.flat) {
+      if (!state_law) reader.fail("contact.tip", "'flat' needs friction.model = \"state_law\"");
+      if (reader.has("contact.tip_radius")) reader.fail("contact.tip_radius", "not used by contact.tip = \"flat\"");
+      k.flat_radius = reader.positive("contact.flat_radius");
+      k.tip_radius = k.flat_radius;  // only names a size below
+    } else {
+      if (reader.has("contact.flat_radius")) reader.fail("contact.flat_radius", "needs contact.tip = \"flat\"");
+      k.tip_radius = reader.positive("contact.tip_radius");
+    }
     // Thesis ch. 4: Cu pin E = 110 GPa, nu = 0.37; Al disk E = 69 GPa, nu = 0.33.
     k.pin.youngs_modulus = reader.positive("contact.pin_youngs_modulus", 110e9);
     k.pin.poisson_ratio = reader.non_negative("contact.pin_poisson_ratio", 0.37);
@@ -275,7 +315,16 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     if (rings < 8 || rings > 4096) reader.fail("contact.rings", "must be in [8, 4096], got " + std::to_string(rings));
     k.rings = static_cast<int>(rings);
     if (reader.has("contact.grid_radius")) k.grid_radius = reader.positive("contact.grid_radius");
-    if (reader.has("wear")) {
+    if (state_law && reader.has("wear")) {
+      // One wear law: the state law's wear_rate wears the pin, its counterface_wear_rate the disk.
+      for (const char *key : {"wear.k", "wear.hardness", "wear.form", "wear.disk_k", "wear.disk_hardness"})
+        if (reader.has(key))
+          reader.fail(key, "not used with friction.model = \"state_law\" (the law's wear_rate wears the pin, its "
+                           "counterface_wear_rate the disk)");
+      k.step_safety = reader.positive("wear.step_safety", 0.5);
+      if (k.step_safety > 1.0) reader.fail("wear.step_safety", "must be <= 1 (fraction of the stability bound)");
+      k.max_wear_steps = reader.positive_integer("wear.max_steps", 1000000);
+    } else if (reader.has("wear")) {
       const double coefficient = reader.non_negative("wear.k");
       const double hardness = reader.positive("wear.hardness");
       const auto form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "thesis"
@@ -313,6 +362,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     if (c.vtk_times.size() > 100) reader.fail("output.vtk_times", "more than 100 frames");
   }
   if (reader.has("sweep")) {
+    if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
     if (c.friction_model == "law_file")
       reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
     c.sweep_mu0 = reader.numbers("sweep.mu0");

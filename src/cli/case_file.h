@@ -25,6 +25,11 @@ class InputError : public std::runtime_error {
 
 // [contact] (Hertz tip on the flat disk, discretised face) and optional [wear] (Archard on the pin).
 struct PinContactCase {
+  // contact.tip: "sphere" (Hertz tip, elastic pressure solve on the rings) or "flat" (friction.model =
+  // "state_law" only: a flat-ended pin of radius contact.flat_radius at the uniform nominal pressure
+  // W / (pi a^2), which its uniform wear keeps uniform; the elastic edge concentration is not modelled).
+  bool flat = false;
+  double flat_radius = 0.0;                // m, contact.tip = "flat"
   double tip_radius = 0.0;                 // m
   tribo::Material pin, disk;               // E, nu (hardness of the pin from [wear]); S_y from `materials`
   std::string materials_path;              // contact.materials (.runin file), resolved; empty: none

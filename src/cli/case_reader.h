@@ -53,6 +53,7 @@ class CaseReader {
     }
   }
 
+  const std::string &path() const { return path_; }
   bool has(const std::string &key) const { return static_cast<bool>(root_.at_path(key)); }
 
   double number(const std::string &key, std::optional<double> fallback = std::nullopt) const {

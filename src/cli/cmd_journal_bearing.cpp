@@ -54,6 +54,7 @@ RunSummary key_numbers(const continuum::JournalBearingSummary &s) {
 
 double wear_step(const JournalBearingCase &c, const continuum::JournalBearingSystem &system) {
   if (c.run.fixed_wear_step > 0.0) return c.run.fixed_wear_step;
+  if (c.friction->state_law()) return HUGE_VAL;  // the law's step depends on the pressures: no cap estimate
   return c.run.wear_step_fraction *
          system.wear_law().stable_slip_step(system.contact().contact_stiffness_per_area());
 }
@@ -95,6 +96,7 @@ Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &fr
   const double distance_cap = wearing ? step * static_cast<double>(max_wear_updates) : HUGE_VAL;
 
   Curve curve;
+  const auto *law = friction.state_law();
   try {
     curve.report = continuum::simulate(
         system, c.run,
@@ -107,6 +109,14 @@ Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &fr
   } catch (const WearCapReached &stop) {
     throw std::runtime_error(cap_message(fmt::format("more than {}", max_wear_updates)) +
                              fmt::format(" (stopped at t = {:.6g} s, s = {:.4g} m)", stop.t, stop.distance));
+  } catch (const std::out_of_range &e) {
+    if (!law) throw;
+    throw std::runtime_error(fmt::format("state law at t = {:g} s: {}{}",
+                                         curve.samples.empty() ? 0.0 : curve.samples.back().t, e.what(),
+                                         law->policy == coupling::OutOfRange::Error
+                                             ? " (friction.out_of_range = \"clamp\" holds the nearest grid pressure "
+                                               "and counts it)"
+                                             : ""));
   }
   if (!curve.report.ok())
     throw std::runtime_error(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
@@ -123,11 +133,27 @@ const char *kColumns =
 const char *kHalfColumns[] = {"friction_torque_N_m", "normal_force_N", "mu", "roughness", "wear_volume_m3",
                               "contact_half_angle_rad", "peak_pressure_Pa"};
 
-std::string columns(int halves) {
+// State law (doc/state_law_continuum.md): per half, after the per-half columns.
+const char *kStateLawColumns[] = {"mu_eff", "h_mean_m", "h_max_m", "counterface_volume_m3"};
+
+std::string columns(int halves, bool state_law = false) {
   std::string text = kColumns;
   if (halves == 2)
     for (const char *half : {"lower_", "upper_"})
       for (const char *name : kHalfColumns) text += std::string(",") + half + name;
+  if (state_law) {
+    text += ",mu_eff";
+    for (int h = 0; h < halves; ++h)
+      for (const char *name : kStateLawColumns) text += std::string(",") + (h ? "upper_" : "lower_") + name;
+  }
+  return text;
+}
+
+std::string state_law_row(const JournalBearingSample &s) {
+  std::string text = fmt::format(",{:.12g}", s.mu_eff);
+  for (int h = 0; h < s.halves; ++h)
+    text += fmt::format(",{:.12g},{:.12g},{:.12g},{:.12g}", s.half[h].mu_eff, s.half[h].h_mean, s.half[h].h_max,
+                        s.half[h].counterface_volume);
   return text;
 }
 
@@ -173,6 +199,14 @@ std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, 
       }
     }
     s.fields = {{"pressure", pressure}, {"wear_depth", wear}};
+    const auto &mu = upper ? f.upper_mu : f.mu;
+    if (!mu.empty()) {  // state law: h_i = wear depth, mu(p_i, h_i)
+      std::vector<double> mu_field(nu * nv);
+      for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) mu_field[i + nu * j] = mu[i];
+      s.fields.push_back({"h", wear});
+      s.fields.push_back({"mu", mu_field});
+    }
     out.push_back(std::move(s));
   }
   return out;
@@ -257,8 +291,9 @@ int run(const Options &o, const PlotRunner &plot) {
                                   "vtk/subsurface_upper.pvd"});
   const std::vector<LineStressReport> stress = subsurface_stress(c, main_curve);
   const int halves = c.parameters.halves;
-  std::string text = columns(halves) + "\n";
-  for (const auto &s : main_curve.samples) text += row(s) + "\n";
+  const auto *law = c.friction->state_law();
+  std::string text = columns(halves, law != nullptr) + "\n";
+  for (const auto &s : main_curve.samples) text += row(s) + (law ? state_law_row(s) : std::string()) + "\n";
   out.write("journal_bearing.csv", text);
   out.write("journal_bearing_summary.csv",
             std::string(kRunSummaryHeader) + "\n" + run_summary_row(key_numbers(main_curve.summary)) + "\n");
@@ -342,8 +377,9 @@ int run(const Options &o, const PlotRunner &plot) {
              last.normal_force, s.steady_friction_force);
   fmt::print("  contact           half-angle {:.4g} -> {:.4g} rad, peak pressure {:.4g} -> {:.4g} MPa\n",
              s.initial_half_angle, s.final_half_angle, 1e-6 * s.initial_peak_pressure, 1e-6 * s.final_peak_pressure);
-  fmt::print("  wear              {:.6g} mm^3 over s = {:.6g} m; {} wear updates, stable step 2H/(k k_c) = {:.4g} m\n",
-             1e9 * s.wear_volume, last.distance, r.wear_updates, r.stable_wear_step);
+  fmt::print("  wear              {:.6g} mm^3 over s = {:.6g} m; {} wear updates, stable step {} = {:.4g} m\n",
+             1e9 * s.wear_volume, last.distance, r.wear_updates,
+             c.friction->state_law() ? "2/(k_c max w/p)" : "2H/(k k_c)", r.stable_wear_step);
   fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", r.steps, r.breakaway_times.size(),
              r.restick_times.size());
   if (halves == 2) {
@@ -354,6 +390,26 @@ int run(const Options &o, const PlotRunner &plot) {
                upper.friction_torque, upper.normal_force, 1e9 * upper.wear_volume, 1e-6 * upper.peak_pressure);
   }
   std::vector<std::string> warnings;
+  if (law && r.range_use) {
+    const auto &first_sample = main_curve.samples.front();
+    fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m); the bore is the rough body\n", law->path,
+               law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
+    fmt::print("  mu_eff            {:.6g} -> {:.6g} (pressure-weighted per half, N-weighted over the halves); static "
+               "{:.6g} ({})\n",
+               first_sample.mu_eff, last.mu_eff, r.state_law_static,
+               law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
+    for (int h = 0; h < halves; ++h)
+      fmt::print("  {} h         mean {:.4g} m, max {:.4g} m; shaft worn volume under it {:.6g} mm^3 "
+                 "(counterface_wear_rate)\n",
+                 h ? "upper" : "lower", last.half[h].h_mean, last.half[h].h_max, 1e9 * last.half[h].counterface_volume);
+    fmt::print("  law lookups       {}\n", continuum::describe(*r.range_use, *law->law));
+    if (r.range_use->below_pressure + r.range_use->above_pressure > 0)
+      warnings.push_back(fmt::format(
+          "WARNING: {} of {} state-law lookups were outside the law's pressure range and clamped to it ({} below "
+          "{:.4g} Pa, {} above {:.4g} Pa; friction.out_of_range = \"clamp\")",
+          r.range_use->below_pressure + r.range_use->above_pressure, r.range_use->lookups, r.range_use->below_pressure,
+          law->law->pressure().front(), r.range_use->above_pressure, law->law->pressure().back()));
+  }
   for (const auto &report : stress) print_line_stress(report, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);
   if (one_contact) {

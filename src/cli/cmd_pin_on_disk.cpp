@@ -12,6 +12,7 @@
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/axisymmetric_contact.h"
+#include "continuum/node_state_law.h"
 #include "continuum/pin_on_disk.h"
 #ifdef RUNIN_HAVE_VTK
 #include "coupling/vtk_export.h"
@@ -27,6 +28,7 @@ struct Row {
   PinOnDiskSample s;
   double wear_volume = 0.0, contact_radius = 0.0, peak_pressure = 0.0, mean_pressure = 0.0;
   double disk_wear_volume = 0.0, disk_track_depth = 0.0;  // 0 without wear.disk_k
+  double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0;         // friction.model = "state_law" only
 };
 
 // The disk's worn track at the end of a run, and how it compares with the contact it is left out of.
@@ -40,6 +42,7 @@ struct DiskTrack {
 struct Frame {  // pin face at one time, for VTK
   double time;
   std::vector<double> radius, height, pressure, depth;
+  std::vector<double> mu;  // state law: mu(p_i, h_i) per ring (h_i is `depth`)
 };
 
 struct Curve {
@@ -52,11 +55,15 @@ struct Curve {
   std::vector<double> final_pressure;  // Pa per ring at the end of the run (subsurface stress)
   double ring_width = 0.0;
   std::optional<DiskTrack> disk;  // with wear.disk_k
+  std::optional<coupling::RangeUse> range_use;  // friction.model = "state_law"
 };
+
+Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames);
 
 // Dynamics first (CVODE), then the wear stepper driven by the sliding distance of each output
 // sample. The coupling is one-way: none of the friction laws depends on contact pressure.
 Curve run_case(const PinOnDiskCase &c, bool with_frames) {
+  if (c.friction->state_law()) return run_state_law_case(c, with_frames);
   Curve curve;
   const continuum::PinOnDiskSystem system(c.parameters, *c.friction);
   std::vector<PinOnDiskSample> samples;
@@ -131,7 +138,7 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
       }
     }
     while (with_frames && next_frame < frame_times.size() && row.s.t >= frame_times[next_frame] - 1e-12) {
-      Frame f{row.s.t, {}, {}, {}, {}};
+      Frame f{row.s.t, {}, {}, {}, {}, {}};
       for (int i = 0; i < pin->grid().rings(); ++i) {
         f.radius.push_back(pin->grid().ring_radius(i));
         f.height.push_back(pin->profile_height(i));
@@ -157,11 +164,191 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
   return curve;
 }
 
-std::string csv_text(const std::vector<Row> &rows) {
+// friction.model = "state_law" (issue 11, doc/state_law_continuum.md): two-way coupling by operator splitting at
+// the output interval. CVODE integrates one interval with mu_eff held; after it, the node states h_i and the
+// pin's worn profile advance by the distance slid (the same dh_i: the law's wear_rate is the pin's only wear
+// law), the disk by the law's counterface_wear_rate, the contact pressure is re-solved, mu_eff recomputed and
+// CVODE restarted.
+Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
+  auto *law = c.friction->state_law();
+  const auto &k = *c.contact;
+  const double load = c.parameters.normal_load;
+  Curve curve;
+
+  // Geometry: rings of the spherical tip (elastic solve) or of the flat end (uniform nominal pressure).
+  std::optional<continuum::PinWear> pin;
+  std::optional<continuum::AxisymmetricContact> flat_grid;
+  if (k.flat) {
+    flat_grid.emplace(k.flat_radius, k.rings, k.effective_modulus());
+  } else {
+    continuum::PinWearParameters wp;
+    wp.tip_radius = k.tip_radius;
+    wp.effective_modulus = k.effective_modulus();
+    wp.rings = k.rings;
+    wp.step_safety = k.step_safety;
+    wp.max_steps = k.max_wear_steps;
+    // Grid size: Hertz, and the cap an Archard wear at the law's largest w/p would flatten over the run.
+    double factor = 0.0;
+    const auto &w = law->law->table(coupling::StateField::WearRate).mean;
+    for (std::size_t i = 0; i < w.size(); ++i)
+      for (double x : w[i]) factor = std::max(factor, x / law->law->pressure()[i]);
+    const double slid_estimate =
+        c.parameters.drive == continuum::PinDrive::Speed ? c.parameters.sliding_speed * c.run.t_end : 0.0;
+    const tribo::ArchardWear equivalent(factor, 1.0);
+    wp.grid_radius = k.grid_radius ? *k.grid_radius
+                                   : continuum::suggested_grid_radius(wp.tip_radius, wp.effective_modulus, load,
+                                                                      &equivalent, slid_estimate);
+    curve.grid_radius = wp.grid_radius;
+    try {
+      pin.emplace(wp, tribo::ArchardWear(0.0, 1.0), load);
+    } catch (const std::invalid_argument &e) {
+      throw std::runtime_error(std::string(e.what()) + " (raise contact.grid_radius)");
+    }
+  }
+  const continuum::AxisymmetricContact &grid = pin ? pin->grid() : *flat_grid;
+  if (k.flat) curve.grid_radius = k.flat_radius;
+  const int n = grid.rings();
+  std::vector<double> area(n);
+  for (int i = 0; i < n; ++i) area[i] = grid.ring_area(i);
+  double flat_area = 0.0;
+  for (double a : area) flat_area += a;
+  const std::vector<double> uniform(n, load / flat_area);
+  auto pressure = [&]() -> const std::vector<double> & { return pin ? pin->contact().pressure : uniform; };
+  auto contact_radius = [&] { return pin ? pin->contact().contact_radius : k.flat_radius; };
+
+  continuum::NodeStateLaw nodes(law->law, law->policy, n);
+  continuum::DiskTrackWear disk(tribo::ArchardWear(0.0, 1.0), c.parameters.track_radius);
+  double slid = 0.0, disk_volume = 0.0;
+  long wear_steps = 0;
+  double t_now = 0.0;
+  auto where = [&](const std::exception &e) {
+    return std::runtime_error(fmt::format("state law at t = {:g} s: {}{}", t_now, e.what(),
+                                          law->policy == coupling::OutOfRange::Error &&
+                                                  dynamic_cast<const std::out_of_range *>(&e)
+                                              ? " (friction.out_of_range = \"clamp\" holds the nearest grid "
+                                                "pressure and counts it)"
+                                              : ""));
+  };
+  try {
+    law->held_static = law->mu_static ? *law->mu_static : nodes.peak_mu(pressure(), area);
+    law->held_kinetic = nodes.mu_effective(pressure(), area);
+  } catch (const std::exception &e) {
+    throw where(e);
+  }
+
+  // Slides ds: outer steps bounded by the pressure-wear stability of the tip (flat: one step, p stays uniform).
+  auto wear = [&](double ds) {
+    double remaining = ds;
+    while (remaining > 0.0) {
+      double step = remaining;
+      if (pin) {
+        if (wear_steps >= k.max_wear_steps)
+          throw std::runtime_error(fmt::format("pin wear at t = {:g} s: more than {} wear updates; raise "
+                                               "wear.max_steps or lower contact.rings", t_now, k.max_wear_steps));
+        step = std::min(remaining, nodes.stable_contact_step(pressure(), pin->contact_stiffness(), k.step_safety));
+        if (remaining - step < 1e-9 * ds) step = remaining;
+      }
+      const double width = 2.0 * contact_radius();
+      const auto inc = nodes.advance(pressure(), step);
+      double volume = 0.0;
+      for (int i = 0; i < n; ++i) volume += inc.counterface[i] * area[i];
+      disk.slide_volume(volume, step, width);
+      disk_volume += volume;
+      if (pin && !pin->apply(inc.body, step))
+        throw std::runtime_error(fmt::format("pin wear at t = {:g} s: {}{}", t_now, pin->message(),
+                                             pin->message().find("edge of the grid") != std::string::npos
+                                                 ? " (raise contact.grid_radius)"
+                                                 : ""));
+      ++wear_steps;
+      remaining -= step;
+    }
+  };
+
+  bool changed = false;
+  std::size_t next_frame = 0;
+  std::vector<double> frame_times = c.vtk_times;
+  std::sort(frame_times.begin(), frame_times.end());
+  std::vector<PinOnDiskSample> samples;
+  const continuum::PinOnDiskSystem system(c.parameters, *c.friction);
+  auto observer = [&](const PinOnDiskSample &s) {
+    t_now = s.t;
+    samples.push_back(s);
+    Row row{s};
+    try {
+      const double ds = s.distance - slid;
+      if (ds > 0.0) {
+        wear(ds);
+        slid = s.distance;
+        law->held_kinetic = nodes.mu_effective(pressure(), area);
+        changed = true;
+      }
+    } catch (const std::out_of_range &e) {
+      throw where(e);
+    } catch (const std::invalid_argument &e) {
+      throw where(e);
+    }
+    const auto &p = pressure();
+    const auto &h = nodes.state();
+    double loaded = 0.0, volume = 0.0;
+    for (int i = 0; i < n; ++i) {
+      volume += h[i] * area[i];
+      if (p[i] > 0.0) {
+        row.h_mean += h[i] * area[i];
+        loaded += area[i];
+      }
+      row.h_max = std::max(row.h_max, h[i]);
+    }
+    row.h_mean = loaded > 0.0 ? row.h_mean / loaded : 0.0;
+    row.mu_eff = law->held_kinetic;
+    row.wear_volume = volume;
+    row.contact_radius = contact_radius();
+    row.peak_pressure = *std::max_element(p.begin(), p.end());
+    row.mean_pressure = pin ? pin->contact().mean_pressure : load / flat_area;
+    row.disk_wear_volume = disk.volume();
+    row.disk_track_depth = disk.depth();
+    curve.rows.push_back(row);
+    while (with_frames && next_frame < frame_times.size() && s.t >= frame_times[next_frame] - 1e-12) {
+      Frame f{s.t, {}, {}, {}, {}, nodes.node_mu(p)};
+      for (int i = 0; i < n; ++i) {
+        f.radius.push_back(grid.ring_radius(i));
+        f.height.push_back(pin ? pin->profile_height(i) : h[i]);
+        f.pressure.push_back(p[i]);
+        f.depth.push_back(h[i]);
+      }
+      curve.frames.push_back(std::move(f));
+      ++next_frame;
+    }
+  };
+  auto refresh = [&] {
+    const bool was = changed;
+    changed = false;
+    return was;
+  };
+  curve.report = continuum::simulate(system, c.run, observer, refresh);
+  if (!curve.report.ok())
+    throw std::runtime_error(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
+  curve.summary = continuum::summarise(samples);
+  curve.wear_steps = wear_steps;
+  curve.final_pressure = pressure();
+  curve.ring_width = grid.ring_width();
+  curve.range_use = nodes.use();
+  DiskTrack track;
+  track.volume = disk.volume();
+  track.depth = disk.depth();
+  track.width = disk.track_width();
+  track.length = disk.worn_length();
+  track.passes = disk.passes();
+  track.pin_depth = *std::max_element(nodes.state().begin(), nodes.state().end());
+  curve.disk = track;
+  return curve;
+}
+
+std::string csv_text(const std::vector<Row> &rows, bool state_law) {
   std::string text =
       "t_s,applied_torque_N_m,friction_force_N,friction_torque_N_m,mu,speed_m_s,sliding_distance_m,state_slip,"
       "mu_law,roughness,wear_volume_m3,contact_radius_m,peak_pressure_Pa,mean_pressure_Pa,disk_wear_volume_m3,"
-      "disk_track_depth_m\n";
+      "disk_track_depth_m";
+  text += state_law ? ",mu_eff,h_mean_m,h_max_m\n" : "\n";
   for (const auto &r : rows) {
     const auto &s = r.s;
     text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g},{:.12g},{:.12g},{:.12g},"
@@ -169,6 +356,10 @@ std::string csv_text(const std::vector<Row> &rows) {
                         s.t, s.applied_torque, s.friction_force, s.friction_torque, s.mu, s.speed, s.distance,
                         s.state == continuum::ContactState::Slip ? 1 : 0, s.mu_law, s.roughness, r.wear_volume,
                         r.contact_radius, r.peak_pressure, r.mean_pressure, r.disk_wear_volume, r.disk_track_depth);
+    if (state_law) {
+      text.pop_back();
+      text += fmt::format(",{:.12g},{:.12g},{:.12g}\n", r.mu_eff, r.h_mean, r.h_max);
+    }
   }
   return text;
 }
@@ -181,7 +372,7 @@ struct StressFrame {
 };
 std::vector<StressFrame> subsurface_stress(const PinOnDiskCase &c, const Curve &curve) {
   std::vector<StressFrame> frames;
-  if (!c.contact) return frames;
+  if (!c.contact || c.contact->flat) return frames;  // flat end: no Hertz start, nominal pressure only
   const auto &k = *c.contact;
   const double load = c.parameters.normal_load;
   const auto hertz = continuum::hertz_sphere_on_flat(k.tip_radius, k.effective_modulus(), load);
@@ -240,6 +431,12 @@ std::vector<std::string> write_frames(const std::vector<Frame> &frames, const fs
       }
     }
     s.fields = {{"pressure_Pa", pressure}, {"wear_depth_m", depth}};
+    if (!f.mu.empty()) {  // state law: h_i is the wear depth; mu(p_i, h_i) per ring
+      std::vector<double> mu;
+      for (int j = 0; j < angles; ++j) mu.insert(mu.end(), f.mu.begin(), f.mu.end());
+      s.fields.push_back({"h_m", depth});
+      s.fields.push_back({"mu", mu});
+    }
     out.push_back(std::move(s));
   }
   return coupling::write_surface_series(out, dir.string(), "pin_face");
@@ -287,7 +484,7 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
                                   "pin_on_disk_mu0_summary.csv", "pin_face.pvd", "pin_face_*.vts", "subsurface.pvd",
                                   "subsurface_*.vts"});
   const std::vector<StressFrame> stress = subsurface_stress(c, curve);
-  out.write("pin_on_disk.csv", csv_text(curve.rows));
+  out.write("pin_on_disk.csv", csv_text(curve.rows, c.friction->state_law() != nullptr));
   {
     const auto &m = curve.summary;
     out.write("pin_on_disk_summary.csv",
@@ -350,8 +547,13 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
   fmt::print("  final speed       {:.6g} m/s, sliding distance {:.6g} m at t = {:g} s\n", s.final_speed,
              last.s.distance, last.s.t);
   if (c.contact) {
-    fmt::print("  contact           tip R = {:g} m, E* = {:.4g} Pa, {} rings to {:.4g} m\n", c.contact->tip_radius,
-               c.contact->effective_modulus(), c.contact->rings, curve.grid_radius);
+    if (c.contact->flat)
+      fmt::print("  contact           flat end a = {:g} m at the uniform nominal pressure W / (pi a^2) = {:.4g} Pa, "
+                 "{} rings\n",
+                 c.contact->flat_radius, first.mean_pressure, c.contact->rings);
+    else
+      fmt::print("  contact           tip R = {:g} m, E* = {:.4g} Pa, {} rings to {:.4g} m\n", c.contact->tip_radius,
+                 c.contact->effective_modulus(), c.contact->rings, curve.grid_radius);
     fmt::print("  contact radius    {:.4g} m -> {:.4g} m\n", first.contact_radius, last.contact_radius);
     fmt::print("  pressure          peak {:.4g} -> {:.4g} Pa, mean {:.4g} -> {:.4g} Pa\n", first.peak_pressure,
                last.peak_pressure, first.mean_pressure, last.mean_pressure);
@@ -359,7 +561,20 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
       fmt::print("  wear volume       {:.6g} m^3 (Archard k W s / {}H = {:.6g}), {} adaptive wear steps\n",
                  last.wear_volume, c.contact->wear->form() == tribo::ArchardForm::thesis ? "3" : "",
                  c.contact->wear->volume(p.normal_load, last.s.distance), curve.wear_steps);
-    if (curve.disk) {
+    if (const auto *law = c.friction->state_law()) {
+      const auto &d = *curve.disk;
+      fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m)\n", law->path,
+                 law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
+      fmt::print("  mu_eff            {:.6g} -> {:.6g} (pressure-weighted over the rings); static limit {:.6g} ({})\n",
+                 first.mu_eff, last.mu_eff, law->held_static,
+                 law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
+      fmt::print("  pin wear          h mean {:.4g} m, max {:.4g} m, volume {:.6g} m^3 (law wear_rate), {} wear steps\n",
+                 last.h_mean, last.h_max, last.wear_volume, curve.wear_steps);
+      fmt::print("  disk wear         {:.6g} m^3 (law counterface_wear_rate), track depth {:.4g} m over {:.4g} m x "
+                 "{:.4g} m\n",
+                 d.volume, d.depth, d.width, d.length);
+      fmt::print("  law lookups       {}\n", continuum::describe(*curve.range_use, *law->law));
+    } else if (curve.disk) {
       const auto &d = *curve.disk;
       const auto &w = *c.contact->disk_wear;
       const bool thesis = w.form() == tribo::ArchardForm::thesis;
@@ -409,6 +624,14 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
     fmt::print("    frictionless: disk peak von Mises {:.4g} Pa at depth {:.3g} m, pin {:.4g} Pa at depth {:.3g} m\n",
                f0.disk.peak.von_mises, f0.disk.peak.z, f0.pin.peak.von_mises, f0.pin.peak.z);
   }
+  if (curve.range_use && curve.range_use->below_pressure + curve.range_use->above_pressure > 0)
+    warnings.push_back(fmt::format("WARNING: {} of {} state-law lookups were outside the law's pressure range and "
+                                   "clamped to it ({} below {:.4g} Pa, {} above {:.4g} Pa; friction.out_of_range = "
+                                   "\"clamp\")",
+                                   curve.range_use->below_pressure + curve.range_use->above_pressure,
+                                   curve.range_use->lookups, curve.range_use->below_pressure,
+                                   c.friction->state_law()->law->pressure().front(), curve.range_use->above_pressure,
+                                   c.friction->state_law()->law->pressure().back()));
   if (curve.disk && curve.disk->approach_ratio > kGrooveTolerance)
     warnings.push_back(fmt::format("WARNING: the disk's track depth reaches {:.3g} x the elastic approach (t = {:g} s, "
                                    "> {:g}): the worn groove, left out of the contact solve, would change the "

@@ -38,12 +38,14 @@ struct Options {
 
 struct WearRow {
   double ring = 0.0, liner = 0.0, width = 0.0, peak = 0.0, mean = 0.0;
+  double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0;  // friction.model = "state_law"
 };
 
 // Profiles and pressures at one output time, for the VTK frames.
 struct WearSnapshot {
   double time = 0.0, ring_position = 0.0;
   std::vector<double> liner_wear, liner_pressure, ring_wear, ring_pressure;
+  std::vector<double> ring_mu;  // state law: mu(p_i, h_i) per face cell (h_i = ring_wear)
 };
 
 struct Curve {
@@ -133,6 +135,7 @@ WearSnapshot snapshot(const continuum::RingLinerWear &wear, const PistonRingSamp
   snap.liner_pressure = wear.liner_pressure(s.ring_position, s.normal_load);
   snap.ring_wear = wear.ring_wear();
   snap.ring_pressure = wear.pressure(s.ring_position, s.normal_load).pressure;
+  if (const auto *law = wear.state_law()) snap.ring_mu = law->node_mu(snap.ring_pressure);
   return snap;
 }
 
@@ -182,8 +185,9 @@ const char *kColumns =
     "friction_force_N,land_force_N,normal_load_N,mu,mu_law,state_slip,wear_ring_m3,wear_liner_m3,wear_volume_m3,"
     "contact_width_m,peak_pressure_Pa,mean_pressure_Pa,roughness";
 
-std::string csv_text(const std::vector<PistonRingSample> &samples, const std::vector<WearRow> &wear) {
-  std::string text = std::string(kColumns) + "\n";
+std::string csv_text(const std::vector<PistonRingSample> &samples, const std::vector<WearRow> &wear,
+                     bool state_law = false) {
+  std::string text = std::string(kColumns) + (state_law ? ",mu_eff,h_mean_m,h_max_m\n" : "\n");
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const auto &s = samples[i];
     const auto &w = wear[i];
@@ -193,6 +197,10 @@ std::string csv_text(const std::vector<PistonRingSample> &samples, const std::ve
         s.t, s.crank_angle * 180.0 / kPi, s.piston_position, s.piston_velocity, s.ring_position, s.speed, s.distance,
         s.friction_force, s.land_force, s.normal_load, s.mu, s.mu_law, s.state == continuum::ContactState::Slip ? 1 : 0,
         w.ring, w.liner, w.ring + w.liner, w.width, w.peak, w.mean, s.roughness);
+    if (state_law) {
+      text.pop_back();
+      text += fmt::format(",{:.12g},{:.12g},{:.12g}\n", w.mu_eff, w.h_mean, w.h_max);
+    }
   }
   return text;
 }
@@ -236,16 +244,21 @@ std::vector<std::string> write_frames(const std::vector<continuum::RingLinerWear
       rf.time = snap.time;
       rf.nu = wk.settings().ring_cells;
       rf.nv = around;
-      std::vector<double> rw, rp;
+      std::vector<double> rw, rp, rmu;
       for (int j = 0; j < around; ++j) {
         const double phi = 2.0 * kPi * j / around;
         for (int i = 0; i < rf.nu; ++i) {
           rf.points.push_back({radius * std::cos(phi), radius * std::sin(phi), snap.ring_position + wk.ring_cell_centre(i)});
           rw.push_back(snap.ring_wear[i]);
           rp.push_back(snap.ring_pressure[i]);
+          if (!snap.ring_mu.empty()) rmu.push_back(snap.ring_mu[i]);
         }
       }
       rf.fields = {{"pressure", rp}, {"wear_depth", rw}};
+      if (!rmu.empty()) {  // state law
+        rf.fields.push_back({"h", rw});
+        rf.fields.push_back({"mu", rmu});
+      }
       faces[k].push_back(std::move(rf));
     }
   }
@@ -349,6 +362,141 @@ PackRun run_pack(const PistonRingCase &c, const continuum::SlidingFriction &fric
   return r;
 }
 
+// friction.model = "state_law" (doc/state_law_continuum.md): each ring's dynamics and its face/liner wear advance
+// together by operator splitting at the output interval: CVODE integrates one interval with the ring's mu_eff
+// held, the ring then slides its face over the liner along that interval (the law's dh_i on its face cells, the
+// counterface rate on the liner under it), mu_eff is recomputed at the new pressures and CVODE restarts.
+// The rings of a pack run one after the other on the shared liner: ring B sees the liner as ring A left it at
+// the end of the run, not at the same time (the liner is the counter body: it changes the faces' pressure only
+// through its own small wear).
+struct StateLawPack {
+  PackRun run;
+  std::vector<WearPass> passes;
+  coupling::RangeUse use;
+  std::vector<double> mu_static;  // per ring
+};
+
+StateLawPack run_pack_state_law(const PistonRingCase &c, std::vector<continuum::RingLinerWear> &wear) {
+  StateLawPack out;
+  const auto *law = c.friction->state_law();
+  std::vector<double> times = c.vtk_times;
+  std::sort(times.begin(), times.end());
+  std::vector<std::vector<WearRow>> own_rows(c.rings.size());
+  out.passes.resize(c.rings.size());
+  for (std::size_t k = 0; k < c.rings.size(); ++k) {
+    const auto &ring = c.rings[k];
+    auto &w = wear[k];
+    auto &pass = out.passes[k];
+    auto held = std::make_shared<continuum::StateLawFriction>(*law);  // this ring's own held values
+    const continuum::PistonRingSystem system = [&] {
+      try {
+        return continuum::PistonRingSystem(ring.parameters,
+                                           continuum::SlidingFriction::state_law(held, c.friction->speed_coefficient()));
+      } catch (const std::invalid_argument &e) {
+        throw InputError(c.path + ": key '" + (c.rings.size() > 1 ? "ring_pack" : "ring") + "': " + e.what());
+      }
+    }();
+    const std::string which = c.rings.size() > 1 ? "ring " + ring.name + ": " : std::string();
+    double t_now = 0.0;
+    auto where = [&](const std::exception &e) {
+      return std::runtime_error(fmt::format("{}state law at t = {:g} s: {}{}", which, t_now, e.what(),
+                                            law->policy == coupling::OutOfRange::Error
+                                                ? " (friction.out_of_range = \"clamp\" holds the nearest grid "
+                                                  "pressure and counts it)"
+                                                : ""));
+    };
+    {
+      const double x0 = system.piston_position(0.0) + ring.position, w0 = system.normal_load(0.0);
+      try {
+        held->held_static = law->mu_static ? *law->mu_static : w.peak_mu(x0, w0);
+        held->held_kinetic = w.mu_effective(x0, w0);
+      } catch (const std::out_of_range &e) {
+        throw where(e);
+      }
+      out.mu_static.push_back(held->held_static);
+    }
+    Curve curve;
+    std::size_t next_frame = 0;
+    bool changed = false;
+    std::optional<PistonRingSample> prev;
+    auto observer = [&](const PistonRingSample &sample) {
+      t_now = sample.t;
+      PistonRingSample s = sample;
+      s.ring_position += ring.position;  // groove centre on the piston
+      try {
+        if (prev && s.distance > prev->distance) {
+          bool ok = w.slide(prev->ring_position, s.ring_position, prev->normal_load, s.normal_load);
+          if (!ok)
+            throw std::runtime_error(fmt::format("{}{} at t = {:.6g} s: {} (not a run-in any more)", which,
+                                                 continuum::to_string(w.status()), s.t, w.message()));
+          held->held_kinetic = w.mu_effective(s.ring_position, s.normal_load);
+          changed = true;
+        }
+        const auto contact = w.pressure(s.ring_position, s.normal_load);
+        WearRow row{w.ring_volume(), w.liner_volume(), contact.width, contact.peak, contact.mean};
+        row.mu_eff = held->held_kinetic;
+        const auto &h = w.state_law()->state();
+        int loaded = 0;
+        for (std::size_t i = 0; i < h.size(); ++i) {
+          row.h_max = std::max(row.h_max, h[i]);
+          if (contact.pressure[i] > 0.0) row.h_mean += h[i], ++loaded;
+        }
+        row.h_mean = loaded ? row.h_mean / loaded : 0.0;
+        if (!prev) pass.initial_peak = contact.peak, pass.initial_pressure = contact.pressure;
+        pass.final_pressure = contact.pressure;
+        own_rows[k].push_back(row);
+        while (next_frame < times.size() && s.t >= times[next_frame] - 1e-12 * std::max(1.0, s.t)) {
+          pass.snapshots.push_back(snapshot(w, s));
+          ++next_frame;
+        }
+      } catch (const std::out_of_range &e) {
+        throw where(e);
+      }
+      prev = s;
+      curve.samples.push_back(s);
+    };
+    auto refresh = [&] { return std::exchange(changed, false); };
+    curve.report = continuum::simulate(system, c.run, observer, refresh);
+    if (!curve.report.ok())
+      throw std::runtime_error(which + continuum::to_string(curve.report.status) + ": " + curve.report.message);
+    std::vector<PistonRingSample> unshifted = curve.samples;  // summarise() expects the ring's own coordinate
+    for (auto &sample : unshifted) sample.ring_position -= ring.position;
+    curve.summary = continuum::summarise(system, unshifted);
+    out.run.rings.push_back(std::move(curve));
+    const auto &use = w.state_law()->use();
+    out.use.lookups += use.lookups;
+    out.use.below_pressure += use.below_pressure;
+    out.use.above_pressure += use.above_pressure;
+    out.use.beyond_depth += use.beyond_depth;
+  }
+  auto &r = out.run;
+  std::vector<const std::vector<PistonRingSample> *> own;
+  for (const auto &curve : r.rings) {
+    own.push_back(&curve.samples);
+    r.cvode_steps += curve.report.steps;
+    r.breakaways += curve.report.breakaway_times.size();
+    r.resticks += curve.report.restick_times.size();
+  }
+  r.grid = common_grid(own);
+  r.pack = pack_samples(r.grid);
+  if (c.rings.size() == 1) {
+    r.summary = r.rings.front().summary;
+  } else {
+    const continuum::PistonRingSystem system(c.parameters, *c.friction);
+    r.summary = continuum::summarise(system, r.pack);
+  }
+  // Wear rows on the common grid: each ring's row of its last own sample at or before the grid time.
+  for (std::size_t k = 0; k < c.rings.size(); ++k) {
+    const auto &samples = r.rings[k].samples;
+    std::size_t j = 0;
+    for (const auto &g : r.grid[k]) {
+      while (j + 1 < samples.size() && samples[j + 1].t <= g.t) ++j;
+      out.passes[k].rows.push_back(own_rows[k][j]);
+    }
+  }
+  return out;
+}
+
 std::string pack_csv_text(const PistonRingCase &c, const PackRun &run, const std::vector<WearPass> &passes) {
   std::string text =
       "t_s,crank_angle_deg,piston_position_m,piston_velocity_m_s,speed_m_s,friction_force_N,land_force_N,"
@@ -439,13 +587,19 @@ int run(const Options &o, const PlotRunner &plot) {
   const PistonRingCase c = read_piston_ring_case(o.case_path, o.law_path);
   const auto &p = c.parameters;
   const bool pack = c.rings.size() > 1;
-  const PackRun main = run_pack(c, *c.friction);
-  announce_large_wear_pass(c, main.pack.size() * c.rings.size());
+  const auto *law = c.friction->state_law();
   std::vector<continuum::RingLinerWear> wear;
   wear.reserve(c.rings.size());
   for (const auto &ring : c.rings) wear.emplace_back(ring.wear_settings, *c.archard);
   for (std::size_t k = 1; k < wear.size(); ++k) wear[k].share_liner(wear.front());
-  const std::vector<WearPass> passes = run_wear(wear, main.grid, c.vtk_times, c.rings);
+  std::optional<StateLawPack> coupled;
+  if (law) {
+    for (auto &w : wear) w.attach_state_law(law->law, law->policy);
+    coupled = run_pack_state_law(c, wear);
+  }
+  const PackRun main = law ? coupled->run : run_pack(c, *c.friction);
+  if (!law) announce_large_wear_pass(c, main.pack.size() * c.rings.size());
+  const std::vector<WearPass> passes = law ? coupled->passes : run_wear(wear, main.grid, c.vtk_times, c.rings);
 
   struct SweepRow {
     double mu0;
@@ -467,11 +621,11 @@ int run(const Options &o, const PlotRunner &plot) {
     written.push_back("piston_ring.csv");
     for (std::size_t k = 0; k < c.rings.size(); ++k) {
       const std::string name = "piston_ring_" + c.rings[k].name + ".csv";
-      out.write(name, csv_text(main.grid[k], passes[k].rows));
+      out.write(name, csv_text(main.grid[k], passes[k].rows, law != nullptr));
       written.push_back(name);
     }
   } else {
-    out.write("piston_ring.csv", csv_text(main.grid.front(), passes.front().rows));
+    out.write("piston_ring.csv", csv_text(main.grid.front(), passes.front().rows, law != nullptr));
     written.push_back("piston_ring.csv");
   }
   {
@@ -617,8 +771,13 @@ int run(const Options &o, const PlotRunner &plot) {
                or_none(pressure_settling_time(p, main.grid.front(), passes.front().rows)));
   fmt::print("  sliding           {:.6g} m (ring A) in {} break-away and {} re-stick events\n",
              main.grid.front().back().distance, main.breakaways, main.resticks);
-  fmt::print("  wear volume       {:.6g} m^3 (ring{} {:.6g}, liner {:.6g}); Archard k W s / H = {:.6g} m^3\n",
-             ring_volume + liner_volume, pack ? "s" : "", ring_volume, liner_volume, archard);
+  if (law)
+    fmt::print("  wear volume       {:.6g} m^3 (ring{} {:.6g} by the law's wear_rate, liner {:.6g} by its "
+               "counterface_wear_rate)\n",
+               ring_volume + liner_volume, pack ? "s" : "", ring_volume, liner_volume);
+  else
+    fmt::print("  wear volume       {:.6g} m^3 (ring{} {:.6g}, liner {:.6g}); Archard k W s / H = {:.6g} m^3\n",
+               ring_volume + liner_volume, pack ? "s" : "", ring_volume, liner_volume, archard);
   fmt::print("  liner wear        max {:.6g} um at {:.6g} mm from TDC\n", 1e6 * *max_liner,
              1e3 * (p.crank.top_dead_centre() - wear.front().liner_cell_centre(max_j)));
   for (std::size_t k = 0; k < c.rings.size(); ++k)
@@ -626,6 +785,26 @@ int run(const Options &o, const PlotRunner &plot) {
                c.rings[k].name, 1e-6 * passes[k].initial_peak, 1e-6 * passes[k].rows.back().peak,
                1e3 * passes[k].rows.front().width, 1e3 * passes[k].rows.back().width);
   std::vector<std::string> warnings;
+  if (law) {
+    fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m); the ring face is the rough body, the "
+               "liner the counterface\n",
+               law->path, law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
+    for (std::size_t k = 0; k < c.rings.size(); ++k) {
+      const auto &rows = passes[k].rows;
+      fmt::print("  ring {} mu_eff     {:.6g} -> {:.6g} (pressure-weighted over the face cells); static {:.6g} ({}); "
+                 "h mean {:.4g} m, max {:.4g} m\n",
+                 c.rings[k].name, rows.front().mu_eff, rows.back().mu_eff, coupled->mu_static[k],
+                 law->mu_static ? "friction.mu_static" : "the law's peak at the initial pressures", rows.back().h_mean,
+                 rows.back().h_max);
+    }
+    fmt::print("  law lookups       {}\n", continuum::describe(coupled->use, *law->law));
+    if (coupled->use.below_pressure + coupled->use.above_pressure > 0)
+      warnings.push_back(fmt::format(
+          "WARNING: {} of {} state-law lookups were outside the law's pressure range and clamped to it ({} below "
+          "{:.4g} Pa, {} above {:.4g} Pa; friction.out_of_range = \"clamp\")",
+          coupled->use.below_pressure + coupled->use.above_pressure, coupled->use.lookups, coupled->use.below_pressure,
+          law->law->pressure().front(), coupled->use.above_pressure, law->law->pressure().back()));
+  }
   for (const auto &report : stress) print_line_stress(report, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);
   fmt::print("  wear updates      {} (step {:.4g} m = {} x stable_slip_step)\n", updates, wear.front().step(),

@@ -97,18 +97,29 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   const double damping_ratio = reader.non_negative("drive.damping_ratio", 0.0);
   p.coupling_damping = 2.0 * damping_ratio * std::sqrt(p.coupling_stiffness * p.inertia);
 
-  p.wear_coefficient = reader.non_negative("wear.coefficient", 0.0);
-  p.hardness = reader.positive("wear.hardness");
-  p.archard_form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "plain"
-                       ? tribo::ArchardForm::plain
-                       : tribo::ArchardForm::thesis;
+  const bool state_law = reader.has("friction.model") && reader.text("friction.model", "") == "state_law";
+  if (state_law) {
+    // One wear law: the state law's wear_rate wears the bore (doc/state_law_continuum.md).
+    for (const char *key : {"wear.coefficient", "wear.hardness", "wear.form"})
+      if (reader.has(key))
+        reader.fail(key, "not used with friction.model = \"state_law\" (the law's wear_rate wears the bore)");
+    p.wear_coefficient = 0.0;
+    p.hardness = 1.0;  // unused
+  } else {
+    p.wear_coefficient = reader.non_negative("wear.coefficient", 0.0);
+    p.hardness = reader.positive("wear.hardness");
+    p.archard_form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "plain"
+                         ? tribo::ArchardForm::plain
+                         : tribo::ArchardForm::thesis;
+  }
   c.run.wear_step_fraction = reader.positive("wear.step_fraction", 0.5);
   if (c.run.wear_step_fraction >= 1.0)
     reader.fail("wear.step_fraction", "must be below 1 (the explicit wear step is unstable above it), got " +
                                           CaseReader::format(c.run.wear_step_fraction));
   c.run.fixed_wear_step = reader.has("wear.fixed_step") ? reader.positive("wear.fixed_step") : 0.0;
 
-  c.friction_model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback"});
+  c.friction_model =
+      reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
   c.friction = read_friction(reader, law_path);
   c.alpha = c.friction->speed_coefficient();
   if (c.friction_model == "static_kinetic") {
@@ -132,6 +143,7 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   run.integrator = read_solver(reader, defaults);
 
   if (reader.has("sweep.mu0")) {
+    if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
     if (c.friction_model == "law_file")
       reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
     c.sweep_mu0 = reader.numbers("sweep.mu0");

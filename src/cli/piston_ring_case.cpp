@@ -225,7 +225,9 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   }
 
   c.friction = read_friction(reader, law_path);
-  c.friction_model = reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback"});
+  c.friction_model =
+      reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
+  const bool state_law = c.friction_model == "state_law";
 
   for (auto &ring : c.rings) ring.parameters.gas = p.gas;
 
@@ -254,14 +256,23 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   w.step_safety = reader.positive("wear.step_safety", 0.5);
   if (w.step_safety >= 1.0) reader.fail("wear.step_safety", "must be below 1 (the stability bound)");
   w.fixed_step = reader.non_negative("wear.fixed_step", 0.0);
-  const double hardness = reader.positive("wear.hardness");
-  const double hardness_ring = reader.positive("wear.hardness_ring", hardness);
-  const double hardness_liner = reader.positive("wear.hardness_liner", hardness);
-  w.ring_share = tribo::wear_share(hardness_ring, hardness_liner);
-  const auto form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "plain"
-                        ? tribo::ArchardForm::plain
-                        : tribo::ArchardForm::thesis;
-  c.archard.emplace(reader.non_negative("wear.k"), hardness, form);
+  if (state_law) {
+    // One wear law: the state law's wear_rate wears the ring face, its counterface_wear_rate the liner.
+    for (const char *key : {"wear.k", "wear.hardness", "wear.hardness_ring", "wear.hardness_liner", "wear.form"})
+      if (reader.has(key))
+        reader.fail(key, "not used with friction.model = \"state_law\" (the law's wear_rate wears the ring face, "
+                         "its counterface_wear_rate the liner)");
+    c.archard.emplace(0.0, 1.0, tribo::ArchardForm::plain);
+  } else {
+    const double hardness = reader.positive("wear.hardness");
+    const double hardness_ring = reader.positive("wear.hardness_ring", hardness);
+    const double hardness_liner = reader.positive("wear.hardness_liner", hardness);
+    w.ring_share = tribo::wear_share(hardness_ring, hardness_liner);
+    const auto form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "plain"
+                          ? tribo::ArchardForm::plain
+                          : tribo::ArchardForm::thesis;
+    c.archard.emplace(reader.non_negative("wear.k"), hardness, form);
+  }
 
   // Run.
   auto &run = c.run;
@@ -285,7 +296,13 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   if (c.circumferential_points < 3 || c.circumferential_points > 4096)
     reader.fail("output.circumferential_points", "must lie in [3, 4096]");
   double mu_static_max = c.friction->static_coefficient();
+  if (const auto *law = c.friction->state_law()) {  // the held value is set at run time: bound it by the law
+    for (const auto &row : law->law->table(coupling::StateField::MuBody).mean)
+      for (double mu : row) mu_static_max = std::max(mu_static_max, mu);
+    if (law->mu_static) mu_static_max = std::max(mu_static_max, *law->mu_static);
+  }
   if (reader.has("sweep.mu0")) {
+    if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
     c.sweep_mu0 = reader.numbers("sweep.mu0");
     if (c.friction_model == "law_file")
       reader.fail("sweep.mu0", "needs friction.model constant, static_kinetic or feedback, not 'law_file'");

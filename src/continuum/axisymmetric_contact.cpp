@@ -240,6 +240,15 @@ bool PinWear::step(double distance) {
   return resolve();
 }
 
+bool PinWear::apply(const std::vector<double> &increment, double distance) {
+  require(increment.size() == depth_.size(), "wear increment size must equal the ring count");
+  require(std::isfinite(distance) && distance >= 0.0, "wear step must be >= 0");
+  for (int i = 0; i < p_.rings; ++i) depth_[i] += increment[i];
+  slid_ += distance;
+  ++steps_;
+  return resolve();
+}
+
 double PinWear::stable_step() {
   return p_.step_safety * wear_.stable_slip_step(contact_.active_stiffness());
 }
@@ -277,6 +286,15 @@ void DiskTrackWear::slide(double load, double distance, double contact_width) {
   require(std::isfinite(distance) && distance >= 0.0, "disk slide distance must be >= 0");
   require(std::isfinite(contact_width) && contact_width >= 0.0, "disk contact width must be >= 0");
   volume_ += wear_.volume(load, distance);
+  slid_ += distance;
+  width_ = std::max(width_, contact_width);
+}
+
+void DiskTrackWear::slide_volume(double volume, double distance, double contact_width) {
+  require(std::isfinite(volume) && volume >= 0.0, "disk worn volume must be >= 0");
+  require(std::isfinite(distance) && distance >= 0.0, "disk slide distance must be >= 0");
+  require(std::isfinite(contact_width) && contact_width >= 0.0, "disk contact width must be >= 0");
+  volume_ += volume;
   slid_ += distance;
   width_ = std::max(width_, contact_width);
 }

@@ -102,6 +102,10 @@ class PinWear {
   bool advance(double distance);
   // One explicit step of the given size, no bound (for tests of the bound).
   bool step(double distance);
+  // One step with depth increments from outside (the state law's per-node dh_i over `distance`, which replace
+  // the Archard rate): depth += increment, re-solve. Returns false (see message()) if the contact fails.
+  bool apply(const std::vector<double> &increment, double distance);
+  double contact_stiffness() { return contact_.active_stiffness(); }  // Pa/m on the current active set
 
   const ContactSolution &contact() const { return solution_; }
   const std::vector<double> &wear_depth() const { return depth_; }
@@ -142,6 +146,8 @@ class DiskTrackWear {
 
   // Slides `distance` (>= 0) under the normal force `load` through a contact `contact_width` wide (m).
   void slide(double load, double distance, double contact_width);
+  // The same with the worn volume given (the state law's counterface_wear_rate summed over the nodes).
+  void slide_volume(double volume, double distance, double contact_width);
 
   double volume() const { return volume_; }           // m^3
   double slid() const { return slid_; }               // m

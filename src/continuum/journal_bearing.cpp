@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace runin::continuum {
 namespace {
@@ -113,8 +114,14 @@ struct JournalBearingHooks : StickSlipHooksBase {
   const double radius;
   std::vector<Surface> &surfaces;
   JournalBearingReport &report;
-  const double wear_step;
+  double wear_step;
   double next_wear;
+  // State law (empty otherwise): per half the node states, the held kinetic and static coefficients, the shaft's
+  // worn volume; `changed` asks the loop for a restart after an update at an output sample.
+  std::vector<NodeStateLaw> laws;
+  std::vector<double> mu_kin, mu_stat, counterface_volume;
+  double fixed_wear_step = 0.0, wear_fraction = 0.5;
+  bool changed = false;
   const JournalBearingObserver &observer;
   const JournalBearingFrameObserver &frames;
   std::vector<double> frame_times;
@@ -136,11 +143,79 @@ struct JournalBearingHooks : StickSlipHooksBase {
   }
   std::size_t halves() const { return surfaces.size(); }
   double half_static_limit(const double *y, std::size_t h) const {
+    if (!laws.empty()) return mu_stat[h] * surfaces[h].normal_force * radius;
     return friction.static_coefficient(y[3 + h]) * surfaces[h].normal_force * radius;
   }
   double half_slip_torque(const double *y, int dir, std::size_t h) const {
+    if (!laws.empty())
+      return dir * (mu_kin[h] + friction.speed_coefficient() * std::abs(radius * y[1])) * surfaces[h].normal_force *
+             radius;
     return dir * friction.kinetic(y[2], radius * y[1], y[3 + h]) * surfaces[h].normal_force * radius;
   }
+
+  // --- state law ---
+  std::vector<double> node_areas() const {
+    return std::vector<double>(static_cast<std::size_t>(system.contact().nodes()),
+                               system.contact().panel_length() * p.bore.axial_width);
+  }
+  double law_stable_step() {  // 2 / (k_c max_i w_i/p_i) over the halves
+    double step = HUGE_VAL;
+    for (std::size_t h = 0; h < halves(); ++h)
+      step = std::min(step, laws[h].stable_contact_step(surfaces[h].contact.pressure,
+                                                        system.contact().contact_stiffness_per_area(), 1.0));
+    return step;
+  }
+  double law_wear_step() { return fixed_wear_step > 0.0 ? fixed_wear_step : wear_fraction * law_stable_step(); }
+  void set_held() {  // the shared friction's held values: normal-force-weighted, for the summary and mu_law
+    auto *held = friction.state_law();
+    double n = 0.0, kin = 0.0, stat = 0.0;
+    for (std::size_t h = 0; h < halves(); ++h) {
+      n += surfaces[h].normal_force;
+      kin += mu_kin[h] * surfaces[h].normal_force;
+      stat += mu_stat[h] * surfaces[h].normal_force;
+    }
+    held->held_kinetic = n > 0.0 ? kin / n : 0.0;
+    held->held_static = n > 0.0 ? stat / n : 0.0;
+  }
+  void start_law(double fraction, double fixed) {
+    const auto *held = friction.state_law();
+    wear_fraction = fraction;
+    fixed_wear_step = fixed;
+    const auto area = node_areas();
+    for (std::size_t h = 0; h < halves(); ++h) {
+      laws.emplace_back(held->law, held->policy, area.size());
+      mu_stat.push_back(held->mu_static ? *held->mu_static : laws[h].peak_mu(surfaces[h].contact.pressure, area));
+      mu_kin.push_back(laws[h].mu_effective(surfaces[h].contact.pressure, area));
+      counterface_volume.push_back(0.0);
+    }
+    set_held();
+    report.stable_wear_step = law_stable_step();
+    wear_step = law_wear_step();
+    next_wear = wear_step;
+  }
+  // Advances every half to the sliding distance `distance`: node states and bore by the law, re-solve, mu_eff.
+  bool law_update(double distance, std::string &message) {
+    const auto area = node_areas();
+    for (std::size_t h = 0; h < halves(); ++h) {
+      Surface &surface = surfaces[h];
+      const double ds = distance - surface.distance_at_update;
+      if (!(ds > 0.0)) continue;
+      const auto inc = laws[h].advance(surface.contact.pressure, ds);
+      for (std::size_t i = 0; i < surface.wear.size(); ++i) {
+        surface.wear[i] += inc.body[i];
+        surface.committed_volume += inc.body[i] * area[i];
+        counterface_volume[h] += inc.counterface[i] * area[i];
+      }
+      surface.distance_at_update = distance;
+      if (!solve_contact(system, surface, message, static_cast<int>(h))) return false;
+      mu_kin[h] = laws[h].mu_effective(surface.contact.pressure, area);
+    }
+    set_held();
+    changed = true;
+    next_wear = distance + law_wear_step();
+    return true;
+  }
+  bool refresh(StickSlipState &) { return std::exchange(changed, false); }
   double static_limit(const double *y) const {
     double sum = 0.0;
     for (std::size_t h = 0; h < halves(); ++h) sum += half_static_limit(y, h);
@@ -178,6 +253,7 @@ struct JournalBearingHooks : StickSlipHooksBase {
   bool on_extra_roots(StickSlipState &s, const std::vector<int> &found, std::string &message) {
     if (s.state != ContactState::Slip || found[1] == 0) return true;
     ++report.wear_updates;
+    if (!laws.empty()) return law_update(s.y[2], message);
     next_wear = s.y[2] + wear_step;
     for (std::size_t h = 0; h < halves(); ++h) {
       apply_wear(system, surfaces[h], s.y[2]);
@@ -229,6 +305,38 @@ struct JournalBearingHooks : StickSlipHooksBase {
     s.friction_force = s.friction_torque / radius;
     s.mu = s.friction_force / s.normal_force;
     s.mu_law = friction.kinetic(y[2], 0.0, y[3]);
+    if (!laws.empty()) {
+      // Operator splitting: the sample's friction is the one held over the interval that ends here; then the
+      // node states and the bore advance by the distance slid in it and the next interval gets the new mu_eff.
+      if (y[2] > surfaces[0].distance_at_update) {
+        std::string message;
+        ++report.wear_updates;
+        if (!law_update(y[2], message)) throw std::runtime_error("journal bearing: " + message);
+      }
+      s.wear_volume = 0.0;
+      double n = 0.0;
+      for (std::size_t h = 0; h < halves(); ++h) {
+        JournalBearingHalfSample &half = s.half[h];
+        const auto &state = laws[h].state();
+        const auto &pressure = surfaces[h].contact.pressure;
+        half.wear_volume = surfaces[h].committed_volume;
+        half.mu_eff = mu_kin[h];
+        half.counterface_volume = counterface_volume[h];
+        int loaded_nodes = 0;
+        for (std::size_t i = 0; i < state.size(); ++i) {
+          half.h_max = std::max(half.h_max, state[i]);
+          if (pressure[i] > 0.0) {
+            half.h_mean += state[i];
+            ++loaded_nodes;
+          }
+        }
+        half.h_mean = loaded_nodes ? half.h_mean / loaded_nodes : 0.0;
+        s.wear_volume += half.wear_volume;
+        s.mu_eff += mu_kin[h] * surfaces[h].normal_force;
+        n += surfaces[h].normal_force;
+      }
+      s.mu_eff = n > 0.0 ? s.mu_eff / n : 0.0;
+    }
     s.roughness = y[3];
     s.sliding_speed = radius * s.journal_speed;
     s.distance = y[2];
@@ -242,6 +350,7 @@ struct JournalBearingHooks : StickSlipHooksBase {
         std::vector<double> pressure = surface.contact.pressure, depth = surface.wear;
         const double pending = y[2] - surface.distance_at_update;
         for (std::size_t i = 0; i < depth.size(); ++i) depth[i] += system.wear_law().depth_rate(pressure[i]) * pending;
+        if (!laws.empty()) (h == 0 ? f.mu : f.upper_mu) = laws[h].node_mu(pressure);
         (h == 0 ? f.pressure : f.upper_pressure) = std::move(pressure);
         (h == 0 ? f.wear_depth : f.upper_wear_depth) = std::move(depth);
       }
@@ -277,6 +386,7 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
   for (const auto &surface : surfaces) report.initial_pressure.push_back(surface.contact.pressure);
   const StickSlipGrid grid{run.t_end, run.output_interval, p.ramp_time, run.max_events};
   JournalBearingHooks hooks(system, surfaces, report, wear_step, wearing, observer, frames, run);
+  if (system.friction().state_law()) hooks.start_law(run.wear_step_fraction, run.fixed_wear_step);
   StickSlipLoop<JournalBearingHooks> loop(hooks, grid, integrator, std::move(start), report);
 
   const auto &s = loop.state();
@@ -286,6 +396,17 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
   }
   loop.run();
   for (const auto &surface : surfaces) report.final_pressure.push_back(surface.contact.pressure);
+  if (!hooks.laws.empty()) {
+    coupling::RangeUse use;
+    for (const auto &law : hooks.laws) {
+      use.lookups += law.use().lookups;
+      use.below_pressure += law.use().below_pressure;
+      use.above_pressure += law.use().above_pressure;
+      use.beyond_depth += law.use().beyond_depth;
+    }
+    report.range_use = use;
+    report.state_law_static = system.friction().state_law()->held_static;
+  }
   return report;
 }
 

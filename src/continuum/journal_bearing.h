@@ -14,15 +14,23 @@
 // updates the pressure is frozen; a wear update (root s = s_next) applies Archard wear
 // dw_i = (k/H) p_i ds to the bore and re-solves the conformal contact (conformal_contact.h).
 // The wear step ds is a fraction of ArchardWear::stable_slip_step(k_c), or fixed if asked.
+// With friction.model = "state_law" (doc/state_law_continuum.md) each node of each half carries its worn depth
+// h_i: a half's friction is mu_eff,h = sum_i mu(p_i, h_i) p_i / sum_i p_i (+ alpha V), its static limit the law's
+// peak (or friction.mu_static), and a wear update advances h_i by the law's wear_rate (the same dh_i wears the
+// bore; the Archard k/H is not used) and the shaft by its counterface_wear_rate (bookkeeping volume). Updates
+// happen at the wear-step roots (step = fraction x 2 / (k_c max w/p), or fixed) and at every output sample
+// (operator splitting at the output interval), each followed by a contact re-solve and a CVODE restart.
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "continuum/conformal_contact.h"
 #include "continuum/contact_stress.h"
 #include "continuum/cvode_integrator.h"
+#include "continuum/node_state_law.h"
 #include "continuum/stick_slip_loop.h"  // ContactState, SolveStatus
 #include "continuum/sliding_friction.h"
 #include "tribo/wear.h"
@@ -63,6 +71,9 @@ struct JournalBearingHalfSample {
   double wear_volume = 0.0;       // m^3, this half's bore
   double contact_half_angle = 0.0;  // rad
   double peak_pressure = 0.0, mean_pressure = 0.0;  // Pa
+  // state law only: mu_eff of this half (after the update at this sample), mean (over loaded nodes) and largest
+  // worn depth h, the shaft's worn volume under this half (counterface_wear_rate)
+  double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0, counterface_volume = 0.0;
 };
 
 // Totals over the bearing halves unless noted.
@@ -83,6 +94,7 @@ struct JournalBearingSample {
   double peak_pressure = 0.0, mean_pressure = 0.0;  // Pa; peak: largest of the halves, mean: over all loaded panels
   ContactState state = ContactState::Stick;
   int halves = 1;
+  double mu_eff = 0.0;            // state law: normal-force-weighted mu_eff of the halves
   JournalBearingHalfSample half[2];  // [0] lower, [1] upper (only with halves = 2)
 };
 
@@ -90,6 +102,7 @@ struct JournalBearingFrame {
   double t = 0.0;
   std::vector<double> pressure, wear_depth;  // per arc node, lower half
   std::vector<double> upper_pressure, upper_wear_depth;  // upper half (empty with one half)
+  std::vector<double> mu, upper_mu;  // state law: mu(p_i, h_i) per node (h_i = wear depth); empty otherwise
 };
 
 struct JournalBearingRun {
@@ -111,6 +124,8 @@ struct JournalBearingReport : SolveReport {
   // Per half (lower, upper): the contact pressure (Pa per arc node) of the unworn bore at the start and the
   // last solved one (worn bore) at the end, for the subsurface stress.
   std::vector<std::vector<double>> initial_pressure, final_pressure;
+  std::optional<coupling::RangeUse> range_use;  // state law: lookups of all halves
+  double state_law_static = 0.0;                // state law: normal-force-weighted static coefficient
 };
 
 class JournalBearingSystem {

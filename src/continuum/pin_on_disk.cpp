@@ -103,7 +103,10 @@ PinOnDiskSample PinOnDiskSystem::sample(double t, const double *y, ContactState 
 
 namespace {
 struct PinOnDiskHooks : SystemHooks<PinOnDiskSystem, PinOnDiskObserver> {
-  using SystemHooks::SystemHooks;
+  PinOnDiskHooks(const PinOnDiskSystem &sys, const PinOnDiskObserver &obs, const PinOnDiskRefresh &ref)
+      : SystemHooks(sys, obs), refresh_fn(ref) {}
+  const PinOnDiskRefresh &refresh_fn;
+  bool refresh(StickSlipState &) { return refresh_fn ? refresh_fn() : false; }
   static constexpr std::size_t speed_index = 0;
   double breakaway_function(double t, const double *y) const { return system.breakaway_function(t, y); }
   int breakaway_direction(double t, const double *) const {
@@ -113,7 +116,8 @@ struct PinOnDiskHooks : SystemHooks<PinOnDiskSystem, PinOnDiskObserver> {
 };
 }  // namespace
 
-SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, const PinOnDiskObserver &observer) {
+SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, const PinOnDiskObserver &observer,
+                     const PinOnDiskRefresh &refresh) {
   run.validate();
   const double radius = system.parameters().track_radius;
   const bool speed_drive = system.parameters().drive == PinDrive::Speed;
@@ -126,7 +130,7 @@ SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, con
   start.direction = sign_of(run.initial_speed);
   // The speed drive slides throughout: no events.
   const StickSlipGrid grid{run.t_end, run.output_interval, system.parameters().ramp_time, run.max_events, !speed_drive};
-  PinOnDiskHooks hooks(system, observer);
+  PinOnDiskHooks hooks(system, observer, refresh);
   StickSlipLoop<PinOnDiskHooks> loop(hooks, grid, integrator, std::move(start), report);
 
   // Already past the static limit at the start (step loading), or no static friction at all

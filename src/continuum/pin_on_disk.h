@@ -90,10 +90,15 @@ struct PinOnDiskRun {
 };
 
 using PinOnDiskObserver = std::function<void(const PinOnDiskSample &)>;
+// Called after each output-grid sample (after the observer): true when the friction was changed there (the
+// state law's operator splitting, doc/state_law_continuum.md); CVODE then restarts from that sample.
+using PinOnDiskRefresh = std::function<bool()>;
 
-// The stepper: CVODE per contact phase, restarted at each event and at the ramp end.
-// Numerical failure is reported in the status, bad settings throw std::invalid_argument.
-SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, const PinOnDiskObserver &observer);
+// The stepper: CVODE per contact phase, restarted at each event, at the ramp end and where `refresh` says.
+// Numerical failure is reported in the status, bad settings throw std::invalid_argument; an exception from the
+// observer or refresh propagates.
+SolveReport simulate(const PinOnDiskSystem &system, const PinOnDiskRun &run, const PinOnDiskObserver &observer,
+                     const PinOnDiskRefresh &refresh = {});
 
 // Thesis eq. 4.10/4.11: speed under a constant torque T with mu = mu0 + alpha V,
 // sliding from V0: V(t) = V_ss + (V0 - V_ss) exp(-alpha W t / m),

@@ -182,7 +182,10 @@ PistonRingSample PistonRingSystem::sample(double t, const double *y, ContactStat
 
 namespace {
 struct PistonRingHooks : SystemHooks<PistonRingSystem, PistonRingObserver> {
-  using SystemHooks::SystemHooks;
+  PistonRingHooks(const PistonRingSystem &sys, const PistonRingObserver &obs, const PistonRingRefresh &ref)
+      : SystemHooks(sys, obs), refresh_fn(ref) {}
+  const PistonRingRefresh &refresh_fn;
+  bool refresh(StickSlipState &) { return refresh_fn ? refresh_fn() : false; }
   static constexpr std::size_t speed_index = 1;
   // The land force with the ring at rest (u = 0).
   double stick_force(double t, const double *y) const {
@@ -225,14 +228,15 @@ LandStiffness land_stiffness(const RingLandGeometry &g) {
   return k;
 }
 
-SolveReport simulate(const PistonRingSystem &system, const PistonRingRun &run, const PistonRingObserver &observer) {
+SolveReport simulate(const PistonRingSystem &system, const PistonRingRun &run, const PistonRingObserver &observer,
+                     const PistonRingRefresh &refresh) {
   run.validate();
   SolveReport report;
   CvodeIntegrator integrator(PistonRingSystem::state_size, run.integrator);
   StickSlipState start;
   start.y = {0.0, 0.0, 0.0, system.friction().initial_state()};
   StickSlipGrid grid{run.t_end, run.output_interval, system.motion_kink(), run.max_events};
-  PistonRingHooks hooks(system, observer);
+  PistonRingHooks hooks(system, observer, refresh);
   StickSlipLoop<PistonRingHooks> loop(hooks, grid, integrator, std::move(start), report);
 
   // Already past the static limit at the start (the land damper sees the piston's start speed)?

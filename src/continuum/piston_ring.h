@@ -146,10 +146,14 @@ struct PistonRingRun {
 };
 
 using PistonRingObserver = std::function<void(const PistonRingSample &)>;
+// Called after each output-grid sample: true when the friction changed there (the state law's operator
+// splitting, doc/state_law_continuum.md); CVODE then restarts from that sample.
+using PistonRingRefresh = std::function<bool()>;
 
 // CVODE per contact phase, restarted at each event and at the ramp end. Numerical failure is
 // reported in the status; bad settings throw std::invalid_argument.
-SolveReport simulate(const PistonRingSystem &system, const PistonRingRun &run, const PistonRingObserver &observer);
+SolveReport simulate(const PistonRingSystem &system, const PistonRingRun &run, const PistonRingObserver &observer,
+                     const PistonRingRefresh &refresh = {});
 
 struct PistonRingSummary {
   double peak_friction_force = 0.0, peak_time = 0.0;  // largest |friction_force|

@@ -74,7 +74,26 @@ double RingLinerWear::liner_cell_centre(int j) const { return s_.liner_begin + (
 
 double RingLinerWear::step() const {
   if (s_.fixed_step > 0.0) return s_.fixed_step;
+  if (law_) return law_factor_ > 0.0 ? s_.step_safety * 2.0 / (stiffness_ * law_factor_) : HUGE_VAL;
   return s_.step_safety * wear_.stable_slip_step(stiffness_);
+}
+
+void RingLinerWear::attach_state_law(std::shared_ptr<const coupling::StateLaw> law, coupling::OutOfRange policy) {
+  const auto &w = law->table(coupling::StateField::WearRate).mean;
+  law_factor_ = 0.0;
+  for (std::size_t i = 0; i < w.size(); ++i)
+    for (double x : w[i]) law_factor_ = std::max(law_factor_, x / law->pressure()[i]);
+  law_.emplace(std::move(law), policy, static_cast<std::size_t>(s_.ring_cells));
+}
+
+double RingLinerWear::mu_effective(double x_ring, double load) {
+  const auto contact = pressure(x_ring, load);
+  return law_->mu_effective(contact.pressure, std::vector<double>(contact.pressure.size(), dz_));
+}
+
+double RingLinerWear::peak_mu(double x_ring, double load) const {
+  const auto contact = pressure(x_ring, load);
+  return law_->peak_mu(contact.pressure, std::vector<double>(contact.pressure.size(), dz_));
 }
 
 template <typename Visit>
@@ -167,9 +186,17 @@ std::vector<double> RingLinerWear::liner_pressure(double x_ring, double load) co
 
 void RingLinerWear::update(double x_ring, double load, double ds) {
   const ContactPressure contact = pressure(x_ring, load);
-  const double ring_share = s_.ring_share, liner_share = 1.0 - s_.ring_share;
-  std::vector<double> depth(contact.pressure.size());
-  for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = wear_.depth_rate(contact.pressure[i]) * ds;
+  double ring_share = s_.ring_share, liner_share = 1.0 - s_.ring_share;
+  std::vector<double> depth(contact.pressure.size()), liner_depth(contact.pressure.size());
+  if (law_) {  // ring face by the law's wear rate, liner by its counterface rate
+    auto inc = law_->advance(contact.pressure, ds);
+    depth = std::move(inc.body);
+    liner_depth = std::move(inc.counterface);
+    ring_share = liner_share = 1.0;
+  } else {
+    for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = wear_.depth_rate(contact.pressure[i]) * ds;
+    liner_depth = depth;
+  }
   double ring_deepest = 0.0, liner_deepest = 0.0;
   for (std::size_t i = 0; i < depth.size(); ++i) {
     ring_wear_[i] += ring_share * depth[i];
@@ -177,13 +204,13 @@ void RingLinerWear::update(double x_ring, double load, double ds) {
   }
   for_each_overlap(x_ring, [&](int i, int j, double overlap) {
     auto &liner = *liner_wear_;
-    liner[j] += liner_share * depth[i] * overlap / dx_;
+    liner[j] += liner_share * liner_depth[i] * overlap / dx_;
     liner_deepest = std::max(liner_deepest, liner[j]);
   });
   double added = 0.0;
-  for (std::size_t i = 0; i < depth.size(); ++i) added += depth[i];
+  for (std::size_t i = 0; i < depth.size(); ++i) added += liner_depth[i];
   liner_volume_ += kPi * s_.bore * dz_ * liner_share * added;
-  archard_volume_ += wear_.volume(load, ds);
+  if (!law_) archard_volume_ += wear_.volume(load, ds);
   ++updates_;
   char buffer[200];
   if (s_.ring_thickness > 0.0 && ring_deepest > s_.ring_thickness) {

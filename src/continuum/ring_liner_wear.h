@@ -22,6 +22,7 @@
 
 #include "continuum/contact_stress.h"
 #include "continuum/half_plane_contact.h"
+#include "continuum/node_state_law.h"
 #include "tribo/wear.h"
 
 namespace runin::continuum {
@@ -76,6 +77,17 @@ class RingLinerWear {
   // Stiffness per area that bounds the explicit wear step: k_c (Winkler) or 1 / lambda_min(K).
   double contact_stiffness() const { return stiffness_; }
 
+  // State law (doc/state_law_continuum.md): each ring cell i carries h_i (the ring face is the rough body);
+  // an update wears the face by the law's dh_i = wear_rate(p_i, h_i) ds (the Archard k/H and ring_share are not
+  // used) and the liner under cell i by the counterface's dc_i (counterface_wear_rate), spread over the
+  // overlapped liner cells as the Archard share is. The step is safety * 2 / (k_c max w/p over the law's grid).
+  void attach_state_law(std::shared_ptr<const coupling::StateLaw> law, coupling::OutOfRange policy);
+  NodeStateLaw *state_law() { return law_ ? &*law_ : nullptr; }
+  const NodeStateLaw *state_law() const { return law_ ? &*law_ : nullptr; }
+  // mu_eff = sum mu(p_i, h_i) p_i / sum p_i of the ring at x_ring under `load` (cells of equal area).
+  double mu_effective(double x_ring, double load);
+  double peak_mu(double x_ring, double load) const;  // the law's peak at these pressures (static limit)
+
   // Contact of the ring centred at x_ring under load W (Winkler: exact water filling; half-plane:
   // active-set BEM, std::runtime_error if it does not converge).
   ContactPressure pressure(double x_ring, double load) const;
@@ -118,6 +130,8 @@ class RingLinerWear {
   long updates_ = 0;
   RingLinerWearStatus status_ = RingLinerWearStatus::Ok;
   std::string message_;
+  std::optional<NodeStateLaw> law_;
+  double law_factor_ = 0.0;  // max over the law's grid of wear_rate / p, 1/Pa
 };
 
 // Subsurface stress below a ring face contact (doc/subsurface_stress.md), plane strain (the contact is a line

@@ -52,6 +52,16 @@ SlidingFriction SlidingFriction::from_law(const coupling::FrictionLaw &law, coup
                              "), distance_scale = " + format(distance_scale) + ", + " + format(alpha) + " V");
 }
 
+SlidingFriction SlidingFriction::state_law(std::shared_ptr<StateLawFriction> state, double alpha) {
+  require(state && state->law, "state law missing");
+  SlidingFriction f(0.0, [held = state](double) { return held->held_kinetic; }, alpha,
+                    "state law " + state->path + " per contact node (mu_eff pressure-weighted, out_of_range = " +
+                        (state->policy == coupling::OutOfRange::Clamp ? "clamp" : "error") + "), + " +
+                        format(alpha) + " V");
+  f.state_law_ = std::move(state);
+  return f;
+}
+
 SlidingFriction SlidingFriction::feedback(const tribo::FeedbackModel &model, double initial_roughness,
                                           bool per_distance, double alpha) {
   require(std::isfinite(initial_roughness) && initial_roughness > 0.0, "R0 must be > 0");

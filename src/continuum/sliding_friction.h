@@ -17,9 +17,23 @@
 #include <optional>
 
 #include "coupling/friction_law.h"
+#include "coupling/state_law.h"
 #include "tribo/feedback.h"
 
 namespace runin::continuum {
+
+// The homogenised state law on the contact nodes (issue 11, doc/state_law_continuum.md). The machine element
+// owns the per-node states (NodeStateLaw) and, by operator splitting at the output interval, sets the held
+// coefficients the ODE sees: kinetic mu_eff (+ alpha V) and the static limit. Shared by all copies of the
+// SlidingFriction made from it.
+struct StateLawFriction {
+  std::shared_ptr<const coupling::StateLaw> law;
+  coupling::OutOfRange policy = coupling::OutOfRange::Error;
+  std::string path;                 // friction.law, resolved
+  std::optional<double> mu_static;  // friction.mu_static; absent: the law's peak at the initial pressures
+  double held_static = 0.0;         // set by the element before the run
+  double held_kinetic = 0.0;        // mu_eff, set by the element after each output interval
+};
 
 class SlidingFriction {
  public:
@@ -32,6 +46,11 @@ class SlidingFriction {
   static SlidingFriction from_law(const coupling::FrictionLaw &law, coupling::FrictionLaw::Branch branch,
                                   double distance_scale, double alpha = 0.0);
 
+  // State law on the nodes: static = state->held_static, kinetic = state->held_kinetic + alpha V, both set by
+  // the element's splitting loop. No distance_scale: the law's state is the worn depth, not the distance.
+  static SlidingFriction state_law(std::shared_ptr<StateLawFriction> state, double alpha = 0.0);
+  StateLawFriction *state_law() const { return state_law_.get(); }
+
   // Roughness-feedback friction; `per_distance` integrates R along the sliding distance
   // (frozen in stick), otherwise along time.
   static SlidingFriction feedback(const tribo::FeedbackModel &model, double initial_roughness, bool per_distance,
@@ -43,7 +62,7 @@ class SlidingFriction {
   static double feedback_roughness_for(const tribo::FeedbackModel &model, double mu0);
 
   // Static coefficient at the initial state (feedback: mu(R0)).
-  double static_coefficient() const { return mu_static_; }
+  double static_coefficient() const { return state_law_ ? state_law_->held_static : mu_static_; }
   double speed_coefficient() const { return alpha_; }
   double kinetic(double s, double speed) const { return mu_kinetic_(s) + alpha_ * std::abs(speed); }
   const std::string &description() const { return description_; }
@@ -54,7 +73,9 @@ class SlidingFriction {
   double initial_state() const { return feedback_ ? r0_ : 0.0; }
   bool state_per_distance() const { return per_distance_; }
   const tribo::FeedbackModel *feedback_model() const { return feedback_.get(); }
-  double static_coefficient(double state) const { return feedback_ ? feedback_->mu(state) : mu_static_; }
+  double static_coefficient(double state) const {
+    return feedback_ ? feedback_->mu(state) : static_coefficient();
+  }
   double kinetic(double s, double speed, double state) const {
     return feedback_ ? feedback_->mu(state) + alpha_ * std::abs(speed) : kinetic(s, speed);
   }
@@ -74,6 +95,7 @@ class SlidingFriction {
   double alpha_;
   std::string description_;
   std::shared_ptr<const tribo::FeedbackModel> feedback_;
+  std::shared_ptr<StateLawFriction> state_law_;
   double r0_ = 0.0;
   bool per_distance_ = true;
 };

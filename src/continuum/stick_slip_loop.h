@@ -58,6 +58,9 @@ struct StickSlipHooksBase {
   std::vector<int> extra_root_directions(ContactState) const { return {}; }
   // Called when any extra root is found; false (with `message`) stops the run as a failure.
   bool on_extra_roots(StickSlipState &, const std::vector<int> &, std::string &) { return true; }
+  // Called after each output-grid sample has been emitted: true when the system changed there (operator
+  // splitting: the friction of the next interval was updated), so the integrator restarts from that sample.
+  bool refresh(StickSlipState &) { return false; }
 };
 
 // rhs and emit for a system class with rhs(t, y, dydt, state, direction) and
@@ -142,7 +145,9 @@ class StickSlipLoop {
         continue;
       }
       emit();
-      if (at_stop && kink_ahead) start_phase();  // restart at the kink instead of stepping across it
+      // a hook that changed the system (state law: mu_eff after the wear update) restarts CVODE from the sample
+      const bool changed = hooks_.refresh(s_);
+      if ((at_stop && kink_ahead) || changed) start_phase();  // restart at the kink instead of stepping across it
       if (!at_stop || grid_time <= stop + round_off) ++next_grid;  // the kink on an output time: one sample
     }
     report_.end_time = s_.t;

@@ -1,0 +1,135 @@
+#include "continuum/node_state_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <sstream>
+
+namespace runin::continuum {
+
+using coupling::OutOfRange;
+using coupling::StateField;
+
+NodeStateLaw::NodeStateLaw(std::shared_ptr<const coupling::StateLaw> law, OutOfRange policy, std::size_t nodes)
+    : law_(std::move(law)), policy_(policy), h_(nodes, 0.0), c_(nodes, 0.0) {
+  if (!law_) throw std::invalid_argument("node state law: no law");
+  // Sub-step bound from the wear-rate table: its steepest slope along h (stiffness of dh/ds = w(h)) and its
+  // finest h spacing over its largest rate.
+  const auto &depth = law_->worn_depth();
+  const auto &w = law_->table(StateField::WearRate).mean;
+  double slope = 0.0, w_max = 0.0, dh_min = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j + 1 < depth.size(); ++j) dh_min = std::min(dh_min, depth[j + 1] - depth[j]);
+  for (const auto &row : w)
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      w_max = std::max(w_max, row[j]);
+      if (j + 1 < row.size()) slope = std::max(slope, std::abs(row[j + 1] - row[j]) / (depth[j + 1] - depth[j]));
+    }
+  substep_ = std::numeric_limits<double>::infinity();
+  if (slope > 0.0) substep_ = std::min(substep_, 0.5 / slope);
+  if (w_max > 0.0) substep_ = std::min(substep_, dh_min / w_max);
+}
+
+void NodeStateLaw::reset_state(std::vector<double> h) {
+  if (h.size() != h_.size()) throw std::invalid_argument("node state law: state size mismatch");
+  h_ = std::move(h);
+}
+
+coupling::StateLawValues NodeStateLaw::lookup(double p, double h) {
+  return law_->values(p, h, policy_, &use_);
+}
+
+double NodeStateLaw::mu_effective(const std::vector<double> &pressure, const std::vector<double> &area) {
+  if (pressure.size() != h_.size() || area.size() != h_.size())
+    throw std::invalid_argument("node state law: pressure/area size mismatch");
+  double weighted = 0.0, load = 0.0;
+  for (std::size_t i = 0; i < h_.size(); ++i) {
+    if (!(pressure[i] > 0.0)) continue;
+    const double f = pressure[i] * area[i];
+    weighted += lookup(pressure[i], h_[i]).mu_body * f;
+    load += f;
+  }
+  return load > 0.0 ? weighted / load : 0.0;
+}
+
+std::vector<double> NodeStateLaw::node_mu(const std::vector<double> &pressure) const {
+  if (pressure.size() != h_.size()) throw std::invalid_argument("node state law: pressure size mismatch");
+  std::vector<double> mu(h_.size(), 0.0);
+  for (std::size_t i = 0; i < h_.size(); ++i)
+    if (pressure[i] > 0.0) mu[i] = law_->values(pressure[i], h_[i], OutOfRange::Clamp).mu_body;
+  return mu;
+}
+
+double NodeStateLaw::peak_mu(const std::vector<double> &pressure, const std::vector<double> &area) const {
+  if (pressure.size() != h_.size() || area.size() != h_.size())
+    throw std::invalid_argument("node state law: pressure/area size mismatch");
+  double weighted = 0.0, load = 0.0;
+  for (std::size_t i = 0; i < h_.size(); ++i) {
+    if (!(pressure[i] > 0.0)) continue;
+    double peak = 0.0;
+    for (double h : law_->worn_depth())
+      peak = std::max(peak, law_->values(pressure[i], h, policy_).mu_body);  // Error policy throws here too
+    weighted += peak * pressure[i] * area[i];
+    load += pressure[i] * area[i];
+  }
+  return load > 0.0 ? weighted / load : 0.0;
+}
+
+NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressure, double ds) {
+  if (pressure.size() != h_.size()) throw std::invalid_argument("node state law: pressure size mismatch");
+  if (!(std::isfinite(ds) && ds >= 0.0)) throw std::invalid_argument("node state law: slid distance must be >= 0");
+  Increment inc;
+  inc.body.assign(h_.size(), 0.0);
+  inc.counterface.assign(h_.size(), 0.0);
+  if (ds == 0.0) return inc;
+  const double n_real = std::isfinite(substep_) ? std::ceil(ds / substep_) : 1.0;
+  if (n_real > 1e8) throw std::runtime_error("node state law: " + std::to_string(ds) + " m needs more than 1e8 sub-steps");
+  const int n = std::max(1, static_cast<int>(n_real));
+  const double step = ds / n;
+  inc.substeps = n;
+  for (std::size_t i = 0; i < h_.size(); ++i) {
+    const double p = pressure[i];
+    if (!(p > 0.0)) continue;
+    double h = h_[i], c = 0.0;
+    for (int k = 0; k < n; ++k) {
+      // Classic RK4 on dh/ds = w(p, h); the counterface depth is the same quadrature of its rate.
+      const auto v1 = lookup(p, h);
+      const auto v2 = lookup(p, h + 0.5 * step * v1.wear_rate);
+      const auto v3 = lookup(p, h + 0.5 * step * v2.wear_rate);
+      const auto v4 = lookup(p, h + step * v3.wear_rate);
+      h += step / 6.0 * (v1.wear_rate + 2.0 * v2.wear_rate + 2.0 * v3.wear_rate + v4.wear_rate);
+      c += step / 6.0 *
+           (v1.counterface_wear_rate + 2.0 * v2.counterface_wear_rate + 2.0 * v3.counterface_wear_rate +
+            v4.counterface_wear_rate);
+    }
+    inc.body[i] = std::max(h - h_[i], 0.0);  // rates are >= 0: never un-wears
+    inc.counterface[i] = std::max(c, 0.0);
+    h_[i] += inc.body[i];
+    c_[i] += inc.counterface[i];
+  }
+  return inc;
+}
+
+double NodeStateLaw::stable_contact_step(const std::vector<double> &pressure, double stiffness, double safety) {
+  if (pressure.size() != h_.size()) throw std::invalid_argument("node state law: pressure size mismatch");
+  double factor = 0.0;  // max w/p, 1/Pa
+  const double p_min = law_->pressure().front(), p_max = law_->pressure().back();
+  for (std::size_t i = 0; i < h_.size(); ++i)
+    if (pressure[i] > 0.0)  // a clamped node's rate does not follow p: its secant is taken at the grid edge
+      factor = std::max(factor, law_->values(pressure[i], h_[i], policy_).wear_rate /
+                                    std::clamp(pressure[i], p_min, p_max));
+  if (!(factor > 0.0) || !(stiffness > 0.0)) return std::numeric_limits<double>::infinity();
+  return safety * 2.0 / (stiffness * factor);
+}
+
+std::string describe(const coupling::RangeUse &use, const coupling::StateLaw &law) {
+  std::ostringstream out;
+  out.precision(4);
+  out << use.lookups << " lookups: " << use.below_pressure << " clamped below p = " << law.pressure().front()
+      << " Pa, " << use.above_pressure << " above p = " << law.pressure().back() << " Pa, " << use.beyond_depth
+      << " beyond the last worn depth " << law.worn_depth().back() << " m (held)";
+  return out.str();
+}
+
+}  // namespace runin::continuum

@@ -1,0 +1,77 @@
+// Per-node run-in state of a continuum contact driven by a homogenised state law (issue 11, doc/state_law_continuum.md).
+//
+// Each contact node i (a ring of the pin face, a node of a bearing half, a face cell of a piston ring) carries
+// its own surface state h_i, the mean worn depth of the rough body there, and reads the law at its own nominal
+// pressure p_i:
+//   mu_eff = sum_i mu(p_i, h_i) p_i A_i / sum_i p_i A_i       (nodes with p_i = 0 carry nothing: not looked up)
+//   dh_i/ds = wear_rate(p_i, h_i)                              (the rough body; the same dh_i wears the geometry)
+//   dc_i/ds = counterface_wear_rate(p_i, h_i)                  (the counter body's mean worn depth there)
+// advance() integrates dh_i/ds at the held pressures over a slid distance ds (classic RK4 per node, ds split
+// into sub-steps bounded by the law's own h-stiffness and h-grid spacing), so the update is stable and, the
+// law's rates being >= 0, monotone. The caller re-solves the contact pressure between calls: the bound on that
+// outer step (pressure-wear feedback) is stable_contact_step().
+//
+// Outside the law's pressure grid a lookup is an error (std::out_of_range naming the node's p and the grid) or,
+// with OutOfRange::Clamp, the nearest grid pressure; every lookup and every clamp is counted in use().
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "coupling/state_law.h"
+
+namespace runin::continuum {
+
+class NodeStateLaw {
+ public:
+  // `nodes` states, all h_i = 0 (unworn). Throws std::invalid_argument on a null law.
+  NodeStateLaw(std::shared_ptr<const coupling::StateLaw> law, coupling::OutOfRange policy, std::size_t nodes);
+
+  std::size_t size() const { return h_.size(); }
+  const std::vector<double> &state() const { return h_; }            // h_i, m
+  const std::vector<double> &counterface() const { return c_; }      // counter body's worn depth per node, m
+  const coupling::StateLaw &law() const { return *law_; }
+  coupling::OutOfRange policy() const { return policy_; }
+  const coupling::RangeUse &use() const { return use_; }
+  void reset_state(std::vector<double> h);  // sets h_i (size must match), e.g. for tests
+
+  // Pressure-weighted friction coefficient; 0 if no node carries load. Sizes must equal size().
+  double mu_effective(const std::vector<double> &pressure, const std::vector<double> &area);
+  // Per-node mu(p_i, h_i); 0 where p_i <= 0.
+  std::vector<double> node_mu(const std::vector<double> &pressure) const;
+  // Static coefficient for the stick/break-away limit: the pressure-weighted peak over h of mu(p_i, h) (the
+  // law's peak at each node's pressure). Not counted in use().
+  double peak_mu(const std::vector<double> &pressure, const std::vector<double> &area) const;
+
+  struct Increment {
+    std::vector<double> body;         // dh_i, m (the rough body's wear depth increment)
+    std::vector<double> counterface;  // dc_i, m (the counter body's)
+    int substeps = 0;
+  };
+  // Slides ds >= 0 at the held pressures: h_i += dh_i; returns the increments.
+  Increment advance(const std::vector<double> &pressure, double ds);
+  // Largest sub-step advance() takes: 0.5 / (largest |d wear_rate / dh| of the law) and the smallest h-grid
+  // spacing over the largest wear rate (no stage jumps a grid cell).
+  double substep_bound() const { return substep_; }
+  // Bound on the outer (contact re-solve) step for a contact whose pressure falls by `stiffness` Pa per metre
+  // of uniform wear: the linearised update h += (w/p)(p0 - K h) ds is stable for ds < 2 / (K max_i w_i/p_i);
+  // returns safety times that (infinity without wear or load). A node outside the pressure grid (clamped) has a
+  // rate that does not follow its pressure: its w/p is taken at the nearest grid pressure.
+  double stable_contact_step(const std::vector<double> &pressure, double stiffness, double safety);
+
+ private:
+  coupling::StateLawValues lookup(double p, double h);
+
+  std::shared_ptr<const coupling::StateLaw> law_;
+  coupling::OutOfRange policy_;
+  std::vector<double> h_, c_;
+  coupling::RangeUse use_;
+  double substep_ = 0.0;
+};
+
+// One line for a summary: "N lookups, M clamped below p_min, K above p_max, L beyond the last worn depth".
+std::string describe(const coupling::RangeUse &use, const coupling::StateLaw &law);
+
+}  // namespace runin::continuum
