@@ -76,7 +76,8 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
                                                        CaseReader::format(alpha));
     if (weakening) alpha = -alpha;
   }
-  if (law_path && model != "law_file") reader.fail("friction.model", "is '" + model + "' but --law was given");
+  if (law_path && model != "law_file" && model != "state_law")
+    reader.fail("friction.model", "is '" + model + "' but --law was given");
 
   try {
     if (model == "constant") return SlidingFriction::constant(reader.non_negative("friction.mu0"), alpha);
@@ -90,10 +91,12 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       // The homogenised path (issue 11): per-node mu(p, h) and dh/ds from a runin-state-law file. Relative
       // paths: to the case file's directory, else to the RunIn source tree.
       auto state = std::make_shared<continuum::StateLawFriction>();
-      const std::string file = reader.text("friction.law", "");
-      if (file.empty()) reader.fail("friction.law", "missing (required): the state law file (runin homogenise)");
+      // --law FILE (relative to the working directory) overrides friction.law
+      const std::string file = law_path ? *law_path : reader.text("friction.law", "");
+      if (file.empty())
+        reader.fail("friction.law", "missing (required): the state law file (runin homogenise), or --law FILE");
       std::filesystem::path resolved(file);
-      if (resolved.is_relative()) {
+      if (resolved.is_relative() && !law_path) {
         resolved = std::filesystem::path(reader.path()).parent_path() / file;
 #ifdef RUNIN_SOURCE_DIR
         if (!std::filesystem::exists(resolved) && std::filesystem::exists(std::filesystem::path(RUNIN_SOURCE_DIR) / file))

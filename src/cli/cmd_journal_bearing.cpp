@@ -448,7 +448,8 @@ Subcommand add_journal_bearing_command(CLI::App &app, PlotRunner plot) {
   auto options = std::make_shared<Options>();
   auto *cmd = app.add_subcommand("journal-bearing", "Dry journal bearing run-in: contact, friction torque, wear (thesis ch. 5)");
   cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
-  cmd->add_option("--law", options->law_path, "law file from fit-law, for friction.model = \"law_file\"");
+  cmd->add_option("--law", options->law_path,
+                  "law file: from fit-law (friction.model = \"law_file\"), or from homogenise (\"state_law\", overrides friction.law)");
   cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required()
       ->check(non_empty_path());
   cmd->add_flag("--no-plot", options->no_plot, "write CSV and VTK only");

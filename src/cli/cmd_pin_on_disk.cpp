@@ -453,7 +453,8 @@ std::string or_none(double t) { return t < 0.0 ? std::string("none") : fmt::form
 CLI::App *add_pin_on_disk_command(CLI::App &app, PinOnDiskOptions &o) {
   auto *cmd = app.add_subcommand("pin-on-disk", "Pin-on-disk run-in curve with contact and wear (thesis ch. 4)");
   cmd->add_option("case", o.case_path, "case file (TOML, or JSON if it ends in .json)")->required();
-  cmd->add_option("--law", o.law_path, "law file from fit-law, for friction.model = \"law_file\"");
+  cmd->add_option("--law", o.law_path,
+                  "law file: from fit-law (friction.model = \"law_file\"), or from homogenise (\"state_law\", overrides friction.law)");
   cmd->add_option("--output-dir", o.output_dir,
                   "directory for pin_on_disk.csv/.png, pin_face_*.vts/.pvd and the mu0 sweep files")
       ->required()

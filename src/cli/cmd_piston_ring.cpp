@@ -836,7 +836,8 @@ Subcommand add_piston_ring_command(CLI::App &app, PlotRunner plot) {
   auto options = std::make_shared<Options>();
   auto *cmd = app.add_subcommand("piston-ring", "Piston ring in a cylinder: run-in friction and wear (thesis ch. 6)");
   cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
-  cmd->add_option("--law", options->law_path, "law file from fit-law, for friction.model = \"law_file\"");
+  cmd->add_option("--law", options->law_path,
+                  "law file: from fit-law (friction.model = \"law_file\"), or from homogenise (\"state_law\", overrides friction.law)");
   cmd->add_option("--output-dir", options->output_dir,
                   "directory for piston_ring*.csv, piston_ring*.png and vtk/ (liner and ring-face frames)")
       ->required()
