@@ -26,7 +26,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 class Law:
-    """Bilinear in (ln p, h), h held beyond the grid, p clamped: the reader's rule (doc/state_law.md)."""
+    """Linear in h, power law in p where positive, h held beyond the grid, p clamped: the reader's rule
+    (doc/state_law.md)."""
 
     def __init__(self, path):
         with open(path) as f:
@@ -47,6 +48,8 @@ class Law:
         hh = np.clip(h, 0.0, self.h[-1])
         lower = np.interp(hh, self.h, g[i])
         upper = np.interp(hh, self.h, g[i + 1])
+        if lower > 0.0 and upper > 0.0:
+            return lower * (upper / lower) ** w
         return (1 - w) * lower + w * upper
 
 

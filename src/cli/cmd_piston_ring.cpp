@@ -26,6 +26,12 @@
 namespace runin::cli {
 namespace {
 
+// The event guard names its key: a real case with more events raises run.max_events.
+std::string events_hint(continuum::SolveStatus status) {
+  return status == continuum::SolveStatus::TooManyEvents ? " (run.max_events)" : std::string();
+}
+
+
 namespace fs = std::filesystem;
 using continuum::PistonRingSample;
 constexpr double kPi = 3.14159265358979323846;
@@ -66,7 +72,8 @@ Curve run_dynamics(const PistonRingCase &c, const PistonRingOfPack &ring, const 
   curve.report = continuum::simulate(system, c.run, [&](const PistonRingSample &s) { curve.samples.push_back(s); });
   if (!curve.report.ok())
     throw std::runtime_error((c.rings.size() > 1 ? "ring " + ring.name + ": " : std::string()) +
-                             continuum::to_string(curve.report.status) + ": " + curve.report.message);
+                             continuum::to_string(curve.report.status) + ": " + curve.report.message +
+                             events_hint(curve.report.status));
   curve.summary = continuum::summarise(system, curve.samples);
   for (auto &sample : curve.samples) sample.ring_position += ring.position;  // groove centre on the piston
   return curve;
@@ -458,7 +465,8 @@ StateLawPack run_pack_state_law(const PistonRingCase &c, std::vector<continuum::
     auto refresh = [&] { return std::exchange(changed, false); };
     curve.report = continuum::simulate(system, c.run, observer, refresh);
     if (!curve.report.ok())
-      throw std::runtime_error(which + continuum::to_string(curve.report.status) + ": " + curve.report.message);
+      throw std::runtime_error(which + continuum::to_string(curve.report.status) + ": " + curve.report.message +
+                               events_hint(curve.report.status));
     std::vector<PistonRingSample> unshifted = curve.samples;  // summarise() expects the ring's own coordinate
     for (auto &sample : unshifted) sample.ring_position -= ring.position;
     curve.summary = continuum::summarise(system, unshifted);

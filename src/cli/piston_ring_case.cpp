@@ -279,7 +279,7 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   run.t_end = reader.positive("run.t_end");
   run.output_interval = reader.positive("run.output_interval", 1e-3);
   if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
-  run.max_events = static_cast<int>(std::min<long>(reader.positive_integer("run.max_events", 100000), 1L << 30));
+  run.max_events = static_cast<int>(std::min<long>(reader.positive_integer("run.max_events", 20000), 1L << 30));
   continuum::CvodeIntegrator::Settings defaults;
   defaults.rtol = 1e-8;
   defaults.atol = 1e-12;

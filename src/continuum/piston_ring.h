@@ -140,7 +140,7 @@ struct PistonRingRun {
   double t_end = 2.0;
   double output_interval = 1e-3;
   CvodeIntegrator::Settings integrator;
-  int max_events = 100000;
+  int max_events = 20000;  // 50 x the long crank case (401 events); run.max_events raises it
 
   void validate() const;
 };

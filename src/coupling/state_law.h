@@ -2,7 +2,8 @@
 // depth of the rough body: its worn volume over the nominal area), built by `runin homogenise` from
 // rough-on-flat cell runs and read by the continuum contact nodes. Format: doc/state_law.md.
 //
-// Interpolation is bilinear in (ln p, h). Along h the last grid value holds beyond the grid (the cell ran to
+// Interpolation: linear in h; between pressures a power law, ln(value) linear in ln p, where both neighbours are
+// positive (else linear in ln p). Along h the last grid value holds beyond the grid (the cell ran to
 // its steady state there); a pressure outside the grid is an error, or, with OutOfRange::Clamp, the nearest
 // grid pressure, counted in a RangeUse so the caller can report how often it happened.
 #pragma once

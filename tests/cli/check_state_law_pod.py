@@ -2,7 +2,7 @@
 """Checks a pin-on-disk run on a state law (issue 11, doc/state_law_continuum.md).
 
 --flat P: flat punch at the uniform nominal pressure P: mu_eff(s) and h(s) reproduce the law integrated directly
-          along s (dh/ds = wear_rate(P, h), RK4 on the law's own bilinear (ln p, h) interpolation) within 1 %.
+          along s (dh/ds = wear_rate(P, h), RK4 on the law's own interpolation: linear in h, power law in p) within 1 %.
 --cell-curve (with --flat P on a grid pressure of the law): mu_eff at the cell's own sliding distances (the law's
           sliding_distance column at P) equals the cell's mu_body there within 1 %: the cell's mu(s) reproduced.
 Always:   the friction force of each slip row is the mu_eff held over the interval before it (operator splitting,
@@ -43,6 +43,8 @@ class Law:
         g = self.f[field]
         lo = (1 - wh) * g[i][j] + wh * g[i][j + 1]
         hi = (1 - wh) * g[i + 1][j] + wh * g[i + 1][j + 1]
+        if lo > 0.0 and hi > 0.0:  # the reader's power law between pressures (doc/state_law.md)
+            return lo * (hi / lo) ** wp
         return (1 - wp) * lo + wp * hi
 
 

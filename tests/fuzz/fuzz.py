@@ -180,8 +180,10 @@ def deck_cases(rng, count, lmp):
 
 
 def shipped_cases():
-    """The machine-element case files (the homogenise case runs the LAMMPS cell: its own op in cli_cases)."""
-    return sorted(n for n in os.listdir(INPUTS) if n.endswith((".toml", ".json")) and not n.startswith("homogenise_"))
+    """The machine-element case files (the homogenise case runs the LAMMPS cell: its own op in cli_cases; a
+    state_law_*.json is a law the cases read, not a case)."""
+    return sorted(n for n in os.listdir(INPUTS) if n.endswith((".toml", ".json"))
+                  and not n.startswith(("homogenise_", "state_law_")))
 
 
 def needs_law(text):

@@ -1,5 +1,5 @@
-// State law tables (issue 11): bilinear interpolation in (ln p, h), the range policies, JSON round trip and the
-// checks on a malformed file.
+// State law tables (issue 11): interpolation (linear in h, power law in p where positive, linear in ln p
+// otherwise), the range policies, JSON round trip and the checks on a malformed file.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,8 +11,10 @@ using namespace runin::coupling;
 
 namespace {
 
-// mu = 0.1 + 0.2 ln(p / 1 MPa) / ln 10 - 1e5 h: bilinear in (ln p, h), so interpolation must be exact.
-double mu_exact(double p, double h) { return 0.3 + 0.2 * std::log(p / 1e6) / std::log(10.0) - 1e5 * h; }
+// mu = (0.3 - 1e5 h) (p / 1 MPa)^-0.4: linear in h, a power of p, so interpolation must be exact.
+double mu_exact(double p, double h) { return (0.3 - 1e5 * h) * std::pow(p / 1e6, -0.4); }
+// rsk = -1 + 0.2 ln(p / 1 MPa) - 1e6 h: negative, so linear in (ln p, h), exact as well.
+double rsk_exact(double p, double h) { return -1.0 + 0.2 * std::log(p / 1e6) - 1e6 * h; }
 
 StateLaw make_law(bool band = true) {
   const std::vector<double> p = {1e6, 1e7, 1e8}, h = {0.0, 1e-7, 2e-7};
@@ -21,7 +23,8 @@ StateLaw make_law(bool band = true) {
     auto &t = fields[f];
     t.mean.assign(p.size(), std::vector<double>(h.size()));
     for (std::size_t i = 0; i < p.size(); ++i)
-      for (std::size_t j = 0; j < h.size(); ++j) t.mean[i][j] = mu_exact(p[i], h[j]) + f;
+      for (std::size_t j = 0; j < h.size(); ++j)
+        t.mean[i][j] = static_cast<StateField>(f) == StateField::Rsk ? rsk_exact(p[i], h[j]) : mu_exact(p[i], h[j]) * (1 + f);
     if (band) {
       t.low = t.mean;
       t.high = t.mean;
@@ -36,23 +39,37 @@ StateLaw make_law(bool band = true) {
 
 }  // namespace
 
-TEST(StateLaw, BilinearInLogPressureAndDepthIsExact) {
-  const auto law = make_law();
+TEST(StateLaw, PowerLawInPressureLinearInDepthIsExact) {
+  const auto law = make_law(false);
   for (double p : {1e6, 2.5e6, 3.3e7, 1e8})
-    for (double h : {0.0, 3e-8, 1.5e-7, 2e-7})
-      EXPECT_NEAR(law.value(StateField::MuBody, p, h), mu_exact(p, h), 1e-12) << p << " " << h;
+    for (double h : {0.0, 3e-8, 1.5e-7, 2e-7}) {
+      EXPECT_NEAR(law.value(StateField::MuBody, p, h), mu_exact(p, h), 1e-14) << p << " " << h;
+      EXPECT_NEAR(law.value(StateField::Rsk, p, h), rsk_exact(p, h), 1e-12) << p << " " << h;
+    }
   const auto v = law.values(4e6, 5e-8);
-  EXPECT_NEAR(v.mu_body, mu_exact(4e6, 5e-8), 1e-12);
-  EXPECT_NEAR(v.wear_rate, mu_exact(4e6, 5e-8) + 4, 1e-12);
-  EXPECT_NEAR(law.value(StateField::MuBody, 4e6, 5e-8, Band::Low), mu_exact(4e6, 5e-8) - 0.01, 1e-12);
-  EXPECT_NEAR(law.value(StateField::MuBody, 4e6, 5e-8, Band::High), mu_exact(4e6, 5e-8) + 0.02, 1e-12);
+  EXPECT_NEAR(v.mu_body, mu_exact(4e6, 5e-8), 1e-14);
+  EXPECT_NEAR(v.wear_rate, mu_exact(4e6, 5e-8) * 5, 1e-13);
+  EXPECT_NEAR(v.rsk, rsk_exact(4e6, 5e-8), 1e-12);
+  // at the geometric midpoint of a grid step the power law is the geometric mean, not the arithmetic one
+  EXPECT_NEAR(law.value(StateField::MuBody, std::sqrt(1e6 * 1e7), 0.0),
+              std::sqrt(mu_exact(1e6, 0.0) * mu_exact(1e7, 0.0)), 1e-14);
+}
+
+TEST(StateLaw, BandsInterpolateLikeTheMean) {
+  const auto law = make_law();
+  const double p = 4e6, h = 5e-8;
+  const double lo0 = mu_exact(1e6, h) - 0.01, lo1 = mu_exact(1e7, h) - 0.01;
+  const double w = std::log(p / 1e6) / std::log(10.0);
+  EXPECT_NEAR(law.value(StateField::MuBody, p, h, Band::Low), lo0 * std::pow(lo1 / lo0, w), 1e-14);
+  const double hi0 = mu_exact(1e6, h) + 0.02, hi1 = mu_exact(1e7, h) + 0.02;
+  EXPECT_NEAR(law.value(StateField::MuBody, p, h, Band::High), hi0 * std::pow(hi1 / hi0, w), 1e-14);
 }
 
 TEST(StateLaw, DepthBeyondTheGridHoldsTheLastRowAndIsCounted) {
   const auto law = make_law();
   RangeUse use;
   EXPECT_NEAR(law.value(StateField::MuBody, 1e7, 5e-7, Band::Mean, OutOfRange::Error, &use), mu_exact(1e7, 2e-7),
-              1e-12);
+              1e-14);
   EXPECT_EQ(use.beyond_depth, 1);
   EXPECT_EQ(use.lookups, 1);
 }

@@ -16,10 +16,10 @@ constexpr double kH0 = 1e-6;   // m, depth the synthetic wear saturates at
 constexpr double kC = 2e3;     // 1/m at p = 1e7 Pa
 constexpr double kQ = 0.25;    // counterface rate / body rate
 
-// mu = 0.3 + 0.05 ln(p / 1e7) - 1e5 h (bilinear in (ln p, h): interpolation is exact);
-// wear_rate = c(p) (h0 - h), c(p) = kC (1 + 0.1 ln(p / 1e7)): linear in h and ln p, exact too.
-double mu_exact(double p, double h) { return 0.3 + 0.05 * std::log(p / 1e7) - 1e5 * h; }
-double c_of(double p) { return kC * (1.0 + 0.1 * std::log(p / 1e7)); }
+// mu = (0.3 - 1e5 h) (p / 1e7)^0.1 (linear in h, a power of p: the law's interpolation is exact);
+// wear_rate = c(p) (h0 - h), c(p) = kC (p / 1e7)^0.5: exact too.
+double mu_exact(double p, double h) { return (0.3 - 1e5 * h) * std::pow(p / 1e7, 0.1); }
+double c_of(double p) { return kC * std::pow(p / 1e7, 0.5); }
 
 std::shared_ptr<const StateLaw> make_law() {
   const std::vector<double> p = {1e6, 1e7, 1e8};
