@@ -100,7 +100,10 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
     field(F::Rq)[j] = at(c.rq);
     field(F::Rsk)[j] = at(c.rsk);
     field(F::AreaFraction)[j] = at(c.area_fraction);
-    field(F::SlidingDistance)[j] = at(c.s) * acceleration;
+    // below the first sliding row the distance runs from the end of loading, (s, h) = (0, 0): the h = 0
+    // column is s = 0, where the continuum starts too (the other fields hold the first sliding row there)
+    field(F::SlidingDistance)[j] =
+        (i == 0 && H[0] > hj ? c.s[0] * (H[0] > 0.0 ? hj / H[0] : 0.0) : at(c.s)) * acceleration;
     // wear rates: least-squares slope over the rows with h within one grid step of hj (at least 3 rows)
     std::size_t a = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj - dh) - H.begin());
     std::size_t b = static_cast<std::size_t>(std::upper_bound(H.begin(), H.end(), hj + dh) - H.begin());

@@ -56,6 +56,8 @@ def main():
     ap.add_argument("--counterface-ratio", type=float)
     ap.add_argument("--vtk", type=int)
     ap.add_argument("--cell-curve", action="store_true")
+    ap.add_argument("--no-expect-fall", dest="expect_fall", action="store_false",
+                    help="do not require mu_eff to fall (laws from the cell)")
     ap.add_argument("--min-distance", type=float, default=0.0)
     a = ap.parse_args()
     rows = list(csv.DictReader(open(os.path.join(a.out_dir, "pin_on_disk.csv"))))
@@ -106,8 +108,11 @@ def main():
         mu0, mu1 = float(rows[0]["mu_eff"]), float(rows[-1]["mu_eff"])
         print("flat punch p = %g Pa: mu_eff %.5g -> %.5g over %.4g m, h %.4g m; worst relative error mu %.3g, h %.3g"
               % (p, mu0, mu1, s[-1], h, worst_mu, worst_h))
-        if mu0 - mu1 < 0.1 * mu0:
+        # the synthetic law runs in (mu falls); a law from the cell need not (doc/rve_cell.md): only that mu moved
+        if a.expect_fall and mu0 - mu1 < 0.1 * mu0:
             fail("no run-in: mu_eff %g -> %g" % (mu0, mu1))
+        if abs(mu1 - mu0) < 0.1 * mu0:
+            fail("mu_eff did not evolve: %g -> %g (the run is too short to test the state law)" % (mu0, mu1))
         if worst_mu > 0.01 or worst_h > 0.01:
             fail("flat punch departs from the law by more than 1 %")
         if a.cell_curve:
