@@ -7,10 +7,10 @@
 physics: Steel1020 on Steel1020 (R 100 um, sigma 0.2 um per body), physical wear (accel 1), at 5 and 20 MPa.
 Asserted (doc/rve_cell.md, "rough on rough"):
   - the contacts carry the load at the end of loading (sum F_n within 2 % of p A);
-  - the real area is proportional to the load: at the end of loading W / A_r at 5 and 20 MPa within 10 % of
+  - the real area is proportional to the load early in the run-in: after loading W / A_r at 5 and 20 MPa within 10 % of
     each other, in the Bowden-Tabor band 0.5-1.2 H; while sliding, A_r/A at 20 MPa over A_r/A at 5 MPa (means
     over h in [depth/5, depth]) within 25 % of the pressure ratio 4 (on the flat counterface of in.rve_wall it
-    is ~1: the worn flats conform to the wall);
+    is ~1: the worn flats conform to the wall; here it falls to ~2 by h = 20 nm, doc/rve_cell.md);
   - the rough body's Rq falls while it wears (Rq at h = depth below 0.95 x Rq at the start of sliding);
   - the worn volume is Archard's: h + h_cf = 2 k p s / H to 1e-3;
   - the complete output file exists only after the run (out.part renamed at the end).
