@@ -147,10 +147,16 @@ void PairRuninAsperity::settings(int narg, char **arg)
       if (!(speed >= 0.0))
         error->all(FLERR, "pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value);
       contact_settings.restick_speed = speed;
+    } else if (keyword == "wear_scale") {
+      const double factor =
+          runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "wear_scale factor", value.c_str());
+      if (!(factor > 0.0))
+        error->all(FLERR, "pair_style runin/asperity: wear_scale factor must be > 0 and finite, got '{}'", value);
+      wear_scale = factor;
     } else {
       error->all(FLERR,
                  "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, normal, "
-                 "friction, transfer or restick)",
+                 "friction, transfer, restick or wear_scale)",
                  keyword);
     }
   }
@@ -392,9 +398,17 @@ double PairRuninAsperity::init_one(int i, int j)
     });
   }
   const int n = atom->ntypes + 1;
+  // wear acceleration (pair_style wear_scale): Archard k of both bodies times the factor, in the models only
+  // (the stored coefficients, and so restart files and mixing, keep the material's k)
+  const auto scaled = [this](tribo::ContactCoefficients c) {
+    auto &wear = c.of(SubModelKind::wear);
+    wear[0] *= wear_scale;    // k_I (coefficients k_I H_I k_J H_J of the archard model)
+    wear[2] *= wear_scale;    // k_J
+    return c;
+  };
   runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair runin/asperity: types {} {}", i, j), true, [&] {
-    models[i * n + j].emplace(choice, coeff_of(i, j), contact_settings);
-    models[j * n + i].emplace(choice, coeff_of(j, i), contact_settings);
+    models[i * n + j].emplace(choice, scaled(coeff_of(i, j)), contact_settings);
+    models[j * n + i].emplace(choice, scaled(coeff_of(j, i)), contact_settings);
   });
   return maxrad[i] + maxrad[j];
 }

@@ -66,6 +66,8 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   bool wear_on;
   bool reshape;                    // worn geometry (summit drop, flat) enters the normal force
   runin::tribo::ContactSettings contact_settings;    // Archard form, transfer, re-stick
+  double wear_scale = 1.0;    // pair_style wear_scale: factor on Archard k of both bodies (wear acceleration);
+                              // applied to the models built in init_one, not to the stored coefficients
   runin::tribo::ContactModelChoice choice;           // the sub-models, one per kind (pair_style keywords)
   bool from_restart;               // coefficients came from a restart file (pair_style must not change models)
   std::vector<runin::tribo::ContactCoefficients> coeffs;    // (ntypes+1)^2; [J][I] is seen from type J

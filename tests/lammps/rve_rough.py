@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""The rough-on-rough homogenisation cell inputs/in.rve_rough (run by ctest; stdlib only).
+
+  rve_rough.py physics --lmp LMP --workdir DIR [--nside 24] [--depth 5e-9]
+  rve_rough.py ranks --lmp LMP --workdir DIR [--mpiexec MPIEXEC] [--nside 16] [--depth 5e-9]
+
+physics: Steel1020 on Steel1020 (R 100 um, sigma 0.2 um per body), physical wear (accel 1), at 5 and 20 MPa.
+Asserted (doc/rve_cell.md, "rough on rough"):
+  - the contacts carry the load at the end of loading (sum F_n within 2 % of p A);
+  - the real area is proportional to the load early in the run-in: after loading W / A_r at 5 and 20 MPa within 10 % of
+    each other, in the Bowden-Tabor band 0.5-1.2 H; while sliding, A_r/A at 20 MPa over A_r/A at 5 MPa (means
+    over h in [depth/5, depth]) within 25 % of the pressure ratio 4 (on the flat counterface of in.rve_wall it
+    is ~1: the worn flats conform to the wall; here it falls to ~2 by h = 20 nm, doc/rve_cell.md);
+  - the rough body's Rq falls while it wears (Rq at h = depth below 0.95 x Rq at the start of sliding);
+  - the worn volume is Archard's: h + h_cf = 2 k p s / H to 1e-3;
+  - the complete output file exists only after the run (out.part renamed at the end).
+ranks: the cell at 1 and 2 MPI ranks, every output value to 1e-9 relative.
+"""
+import argparse
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_deck import SOURCE_DIR, fail, fresh_dir, numeric_table, run_lammps  # noqa: E402
+
+DECK = os.path.join(SOURCE_DIR, "inputs", "in.rve_rough")
+MATERIAL = os.path.join(SOURCE_DIR, "potentials", "Steel1020.runin")
+K, H = 7.0e-3, 1.19e9           # Steel1020 on Steel1020 (potentials/Steel1020.runin)
+COLUMNS = ("step", "s", "h", "h_cf", "mu", "rq", "rsk", "af", "mu_adh", "mu_plough", "contacts")
+LOADED = re.compile(r"^REGIME loaded.*?W = (\S+) N \(load (\S+) N\), W/A_r = (\S+) Pa", re.M)
+
+
+def run_cell(args, pressure, name, np=1, nside=None):
+    out = f"{name}.dat"
+    log = run_lammps(args, DECK, {"material": MATERIAL, "pressure": pressure, "accel": 1.0,
+                                  "nside": nside or args.nside, "depth": args.depth, "seed": 11,
+                                  "nout": 500, "out": out}, log=f"log.{name}", np=np)
+    path = os.path.join(args.workdir, out)
+    if not os.path.exists(path) or os.path.exists(path + ".part"):
+        fail(f"{name}: the output was not renamed from {out}.part to {out} at the end of the run")
+    rows = [dict(zip(COLUMNS, r)) for r in numeric_table(path)]
+    match = LOADED.search(log)
+    if not match:
+        fail(f"{name}: no 'REGIME loaded' line in the log")
+    w, load, p_real = (float(x) for x in match.groups())
+    return rows, w, load, p_real
+
+
+def physics(args):
+    fresh_dir(args.workdir)
+    cells = {}
+    for pressure in (5.0e6, 2.0e7):
+        rows, w, load, p_real = run_cell(args, pressure, f"p{pressure:g}")
+        if abs(w / load - 1.0) > 0.02:
+            fail(f"p = {pressure:g} Pa: the contacts carry {w:.4g} N of the load {load:.4g} N after loading")
+        if not 0.5 * H <= p_real <= 1.2 * H:
+            fail(f"p = {pressure:g} Pa: W / A_r = {p_real:.4g} Pa after loading, outside 0.5-1.2 H")
+        last, first = rows[-1], rows[1]
+        if last["h"] < args.depth:
+            fail(f"p = {pressure:g} Pa: the cell stopped at h = {last['h']:g} m before {args.depth:g} m")
+        archard = 2.0 * K * pressure * last["s"] / H
+        if abs((last["h"] + last["h_cf"]) / archard - 1.0) > 1e-3:
+            fail(f"p = {pressure:g} Pa: h + h_cf = {last['h'] + last['h_cf']:.6g} m, Archard {archard:.6g} m")
+        if not last["rq"] < 0.95 * first["rq"]:
+            fail(f"p = {pressure:g} Pa: Rq {first['rq']:.4g} -> {last['rq']:.4g} m does not fall by 5 %")
+        band = [r["af"] for r in rows[1:] if r["h"] >= args.depth / 5]
+        cells[pressure] = sum(band) / len(band)
+        print(f"p = {pressure:g} Pa: W = {w:.4g} N of {load:.4g} N, W/A_r = {p_real:.4g} Pa after loading; "
+              f"sliding s = {last['s']:.4g} m to h = {last['h']:.4g} m: Archard ratio "
+              f"{(last['h'] + last['h_cf']) / archard:.6f}, Rq {first['rq']:.4g} -> {last['rq']:.4g} m, "
+              f"mean A_r/A {cells[pressure]:.5f}, mu_body {last['mu']:.4f}")
+    ratio = cells[2.0e7] / cells[5.0e6]
+    print(f"A_r/A(20 MPa) / A_r/A(5 MPa) = {ratio:.3f} (load ratio 4)")
+    if not 3.0 <= ratio <= 5.0:
+        fail(f"the real area is not proportional to the load: A_r/A ratio {ratio:.3f} for a load ratio of 4")
+    print("PASS")
+
+
+def ranks(args):
+    fresh_dir(args.workdir)
+    one = run_cell(args, 2.0e7, "np1")[0]
+    two = run_cell(args, 2.0e7, "np2", np=2)[0]
+    if len(one) != len(two):
+        fail(f"1 rank wrote {len(one)} rows, 2 ranks {len(two)}")
+    worst = 0.0
+    for a, b in zip(one, two):
+        for key in COLUMNS:
+            worst = max(worst, abs(a[key] - b[key]) / max(abs(a[key]), 1e-300))
+    print(f"{len(one)} rows, largest relative difference between 1 and 2 ranks {worst:.3g}")
+    if worst > 1e-9:
+        fail(f"the cell depends on the number of ranks: relative difference {worst:.3g} > 1e-9")
+    print("PASS")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("mode", choices=["physics", "ranks"])
+    parser.add_argument("--lmp", required=True)
+    parser.add_argument("--workdir", required=True)
+    parser.add_argument("--mpiexec", default="mpiexec")
+    parser.add_argument("--nside", type=int, default=None)
+    parser.add_argument("--depth", type=float, default=5.0e-9)
+    args = parser.parse_args()
+    args.workdir = os.path.abspath(args.workdir)
+    args.nside = args.nside or (24 if args.mode == "physics" else 16)
+    physics(args) if args.mode == "physics" else ranks(args)
+
+
+if __name__ == "__main__":
+    main()
