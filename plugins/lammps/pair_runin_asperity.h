@@ -126,7 +126,10 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   void attach_wear_state();
   void grow_increments();
   // The force loop, specialised at compile time on the sub-models and features in use (OPT-package style).
-  template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG> void eval(int eflag);
+  // flatten: the contact model, Mindlin spring and helpers are inlined whatever GCC's size heuristics say
+  // (near their limit, a small change to the contact law outlined ContactModel::evaluate or mindlin_spring
+  // and cost 5-20 % of the loop's instructions).
+  template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG> [[gnu::flatten]] void eval(int eflag);
   using EvalFunction = void (PairRuninAsperity::*)(int);
   static constexpr int NFLAGS = 4;    // WEAR, RESHAPE, SUMS, EVFLAG
   template <int... Index>
