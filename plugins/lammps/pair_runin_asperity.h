@@ -128,14 +128,19 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   void attach_wear_state();
   void grow_increments();
   // The force loop, specialised at compile time on the sub-models and features in use (OPT-package style).
-  template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG> void eval(int eflag);
+  // flatten: the contact model, Mindlin spring and helpers are inlined whatever GCC's size heuristics say
+  // (near their limit, a small change to the contact law outlined ContactModel::evaluate or mindlin_spring
+  // and cost 5-20 % of the loop's instructions).
+  template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG> [[gnu::flatten]] void eval(int eflag);
   using EvalFunction = void (PairRuninAsperity::*)(int);
   static constexpr int NFLAGS = 4;    // WEAR, RESHAPE, SUMS, EVFLAG
   template <int... Index>
   static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
   // One contact's geometry from positions, velocities, radii, masses and the worn state (eval and single).
-  runin::tribo::ContactGeometry contact_geometry(int i, int j, double overlap, double rinv, const double *del,
-                                                 double flat) const;
+  // Inlined into the force loop (out of line it cost a call and a 14-value struct through memory per contact).
+  [[gnu::always_inline]] inline runin::tribo::ContactGeometry contact_geometry(int i, int j, double overlap,
+                                                                               double rinv, const double *del,
+                                                                               double flat) const;
   [[noreturn]] void stop_past_centre(int i, int j, double interference, double approach_per_step,
                                      double push_per_step) const;
   runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);

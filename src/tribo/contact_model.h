@@ -176,11 +176,11 @@ class ElasticPlasticNormalModel {
 
     if (loading) {
       // the Jackson-Green curve
-      const ContactPoint p = unit_.evaluate(omega);
+      double log_x;    // ln(omega / omega_c) for omega > omega_c (the fit's own)
+      const ContactPoint p = unit_.evaluate(omega, log_x);
       const double x = omega * inv_omega_c_;
       out.range_ratio = x * (1.0 / JacksonGreen::kCheckedRange);
       if (x > 1.0) {
-        const double log_x = std::log(x);
         residual = ElasticPlasticUnloading::residual_ratio_of_log(log_x) * omega;
         exponent = ElasticPlasticUnloading::unloading_exponent_of_log(log_x);
       } else {

@@ -58,6 +58,7 @@ JacksonGreen::JacksonGreen(const ElasticPlasticCoefficients &coefficients, Hertz
   const double radius_c = yield_factor_ * S * R / (2.0 * E);
   area_c_ = kPi * kPi * kPi * radius_c * radius_c;
   hertz_factor_ = 4.0 / 3.0 * E;
+  log_strain_c_ = std::log(omega_c_ / R);
   if (!std::isfinite(area_exponent_) || !(omega_c_ > 0.0) || !std::isfinite(omega_c_) || !(force_c_ > 0.0) ||
       !std::isfinite(force_c_))
     throw InvalidCoefficient("E*, R*, S_y: critical interference or load under- or overflows (S_y/E* = " +

@@ -89,6 +89,9 @@ class JacksonGreen {
 
   // All three in one pass (header-inline: the force loops call it per contact and step).
   ContactPoint evaluate(double omega) const;
+  // The same, and ln(omega*) for omega* > 1 (0 otherwise): the fit takes it anyway, and the EKK unloading
+  // curve of a loading contact is a function of it (one logarithm for both).
+  ContactPoint evaluate(double omega, double &log_x) const;
   double force(double omega) const { return evaluate(omega).force; }
   double contact_radius(double omega) const;                   // sqrt(A / pi)
   double contact_area(double omega) const;                     // A
@@ -98,12 +101,14 @@ class JacksonGreen {
 
  private:
   static constexpr double kPi = 3.14159265358979323846;
-  ContactPoint fit(double omega) const;    // the JG fit branch (omega* >= 1.9)
+  ContactPoint fit(double omega) const { double log_x; return fit(omega, log_x); }
+  ContactPoint fit(double omega, double &log_x) const;    // the JG fit branch (omega* >= 1.9)
 
   ElasticPlasticCoefficients c_;
   HertzToFitTransition transition_;
   double yield_factor_, area_exponent_, omega_c_, inv_omega_c_, force_c_, area_c_;
   double hertz_factor_;    // 4/3 E*
+  double log_strain_c_;    // ln(omega_c / R)
   double gap_ = 0.0;
 };
 
@@ -179,13 +184,16 @@ inline double sphere_groove_area(double radius, double depth)
 {
   if (!(depth > 0.0) || !(radius > 0.0)) return 0.0;
   const double d = depth < 2.0 * radius ? depth : 2.0 * radius;
-  const double phi = 4.0 * std::asin(std::sqrt(0.5 * d / radius));
+  const double half_depth = 0.5 * d / radius;    // sin^2(theta), theta = phi / 4
+  const double phi = 4.0 * std::asin(std::sqrt(half_depth));
   double phi_minus_sin;
   if (phi < 1e-2) {
     const double p2 = phi * phi;    // phi - sin(phi) = phi^3/6 - phi^5/120 + phi^7/5040 - ...
     phi_minus_sin = phi * p2 * (1.0 / 6.0 - p2 * (1.0 / 120.0 - p2 * (1.0 / 5040.0)));
   } else {
-    phi_minus_sin = phi - std::sin(phi);
+    // sin(4 theta) = 4 sin(theta) cos(theta) cos(2 theta) = 4 sqrt(h (1 - h)) (1 - 2h), h = sin^2(theta):
+    // exact, and one square root instead of the sine
+    phi_minus_sin = phi - 4.0 * std::sqrt(half_depth * (1.0 - half_depth)) * (1.0 - 2.0 * half_depth);
   }
   return 0.5 * radius * radius * phi_minus_sin;
 }
@@ -242,10 +250,18 @@ class BrizmerStaticFriction {
 
 inline ContactPoint JacksonGreen::evaluate(double omega) const
 {
+  double log_x;
+  return evaluate(omega, log_x);
+}
+
+inline ContactPoint JacksonGreen::evaluate(double omega, double &log_x) const
+{
   ContactPoint out;
+  log_x = 0.0;
   if (!(omega > 0.0)) return out;
   const double x = omega * inv_omega_c_;
-  if (!(x < kFitStart)) return fit(omega);
+  if (!(x < kFitStart)) return fit(omega, log_x);
+  if (x > 1.0) log_x = std::log(x);
   // Hertz: a = sqrt(R omega), P = 4/3 E* a omega, dP/domega = 2 E* a
   const double a = std::sqrt(c_.effective_radius * omega);
   out.contact_radius = a;
@@ -262,26 +278,35 @@ inline ContactPoint JacksonGreen::evaluate(double omega) const
   return out;
 }
 
-inline ContactPoint JacksonGreen::fit(double omega) const
+// The published fit with its libm calls shared (one log and five exponentials): every power of omega* is
+// an exponential of ln omega*, x^(5/12) and x^(5/9) are y^3 and y^4 of y = x^(5/36), and (a/R)^(-0.7) is
+// an exponential of ln(a/R) = (ln(omega/R) + B (ln x - ln 1.9)) / 2 with ln(omega/R) = ln x + ln(omega_c/R).
+// The same equations as written in the header comment, to round-off.
+inline ContactPoint JacksonGreen::fit(double omega, double &log_x_out) const
 {
+  constexpr double kLogFitStart = 0.64185388617239469;    // ln 1.9
   ContactPoint out;
   const double x = omega * inv_omega_c_;
   const double log_x = std::log(x);
+  log_x_out = log_x;
   const double B = area_exponent_;
   // a = sqrt(A / pi) = sqrt(R omega) (x / 1.9)^(B/2); q = a / R
-  const double growth = std::exp(0.5 * B * (log_x - std::log(kFitStart)));
+  const double log_growth = 0.5 * B * (log_x - kLogFitStart);
+  const double growth = std::exp(log_growth);
   const double a = std::sqrt(c_.effective_radius * omega) * growth;
-  const double q = a / c_.effective_radius;
-  const double q_pow = std::pow(q, -0.7);
+  // q^(-0.7) = exp(-0.7 ln q), ln q = (ln x + ln(omega_c / R)) / 2 + ln growth
+  const double q_pow = std::exp(-0.7 * (0.5 * (log_x + log_strain_c_) + log_growth));
   const double e_h = std::exp(-0.82 * q_pow);
   const double h = 2.84 * (1.0 - e_h);    // H_G / S_y
-  // first term: exp(-x^(5/12) / 4) x^(3/2)
-  const double x_512 = std::exp(5.0 / 12.0 * log_x);
-  const double t1 = std::exp(-0.25 * x_512) * x * std::sqrt(x);
+  // x^(5/12) = y^3 and x^(5/9) = y^4 with y = x^(5/36)
+  const double y = std::exp(5.0 / 36.0 * log_x);
+  const double x_512 = y * y * y;
+  const double x_59 = x_512 * y;
+  // first term: exp(-x^(5/12) / 4) x^(3/2), one exponential
+  const double t1 = std::exp(1.5 * log_x - 0.25 * x_512);
   // second term: 4 h / C (1 - exp(-x^(5/9) / 25)) x
-  const double x_59 = std::exp(5.0 / 9.0 * log_x);
-  const double e_2 = std::exp(-0.04 * x_59);
   const double g_2 = -std::expm1(-0.04 * x_59);
+  const double e_2 = 1.0 - g_2;    // exp(-x^(5/9) / 25), in (0, 1]: no cancellation
   const double four_over_c = 4.0 / yield_factor_;
   const double t2 = four_over_c * h * g_2 * x;
   // derivatives in x: dq/dx = q (1 + B) / (2x) and dh/dq = -2.84 * 0.574 q^(-1.7) e_h
