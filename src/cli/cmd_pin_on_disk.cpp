@@ -21,6 +21,17 @@
 namespace runin::cli {
 namespace {
 
+// The pin's wear stepper settings from [contact] (the grid radius is the caller's: it depends on the wear law).
+continuum::PinWearParameters pin_wear_parameters(const PinContactCase &k) {
+  continuum::PinWearParameters wp;
+  wp.tip_radius = k.tip_radius;
+  wp.effective_modulus = k.effective_modulus();
+  wp.rings = k.rings;
+  wp.step_safety = k.step_safety;
+  wp.max_steps = k.max_wear_steps;
+  return wp;
+}
+
 namespace fs = std::filesystem;
 using continuum::PinOnDiskSample;
 
@@ -87,12 +98,7 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
 
   const auto &k = *c.contact;
   const double load = c.parameters.normal_load;
-  continuum::PinWearParameters wp;
-  wp.tip_radius = k.tip_radius;
-  wp.effective_modulus = k.effective_modulus();
-  wp.rings = k.rings;
-  wp.step_safety = k.step_safety;
-  wp.max_steps = k.max_wear_steps;
+  continuum::PinWearParameters wp = pin_wear_parameters(k);
   wp.grid_radius = k.grid_radius ? *k.grid_radius
                                  : continuum::suggested_grid_radius(wp.tip_radius, wp.effective_modulus, load,
                                                                     k.wear ? &*k.wear : nullptr,
@@ -181,12 +187,7 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
   if (k.flat) {
     flat_grid.emplace(k.flat_radius, k.rings, k.effective_modulus());
   } else {
-    continuum::PinWearParameters wp;
-    wp.tip_radius = k.tip_radius;
-    wp.effective_modulus = k.effective_modulus();
-    wp.rings = k.rings;
-    wp.step_safety = k.step_safety;
-    wp.max_steps = k.max_wear_steps;
+    continuum::PinWearParameters wp = pin_wear_parameters(k);
     // Grid size: Hertz, and the cap an Archard wear at the law's largest w/p would flatten over the run.
     double factor = 0.0;
     const auto &w = law->law->table(coupling::StateField::WearRate).mean;

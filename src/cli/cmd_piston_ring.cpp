@@ -348,10 +348,9 @@ struct PackRun {
   std::size_t breakaways = 0, resticks = 0;
 };
 
-PackRun run_pack(const PistonRingCase &c, const continuum::SlidingFriction &friction) {
-  PackRun r;
+// The pack from its rings' own curves: counters, the common output grid, the summed samples and their summary.
+void assemble_pack(PackRun &r, const PistonRingCase &c, const continuum::SlidingFriction &friction) {
   std::vector<const std::vector<PistonRingSample> *> own;
-  for (const auto &ring : c.rings) r.rings.push_back(run_dynamics(c, ring, friction));
   for (const auto &curve : r.rings) {
     own.push_back(&curve.samples);
     r.cvode_steps += curve.report.steps;
@@ -366,6 +365,12 @@ PackRun run_pack(const PistonRingCase &c, const continuum::SlidingFriction &fric
     const continuum::PistonRingSystem system(c.parameters, friction);  // motion and cycle of the summary
     r.summary = continuum::summarise(system, r.pack);
   }
+}
+
+PackRun run_pack(const PistonRingCase &c, const continuum::SlidingFriction &friction) {
+  PackRun r;
+  for (const auto &ring : c.rings) r.rings.push_back(run_dynamics(c, ring, friction));
+  assemble_pack(r, c, friction);
   return r;
 }
 
@@ -478,21 +483,7 @@ StateLawPack run_pack_state_law(const PistonRingCase &c, std::vector<continuum::
     out.use.beyond_depth += use.beyond_depth;
   }
   auto &r = out.run;
-  std::vector<const std::vector<PistonRingSample> *> own;
-  for (const auto &curve : r.rings) {
-    own.push_back(&curve.samples);
-    r.cvode_steps += curve.report.steps;
-    r.breakaways += curve.report.breakaway_times.size();
-    r.resticks += curve.report.restick_times.size();
-  }
-  r.grid = common_grid(own);
-  r.pack = pack_samples(r.grid);
-  if (c.rings.size() == 1) {
-    r.summary = r.rings.front().summary;
-  } else {
-    const continuum::PistonRingSystem system(c.parameters, *c.friction);
-    r.summary = continuum::summarise(system, r.pack);
-  }
+  assemble_pack(r, c, *c.friction);
   // Wear rows on the common grid: each ring's row of its last own sample at or before the grid time.
   for (std::size_t k = 0; k < c.rings.size(); ++k) {
     const auto &samples = r.rings[k].samples;
