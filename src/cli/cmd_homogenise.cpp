@@ -4,8 +4,10 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -105,6 +107,44 @@ pid_t spawn(const std::vector<std::string> &args, const fs::path &cwd, const fs:
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0) throw std::runtime_error("cannot start " + args.front() + " (set RUNIN_MPIRUN to the mpirun to use)");
   return pid;
+}
+
+// SIGINT/SIGTERM/SIGHUP while samples run: the handler only records the signal; the polling loops forward it to
+// the running mpiruns (which stop their ranks), wait for them and stop with one line. Finished samples stay cached.
+volatile std::sig_atomic_t g_interrupt = 0;
+extern "C" void record_interrupt(int signal) { g_interrupt = signal; }
+
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    struct sigaction action {};
+    action.sa_handler = record_interrupt;
+    sigemptyset(&action.sa_mask);
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &action, &previous_[i]);
+  }
+  ~InterruptGuard() {
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &previous_[i], nullptr);
+  }
+  InterruptGuard(const InterruptGuard &) = delete;
+  InterruptGuard &operator=(const InterruptGuard &) = delete;
+
+ private:
+  static constexpr std::array<int, 3> kSignals = {SIGINT, SIGTERM, SIGHUP};
+  std::array<struct sigaction, 3> previous_{};
+};
+
+// After a recorded signal: terminate the children, reap them and throw (runin exits 1 naming the signal).
+void stop_if_interrupted(const std::vector<pid_t> &children) {
+  if (!g_interrupt) return;
+  const int signal = g_interrupt;
+  for (pid_t pid : children) kill(pid, SIGTERM);
+  for (pid_t pid : children) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+  }
+  throw std::runtime_error(fmt::format("interrupted by signal {} ({}): the running samples were stopped; the "
+                                       "finished ones are cached, a rerun continues from them",
+                                       signal, strsignal(signal)));
 }
 
 // Exit status of a finished child, or nullopt while it runs.
@@ -237,9 +277,11 @@ int run_partitioned(const std::vector<const Sample *> &todo, int n, const std::s
   fmt::print("runin homogenise: {} {} ... ({} samples, {} partitions; logs in each sample's directory)\n", args[0],
              fmt::format("-np {}", n), todo.size(), n);
   std::fflush(stdout);
+  const InterruptGuard guard;
   const pid_t pid = spawn(args, work, work / "mpirun.out");
   std::optional<int> status;
   while (!(status = poll_child(pid))) {
+    stop_if_interrupted({pid});
     progress.poll();
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
@@ -264,7 +306,11 @@ std::vector<Failure> run_isolated(const std::vector<const Sample *> &todo, int n
     if (error.empty()) error = fmt::format("no output and no ERROR line (exit status {})", status);
     failures.push_back({&s, error});
   };
+  const InterruptGuard guard;
   while (next < todo.size() || !running.empty()) {
+    std::vector<pid_t> children;
+    for (const auto &r : running) children.push_back(r.first);
+    stop_if_interrupted(children);
     while (next < todo.size() && static_cast<int>(running.size()) < n) {
       const std::vector<std::string> args = {mpirun_program(), "-np", "1", "--oversubscribe", lmp,
                                              "-in", (todo[next]->dir / "sample.in").string(),

@@ -14,6 +14,9 @@ MODE fail:   a deck that stops with an ERROR for one (pressure, seed): the other
              the failing one is named with its ERROR line, the law is written from the other seed, exit 1; a
              rerun runs only the failing sample again. A deck that fails at every seed of one pressure: exit 1,
              no law written.
+MODE interrupt: SIGTERM to runin homogenise after its first finished sample (shipped cell, 4 samples of 576
+             summits, several seconds each): it stops its mpirun (no lmp_runin or mpirun left with the cache in its command line), exits
+             1 with one line naming the signal, keeps the finished samples; a rerun runs only the others.
 """
 import argparse
 import json
@@ -171,13 +174,61 @@ def mode_fail(args):
         fail("a law was written with a pressure that has no good seed")
 
 
+def mode_interrupt(args):
+    import signal
+    work = os.path.abspath(args.workdir)
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    case = os.path.join(work, "case.toml")
+    with open(case, "w") as f:
+        # samples of several seconds: mpirun takes about a second to stop its ranks after SIGTERM
+        f.write(CASE.format(material=args.material).replace("nside = 6", "nside = 24")
+                .replace("depth = 2.0e-9", "depth = 3.0e-8").replace("nslide = 4000", "nslide = 200000")
+                .replace("acceleration = [2000.0, 1000.0]", "acceleration = [30.0, 15.0]"))
+    cache, law = os.path.join(work, "cache"), os.path.join(work, "law.json")
+    command = [args.runin, "homogenise", case, "--output", law, "--cache-dir", cache, "--np", "2", "--lmp", args.lmp]
+    proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    for line in proc.stdout:
+        if "sample 1/4 done" in line:
+            break
+    else:
+        fail("the run ended before its first sample: " + proc.stderr.read())
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=60)
+    if proc.returncode != 1 or "interrupted by signal 15" not in err or len(err.strip().splitlines()) != 1:
+        fail(f"after SIGTERM: exit {proc.returncode}, stderr {err!r}")
+    time.sleep(0.5)
+    left = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit() or int(pid) == os.getpid():
+            continue
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as f:
+                cmdline = f.read()
+        except OSError:
+            continue
+        if work.encode() in cmdline and (b"lmp_runin" in cmdline or b"mpirun" in cmdline or b"runin" in cmdline):
+            left.append(cmdline.replace(b"\0", b" ").decode(errors="replace")[:120])
+    if left:
+        fail(f"processes left running after SIGTERM: {left}")
+    if os.path.exists(law):
+        fail("a law was written by the interrupted run")
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        fail(f"rerun failed: {result.stderr}")
+    todo = [l for l in result.stdout.splitlines() if "samples to run" in l]
+    if not todo or not 0 < int(todo[0].split("runin homogenise: ")[1].split()[0]) < 4:
+        fail(f"the rerun should run the stopped samples and reuse the finished ones: {todo}")
+    print("interrupt: " + err.strip() + "; rerun: " + todo[0])
+
+
 def main():
     parser = argparse.ArgumentParser()
     for option in ("--runin", "--lmp", "--reader", "--deck", "--workdir", "--material"):
         parser.add_argument(option, required=True)
-    parser.add_argument("--mode", choices=["build", "fail"], required=True)
+    parser.add_argument("--mode", choices=["build", "fail", "interrupt"], required=True)
     args = parser.parse_args()
-    {"build": mode_build, "fail": mode_fail}[args.mode](args)
+    {"build": mode_build, "fail": mode_fail, "interrupt": mode_interrupt}[args.mode](args)
     print("check_homogenise: ok")
 
 
