@@ -15,8 +15,9 @@ MODE fail:   a deck that stops with an ERROR for one (pressure, seed): the other
              rerun runs only the failing sample again. A deck that fails at every seed of one pressure: exit 1,
              no law written.
 MODE interrupt: SIGTERM to runin homogenise after its first finished sample (shipped cell, 4 samples of 576
-             summits, several seconds each): it stops its mpirun (no lmp_runin or mpirun left with the cache in its command line), exits
-             1 with one line naming the signal, keeps the finished samples; a rerun runs only the others.
+             summits, several seconds each): it stops its mpirun (no lmp_runin or mpirun left with the work
+             directory in its command line), exits 1 with one line naming the signal, keeps the finished samples;
+             a rerun runs only the others.
 """
 import argparse
 import json
