@@ -1,3 +1,4 @@
+#include "cli/child_process.h"
 #include "cli/cmd_homogenise.h"
 
 #include <algorithm>
@@ -19,8 +20,6 @@
 #include <thread>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -35,7 +34,7 @@
 #include "coupling/ave_time_reader.h"
 #include "coupling/state_law.h"
 
-extern char **environ;
+extern char **environ;  // mpi_environment()
 
 namespace runin::cli {
 namespace {
@@ -86,27 +85,16 @@ std::vector<std::string> mpi_environment() {
   return out;
 }
 
-// Starts `args` in `cwd` with stdout and stderr to `output`; returns the pid.
+// Starts `args` in `cwd` with stdout and stderr to `output`, in the mpirun environment; returns the pid.
 pid_t spawn(const std::vector<std::string> &args, const fs::path &cwd, const fs::path &output) {
-  std::vector<std::string> env_text = mpi_environment();
-  std::vector<char *> argv, envp;
-  std::vector<std::string> copy = args;
-  for (auto &a : copy) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  for (auto &e : env_text) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  // POSIX has no chdir action before POSIX.1-2024; glibc has had the _np one since 2.29
-  posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
-  pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, args.front().c_str(), &actions, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) throw std::runtime_error("cannot start " + args.front() + " (set RUNIN_MPIRUN to the mpirun to use)");
-  return pid;
+  ChildStreams streams;
+  streams.stdout_file = output;
+  streams.working_directory = cwd;
+  try {
+    return start_child(args, streams, mpi_environment());
+  } catch (const std::runtime_error &) {
+    throw std::runtime_error("cannot start " + args.front() + " (set RUNIN_MPIRUN to the mpirun to use)");
+  }
 }
 
 // SIGINT/SIGTERM/SIGHUP while samples run: the handler only records the signal; the polling loops forward it to
@@ -147,15 +135,6 @@ void stop_if_interrupted(const std::vector<pid_t> &children) {
                                        signal, strsignal(signal)));
 }
 
-// Exit status of a finished child, or nullopt while it runs.
-std::optional<int> poll_child(pid_t pid) {
-  int status = 0;
-  const pid_t done = waitpid(pid, &status, WNOHANG);
-  if (done == 0) return std::nullopt;
-  if (done < 0) return 255;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 std::string mpirun_program() {
   const char *env = std::getenv("RUNIN_MPIRUN");
   return env && *env ? env : "mpirun";
@@ -166,14 +145,6 @@ std::string first_line_starting(const fs::path &file, const std::string &prefix)
   for (std::string line; std::getline(in, line);)
     if (line.rfind(prefix, 0) == 0) return line;
   return {};
-}
-
-std::string last_line(const fs::path &file) {
-  std::ifstream in(file);
-  std::string last;
-  for (std::string line; std::getline(in, line);)
-    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  return last;
 }
 
 // ---------------------------------------------------------------------------------------------------------------

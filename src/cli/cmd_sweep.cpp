@@ -1,3 +1,4 @@
+#include "cli/child_process.h"
 #include "cli/cmd_sweep.h"
 
 #include <chrono>
@@ -11,9 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/core.h>
@@ -24,7 +22,6 @@
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 
-extern char **environ;
 
 namespace runin::cli {
 namespace {
@@ -149,28 +146,9 @@ int run_element(const Options &o, const fs::path &case_file, const fs::path &run
   const std::string self = fs::read_symlink("/proc/self/exe").string();
   std::vector<std::string> args = {self, o.element, case_file.string(), "--output-dir", run_dir.string(), "--no-plot"};
   if (o.law_path) args.insert(args.end(), {"--law", *o.law_path});
-  std::vector<char *> argv;
-  for (auto &a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, self.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) throw std::runtime_error("cannot start " + self);
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0) throw std::runtime_error("lost the run of " + case_file.string());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
-std::string last_line(const fs::path &file) {
-  std::ifstream in(file);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
-  return last;
+  ChildStreams streams;
+  streams.stderr_file = log;
+  return wait_child(start_child(args, streams));
 }
 
 std::string csv_quote(const std::string &text) {
