@@ -95,15 +95,8 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       const std::string file = law_path ? *law_path : reader.text("friction.law", "");
       if (file.empty())
         reader.fail("friction.law", "missing (required): the state law file (runin homogenise), or --law FILE");
-      std::filesystem::path resolved(file);
-      if (resolved.is_relative() && !law_path) {
-        resolved = std::filesystem::path(reader.path()).parent_path() / file;
-#ifdef RUNIN_SOURCE_DIR
-        if (!std::filesystem::exists(resolved) && std::filesystem::exists(std::filesystem::path(RUNIN_SOURCE_DIR) / file))
-          resolved = std::filesystem::path(RUNIN_SOURCE_DIR) / file;
-#endif
-      }
-      state->path = resolved.lexically_normal().string();
+      state->path = (law_path ? std::filesystem::path(file).lexically_normal() : resolve_case_path(reader.path(), file))
+                        .string();
       if (!std::filesystem::exists(state->path)) reader.fail("friction.law", "no such file: " + state->path);
       try {
         state->law = std::make_shared<const coupling::StateLaw>(coupling::StateLaw::read_file(state->path));
@@ -153,14 +146,7 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
   }
 }
 
-std::optional<NamedMaterials> read_named_materials(const CaseReader &reader, const std::string &case_path,
-                                                   const std::string &section, const std::string &key_a,
-                                                   const std::string &key_b) {
-  const std::string file_key = section + ".materials", a_key = section + "." + key_a, b_key = section + "." + key_b;
-  if (!reader.has(file_key) && !reader.has(a_key) && !reader.has(b_key)) return std::nullopt;
-  NamedMaterials m;
-  const std::string file = reader.text(file_key, "");
-  if (file.empty()) reader.fail(file_key, "needed with " + a_key + " / " + b_key);
+std::filesystem::path resolve_case_path(const std::string &case_path, const std::string &file) {
   std::filesystem::path resolved(file);
   if (resolved.is_relative()) {
     resolved = std::filesystem::path(case_path).parent_path() / file;
@@ -169,7 +155,18 @@ std::optional<NamedMaterials> read_named_materials(const CaseReader &reader, con
       resolved = std::filesystem::path(RUNIN_SOURCE_DIR) / file;
 #endif
   }
-  m.path = resolved.lexically_normal().string();
+  return resolved.lexically_normal();
+}
+
+std::optional<NamedMaterials> read_named_materials(const CaseReader &reader, const std::string &case_path,
+                                                   const std::string &section, const std::string &key_a,
+                                                   const std::string &key_b) {
+  const std::string file_key = section + ".materials", a_key = section + "." + key_a, b_key = section + "." + key_b;
+  if (!reader.has(file_key) && !reader.has(a_key) && !reader.has(b_key)) return std::nullopt;
+  NamedMaterials m;
+  const std::string file = reader.text(file_key, "");
+  if (file.empty()) reader.fail(file_key, "needed with " + a_key + " / " + b_key);
+  m.path = resolve_case_path(case_path, file).string();
   if (!std::filesystem::exists(m.path)) reader.fail(file_key, "no such file: " + m.path);
   m.name_a = reader.text(a_key, "");
   m.name_b = reader.text(b_key, "");
@@ -283,16 +280,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     if (reader.has("contact.materials") || reader.has("contact.pin_material") || reader.has("contact.disk_material")) {
       const std::string file = reader.text("contact.materials", "");
       if (file.empty()) reader.fail("contact.materials", "needed with contact.pin_material / disk_material");
-      // Relative paths: to the case file's directory, else to the RunIn source tree (the shipped potentials/).
-      std::filesystem::path resolved(file);
-      if (resolved.is_relative()) {
-        resolved = std::filesystem::path(path).parent_path() / file;
-#ifdef RUNIN_SOURCE_DIR
-        if (!std::filesystem::exists(resolved) && std::filesystem::exists(std::filesystem::path(RUNIN_SOURCE_DIR) / file))
-          resolved = std::filesystem::path(RUNIN_SOURCE_DIR) / file;
-#endif
-      }
-      k.materials_path = resolved.lexically_normal().string();
+      k.materials_path = resolve_case_path(path, file).string();
       k.pin_name = reader.text("contact.pin_material", "");
       k.disk_name = reader.text("contact.disk_material", "");
       if (k.pin_name.empty() || k.disk_name.empty())

@@ -1,6 +1,7 @@
 // Reading and validating a pin-on-disk case file (TOML).
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <set>
@@ -69,6 +70,11 @@ PinOnDiskCase with_mu0(const PinOnDiskCase &c, double mu0);
 tribo::Material read_runin_material(const std::string &path, const std::string &name);
 
 class CaseReader;
+// A file named in a case file: an absolute path as given; a relative one against the case file's directory, else
+// (when that does not exist and the source tree has it) against the RunIn source tree, the shipped potentials/
+// and inputs/. Lexically normal; whether it exists is the caller's check.
+std::filesystem::path resolve_case_path(const std::string &case_path, const std::string &file);
+
 // Two materials named in a RunIn coefficient file, for the subsurface-stress yield verdict of the line contacts
 // (journal bearing, piston ring): `<section>.materials` (the .runin file; relative: to the case file's
 // directory, else to the RunIn source tree) with `<section>.<key_a>` and `<section>.<key_b>`. None of the three
@@ -77,6 +83,12 @@ struct NamedMaterials {
   std::string path;                  // resolved
   std::string name_a, name_b;
   tribo::Material a, b;              // E, nu, H, S_y (0 if the file gives none) from the file
+
+  // The yield verdict's strengths into the case's materials; their E and nu stay the case's (the contact model's).
+  void copy_strengths(tribo::Material &to_a, tribo::Material &to_b) const {
+    to_a.yield_strength = a.yield_strength, to_a.hardness = a.hardness;
+    to_b.yield_strength = b.yield_strength, to_b.hardness = b.hardness;
+  }
 };
 std::optional<NamedMaterials> read_named_materials(const CaseReader &reader, const std::string &case_path,
                                                    const std::string &section, const std::string &key_a,

@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "cli/case_file.h"
+#include "cli/line_stress_report.h"
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/axisymmetric_contact.h"
@@ -393,12 +394,7 @@ std::vector<std::string> write_stress(const std::vector<StressFrame> &frames, co
   std::vector<coupling::SurfaceFrame> out;
   for (const auto &f : frames) {
     const auto &disk = f.stress.disk.field, &pin = f.stress.pin.field;
-    coupling::SurfaceFrame s;
-    s.time = f.time;
-    s.nu = static_cast<int>(disk.x.size());
-    s.nv = static_cast<int>(disk.z.size());
-    for (double z : disk.z)
-      for (double x : disk.x) s.points.push_back({x, 0.0, -z});
+    coupling::SurfaceFrame s = section_frame(f.time, disk);
     std::vector<double> xx, yy, zz, yz, xz, xy;
     for (const auto &t : disk.stress) {
       xx.push_back(t.xx), yy.push_back(t.yy), zz.push_back(t.zz);

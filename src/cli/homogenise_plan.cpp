@@ -53,13 +53,7 @@ HomogeniseCase read_homogenise_case(const std::string &path) {
 
   // [material]: a RunIn coefficient file (relative: to the case file's directory, else to the RunIn source tree)
   const std::string file = required_text(reader, "material.file");
-  fs::path resolved(file);
-  if (resolved.is_relative()) {
-    resolved = fs::path(path).parent_path() / file;
-#ifdef RUNIN_SOURCE_DIR
-    if (!fs::exists(resolved) && fs::exists(fs::path(RUNIN_SOURCE_DIR) / file)) resolved = fs::path(RUNIN_SOURCE_DIR) / file;
-#endif
-  }
+  const fs::path resolved = resolve_case_path(path, file);
   std::error_code error;
   if (!fs::is_regular_file(resolved, error)) reader.fail("material.file", "no such file: " + resolved.string());
   c.material_file = fs::absolute(resolved).lexically_normal().string();

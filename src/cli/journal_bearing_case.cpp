@@ -68,10 +68,7 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   if (const auto named = read_named_materials(reader, path, "contact", "bearing_material", "shaft_material")) {
     c.bearing_material_name = named->name_a;
     c.shaft_material_name = named->name_b;
-    c.bearing_material.yield_strength = named->a.yield_strength;
-    c.bearing_material.hardness = named->a.hardness;
-    c.shaft_material.yield_strength = named->b.yield_strength;
-    c.shaft_material.hardness = named->b.hardness;
+    named->copy_strengths(c.bearing_material, c.shaft_material);
   }
 
   p.ramp_angle = reader.number("drive.ramp_angle", 1.0);

@@ -6,10 +6,6 @@
 
 #include <fmt/core.h>
 
-#ifdef RUNIN_HAVE_VTK
-#include "coupling/vtk_export.h"
-#endif
-
 namespace runin::cli {
 
 tribo::Material verdict_material(const tribo::Material &m) {
@@ -22,20 +18,27 @@ std::string body_label(const std::string &body, const std::string &material_name
   return material_name.empty() ? body : fmt::format("{} ({})", body, material_name);
 }
 
+#ifdef RUNIN_HAVE_VTK
+coupling::SurfaceFrame section_frame(double time, const tribo::StressField &grid) {
+  coupling::SurfaceFrame s;
+  s.time = time;
+  s.nu = static_cast<int>(grid.x.size());
+  s.nv = static_cast<int>(grid.z.size());
+  for (double z : grid.z)
+    for (double x : grid.x) s.points.push_back({x, 0.0, -z});
+  return s;
+}
+#endif
+
 std::vector<std::string> write_line_stress(const LineStressReport &report, const std::filesystem::path &dir,
                                            const std::string &stem) {
 #ifdef RUNIN_HAVE_VTK
   std::vector<coupling::SurfaceFrame> out;
   for (const auto &f : report.frames) {
     const auto &a = f.stress.a.field, &b = f.stress.b.field;
-    coupling::SurfaceFrame s;
-    s.time = f.time;
-    s.nu = static_cast<int>(a.x.size());
-    s.nv = static_cast<int>(a.z.size());
-    for (double z : a.z)
-      for (double x : a.x) s.points.push_back({x, 0.0, -z});
-    // The equivalent stresses only: the six components of both bodies would triple the files (and the zlib
-    // time, the largest part of the stress cost of a run); tribo::line_traction_field gives them on demand.
+    coupling::SurfaceFrame s = section_frame(f.time, a);
+    // The equivalent stresses only: the six components of both bodies would triple the files (and the
+    // compression time); tribo::line_traction_field gives them on demand.
     const std::string &na = report.field_a, &nb = report.field_b;
     s.fields = {{"von_mises_" + na + "_Pa", a.von_mises()}, {"tresca_" + na + "_Pa", a.tresca()},
                 {"von_mises_" + nb + "_Pa", b.von_mises()}, {"tresca_" + nb + "_Pa", b.tresca()}};

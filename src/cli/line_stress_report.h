@@ -7,6 +7,9 @@
 #include <vector>
 
 #include "continuum/contact_stress.h"
+#ifdef RUNIN_HAVE_VTK
+#include "coupling/vtk_export.h"
+#endif
 
 namespace runin::cli {
 
@@ -30,6 +33,11 @@ struct LineStressReport {
 tribo::Material verdict_material(const tribo::Material &m);
 // "bearing (Steel1020)" or "bearing".
 std::string body_label(const std::string &body, const std::string &material_name);
+
+#ifdef RUNIN_HAVE_VTK
+// A stress section as a VTK frame without arrays: points (x, 0, -depth) [m] of the field's grid.
+coupling::SurfaceFrame section_frame(double time, const tribo::StressField &grid);
+#endif
 
 // Section below the contact: points (x, 0, -depth) [m], arrays von_mises_<a>_Pa, tresca_<a>_Pa,
 // von_mises_<b>_Pa, tresca_<b>_Pa. Returns the written files (.pvd last).

@@ -90,10 +90,7 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   if (const auto named = read_named_materials(reader, path, "material", "ring_material", "liner_material")) {
     c.ring_material_name = named->name_a;
     c.liner_material_name = named->name_b;
-    c.ring_material.yield_strength = named->a.yield_strength;
-    c.ring_material.hardness = named->a.hardness;
-    c.liner_material.yield_strength = named->b.yield_strength;
-    c.liner_material.hardness = named->b.hardness;
+    named->copy_strengths(c.ring_material, c.liner_material);
   }
 
   // The rings: [ring_pack] (arrays, one element per ring, groove order A, B, ...) or the one ring of [ring].
