@@ -13,7 +13,6 @@ Uses Debian's matplotlib and numpy: run with /usr/bin/python3.
 """
 import argparse
 import csv
-import json
 import math
 import os
 import tempfile
@@ -21,36 +20,10 @@ import tempfile
 import numpy as np
 import matplotlib
 
+from state_law import StateLaw  # the C++ reader's interpolation rule (tools/state_law.py)
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-class Law:
-    """Linear in h, power law in p where positive, h held beyond the grid, p clamped: the reader's rule
-    (doc/state_law.md)."""
-
-    def __init__(self, path):
-        with open(path) as f:
-            doc = json.load(f)
-        self.p = np.array(doc["pressure"], dtype=float)
-        self.h = np.array(doc["worn_depth"], dtype=float)
-        self.fields = doc["fields"]
-
-    def grid(self, field, band="mean"):
-        node = self.fields[field]
-        return np.array(node.get(band, node["mean"]), dtype=float)
-
-    def __call__(self, field, p, h, band="mean"):
-        g = self.grid(field, band)
-        lp = np.clip(np.log(p), np.log(self.p[0]), np.log(self.p[-1]))
-        i = int(np.clip(np.searchsorted(np.log(self.p), lp) - 1, 0, len(self.p) - 2))
-        w = (lp - np.log(self.p[i])) / (np.log(self.p[i + 1]) - np.log(self.p[i]))
-        hh = np.clip(h, 0.0, self.h[-1])
-        lower = np.interp(hh, self.h, g[i])
-        upper = np.interp(hh, self.h, g[i + 1])
-        if lower > 0.0 and upper > 0.0:
-            return lower * (upper / lower) ** w
-        return (1 - w) * lower + w * upper
 
 
 def read_element(path):
@@ -75,26 +48,26 @@ def main():
     parser.add_argument("csv")
     parser.add_argument("--element", nargs=3, action="append", default=[], metavar=("LABEL", "CSV", "PRESSURE_PA"))
     args = parser.parse_args()
-    law = Law(args.law)
+    law = StateLaw(args.law)
 
     fig, axes = plt.subplots(1, 3, figsize=(16, 4.8))
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, len(law.p)))
-    h_nm = law.h * 1e9
+    h_nm = np.array(law.h) * 1e9
     for i, p in enumerate(law.p):
         for ax, field, scale in ((axes[0], "mu_body", 1.0), (axes[1], "rq", 1e9)):
-            mean = law.grid(field)[i] * scale
+            mean = np.array(law.grid(field)[i]) * scale
             ax.plot(h_nm, mean, color=colours[i], lw=1.2, label=f"cell {p / 1e6:.3g} MPa" if ax is axes[0] else None)
             if "low" in law.fields[field]:
-                ax.fill_between(h_nm, law.grid(field, "low")[i] * scale, law.grid(field, "high")[i] * scale,
+                ax.fill_between(h_nm, np.array(law.grid(field, "low")[i]) * scale, np.array(law.grid(field, "high")[i]) * scale,
                                 color=colours[i], alpha=0.2, lw=0)
 
     rows = []
     for (label, path, pressure), style in zip(args.element, ("--", "-.", ":", (0, (5, 1)))):
         p = float(pressure)
         t, mu, h = read_element(path)
-        low = np.array([law("mu_body", p, x, "low") for x in h])
-        high = np.array([law("mu_body", p, x, "high") for x in h])
-        rq = np.array([law("rq", p, x) for x in h])
+        low = np.array([law.value("mu_body", p, x, "low") for x in h])
+        high = np.array([law.value("mu_body", p, x, "high") for x in h])
+        rq = np.array([law.value("rq", p, x) for x in h])
         axes[0].plot(h * 1e9, mu, "k", ls=style, lw=1.5, label=f"{label} (continuum, {p / 1e6:.3g} MPa)")
         axes[1].plot(h * 1e9, rq * 1e9, "k", ls=style, lw=1.5, label=f"{label} Rq(p, h_mean)")
         axes[2].plot(t, mu, "k", ls=style, lw=1.5, label=label)

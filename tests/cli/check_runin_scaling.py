@@ -11,13 +11,14 @@ sigma H / (k p): asserted, the log-log slope over the three pressures within 20 
 """
 import argparse
 import csv
-import json
 import math
 import os
 import subprocess
 import sys
 
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE, "tools"))
+from state_law import StateLaw  # noqa: E402  (the C++ reader's interpolation rule)
 LAW = os.path.join(SOURCE, "inputs", "state_law_steel.json")
 RADIUS = 1.5e-3
 PRESSURES = (632455.5320336759, 2.0e6, 6324555.320336758)
@@ -29,28 +30,17 @@ def fail(message):
     sys.exit(1)
 
 
-def law_rq(law, p, h):
-    """The reader's rule (doc/state_law.md): linear in h, power law between pressures."""
-    ps, hs, g = law["pressure"], law["worn_depth"], law["fields"]["rq"]["mean"]
-    i = min(range(len(ps)), key=lambda k: abs(math.log(ps[k] / p)))
-    if abs(ps[i] / p - 1.0) > 1e-9:
-        fail(f"{p} Pa is not a grid pressure of the law")
-    h = min(max(h, 0.0), hs[-1])
-    j = min(max(next((k for k in range(len(hs)) if hs[k] > h), len(hs) - 1), 1), len(hs) - 1)
-    w = (h - hs[j - 1]) / (hs[j] - hs[j - 1])
-    return (1 - w) * g[i][j - 1] + w * g[i][j]
-
-
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--runin", required=True)
     ap.add_argument("--workdir", required=True)
     a = ap.parse_args()
     os.makedirs(a.workdir, exist_ok=True)
-    with open(LAW) as f:
-        law = json.load(f)
+    law = StateLaw(LAW)
     distances = []
     for p in PRESSURES:
+        if law.grid_index(p, 1e-9) is None:
+            fail(f"{p} Pa is not a grid pressure of the law")
         load = p * math.pi * RADIUS ** 2
         case = os.path.join(a.workdir, f"pod_{p:.4g}.toml")
         with open(case, "w") as f:
@@ -81,11 +71,11 @@ output_interval = 5e-5
             fail(f"pin-on-disk at {p:g} Pa: {result.stderr.strip()}")
         with open(os.path.join(out, "pin_on_disk.csv")) as f:
             rows = list(csv.DictReader(f))
-        rq0 = law_rq(law, p, 0.0)
+        rq0 = law.value("rq", p, 0.0)
         s_runin = None
         for r0, r1 in zip(rows, rows[1:]):
-            q0 = law_rq(law, p, float(r0["h_mean_m"]))
-            q1 = law_rq(law, p, float(r1["h_mean_m"]))
+            q0 = law.value("rq", p, float(r0["h_mean_m"]))
+            q1 = law.value("rq", p, float(r1["h_mean_m"]))
             if q0 > DROP * rq0 >= q1:
                 w = (q0 - DROP * rq0) / (q0 - q1)
                 s0, s1 = float(r0["sliding_distance_m"]), float(r1["sliding_distance_m"])

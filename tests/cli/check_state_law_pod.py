@@ -14,38 +14,17 @@ import argparse
 import bisect
 import csv
 import glob
-import json
 import math
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from state_law import StateLaw  # noqa: E402  (the C++ reader's interpolation rule)
 
 
 def fail(msg):
     print("check_state_law_pod: " + msg)
     sys.exit(1)
-
-
-class Law:
-    def __init__(self, path):
-        d = json.load(open(path))
-        self.p = d["pressure"]
-        self.lp = [math.log(x) for x in self.p]
-        self.h = d["worn_depth"]
-        self.f = {k: v["mean"] for k, v in d["fields"].items()}
-
-    def value(self, field, p, h):
-        lp = min(max(math.log(p), self.lp[0]), self.lp[-1])
-        i = min(max(bisect.bisect_right(self.lp, lp), 1), len(self.lp) - 1) - 1
-        wp = (lp - self.lp[i]) / (self.lp[i + 1] - self.lp[i])
-        h = min(max(h, 0.0), self.h[-1])
-        j = min(max(bisect.bisect_right(self.h, h), 1), len(self.h) - 1) - 1
-        wh = (h - self.h[j]) / (self.h[j + 1] - self.h[j])
-        g = self.f[field]
-        lo = (1 - wh) * g[i][j] + wh * g[i][j + 1]
-        hi = (1 - wh) * g[i + 1][j] + wh * g[i + 1][j + 1]
-        if lo > 0.0 and hi > 0.0:  # the reader's power law between pressures (doc/state_law.md)
-            return lo * (hi / lo) ** wp
-        return (1 - wp) * lo + wp * hi
 
 
 def main():
@@ -66,7 +45,7 @@ def main():
     for key in ("mu_eff", "h_mean_m", "h_max_m"):
         if key not in rows[0]:
             fail("column %s missing" % key)
-    law = Law(a.law)
+    law = StateLaw(a.law)
     s = [float(r["sliding_distance_m"]) for r in rows]
     if s[-1] < a.min_distance:
         fail("slid %g m < %g m" % (s[-1], a.min_distance))
@@ -116,12 +95,12 @@ def main():
         if worst_mu > 0.01 or worst_h > 0.01:
             fail("flat punch departs from the law by more than 1 %")
         if a.cell_curve:
-            i = min(range(len(law.p)), key=lambda k: abs(math.log(law.p[k] / p)))
-            if abs(law.p[i] / p - 1) > 1e-6:
+            i = law.grid_index(p)
+            if i is None:
                 fail("--cell-curve needs P on the law's pressure grid")
             mu_col = [float(r["mu_eff"]) for r in rows]
             worst, compared = 0.0, 0
-            for s_cell, mu_cell in zip(law.f["sliding_distance"][i], law.f["mu_body"][i]):
+            for s_cell, mu_cell in zip(law.grid("sliding_distance")[i], law.grid("mu_body")[i]):
                 if s_cell <= 0 or s_cell > s[-1]:
                     continue
                 k = bisect.bisect_left(s, s_cell)
