@@ -16,17 +16,11 @@ import subprocess
 import sys
 
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE, "tests", "lammps"))
+from run_deck import mpi_env  # noqa: E402  (Open MPI as root, oversubscription, one thread per rank)
 P1, P2, PMID = 3.0e6, 7.3e6, (3.0e6 * 7.3e6) ** 0.5
 DEPTH, SEED, NSIDE = 3.0e-8, 4711, 32
 LIMIT = 0.03
-
-
-def env():
-    e = dict(os.environ)
-    for k in ("OMPI_ALLOW_RUN_AS_ROOT", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "OMPI_MCA_rmaps_base_oversubscribe"):
-        e.setdefault(k, "1")
-    e.setdefault("OMP_NUM_THREADS", "1")
-    return e
 
 
 def fail(message):
@@ -35,7 +29,7 @@ def fail(message):
 
 
 def run(command, cwd):
-    result = subprocess.run(command, cwd=cwd, env=env(), capture_output=True, text=True)
+    result = subprocess.run(command, cwd=cwd, env=mpi_env(), capture_output=True, text=True)
     if result.returncode != 0:
         fail(f"{' '.join(command[:3])} ... exited {result.returncode}\n{result.stdout[-2000:]}\n{result.stderr[-2000:]}")
     return result.stdout
