@@ -660,8 +660,7 @@ void PairRuninAsperity::eval(int eflag)
       for (int k = 0; k < 3; k++) local_sums.tangential_force[k] += orient * ft[k];
       local_sums.contacts += weight;
       if (!contact.tangential.slipping) local_sums.sticking_contacts += weight;
-      const double a = contact.normal.contact_radius;
-      local_sums.contact_area += weight * MY_PI * a * a;
+      local_sums.contact_area += weight * contact.normal.real_area;
       local_sums.adhesion_force += weight * contact.strength.adhesion;
       local_sums.ploughing_force += weight * contact.strength.ploughing;
       local_sums.frictional_power +=

@@ -352,7 +352,6 @@ void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **hi
   if (worn_geometry && !advance) fix_wear->refresh_geometry_all();    // volumes may have been set or restarted
   const double normal[3] = {0.0, 0.0, side_sign};    // from the wall to the asperity
   double *local = out.local;
-  const double pi = std::acos(-1.0);
   for (int i = 0; i < a.nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double r = radius[i];
@@ -423,7 +422,7 @@ void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **hi
     for (int k = 0; k < 3; k++) sums.tangential_force[k] -= ft[k];
     sums.contacts += 1.0;
     if (!contact.tangential.slipping) sums.sticking_contacts += 1.0;
-    sums.contact_area += pi * contact.normal.contact_radius * contact.normal.contact_radius;
+    sums.contact_area += contact.normal.real_area;
     sums.adhesion_force += contact.strength.adhesion;
     sums.ploughing_force += contact.strength.ploughing;
     if (advance && dt > 0.0)

@@ -31,7 +31,6 @@ using tribo::SubModelKind;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const char *const kHistoryId = "RUNIN_CONTACT_HISTORY";
 
 // LIGGGHTS's contact history fix (style "contacthistory", which LIGGGHTS's granular neighbour lists look
@@ -568,8 +567,7 @@ void PairRuninAsperityLiggghts::eval(int eflag)
       for (int k = 0; k < 3; k++) local_sums.tangential_force[k] += orient * ft[k];
       local_sums.contacts += weight;
       if (!contact.tangential.slipping) local_sums.sticking_contacts += weight;
-      const double a = contact.normal.contact_radius;
-      local_sums.contact_area += weight * kPi * a * a;
+      local_sums.contact_area += weight * contact.normal.real_area;
       local_sums.adhesion_force += weight * contact.strength.adhesion;
       local_sums.ploughing_force += weight * contact.strength.ploughing;
       local_sums.frictional_power +=

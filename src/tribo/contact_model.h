@@ -69,6 +69,8 @@ struct NormalContact {
   double force = 0.0;             // elastic (or elastic-plastic) force, no damping [N]
   double stiffness = 0.0;         // dF/d(delta) [N/m]
   double contact_radius = 0.0;    // a [m]
+  // Area that carries the adhesion [m^2]: pi a^2, except on an elastically reloaded worn flat (below)
+  double real_area = 0.0;
   // Ploughing force of the permanent groove (elastic-plastic models; 0 below yield) [N], and whether the
   // model knows plasticity at all (an elastic model leaves ploughing to the cone of friction_strength.h)
   double groove_ploughing = 0.0;
@@ -119,6 +121,7 @@ class HertzNormalModel {
     out.force = c.force;
     out.stiffness = c.stiffness;
     out.contact_radius = c.contact_radius;
+    out.real_area = 3.14159265358979323846 * c.contact_radius * c.contact_radius;
     return out;
   }
   double elastic_energy(const ContactGeometry &g, const double *) const
@@ -148,7 +151,8 @@ class ElasticPlasticNormalModel {
   static constexpr int history_slots = CONTACT_HISTORY_SIZE - HISTORY_MAX_OVERLAP;
   explicit ElasticPlasticNormalModel(const double *c)
       : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]), inv_omega_c_(1.0 / unit_.critical_interference()),
-        stick_critical_load_(BrizmerStaticFriction::critical_load_ratio(c[2]) * unit_.critical_force())
+        stick_critical_load_(BrizmerStaticFriction::critical_load_ratio(c[2]) * unit_.critical_force()),
+        inv_flow_pressure_(1.0 / (JacksonGreen::kHardnessLimit * c[1]))
   {
   }
   Coefficients values() const
@@ -217,6 +221,7 @@ class ElasticPlasticNormalModel {
     out.contact_radius *= R;
     out.stiffness *= R;
     out.groove_ploughing *= R * R;
+    out.real_area = kPi * out.contact_radius * out.contact_radius;
 
     // a flat that this contact's own plastic history does not explain (worn, or flattened by an earlier
     // contact) reloads elastically (Sneddon) until it reaches the elastic-plastic force
@@ -227,6 +232,7 @@ class ElasticPlasticNormalModel {
         out.stiffness = flat.stiffness;
         out.contact_radius = flat.contact_radius;
         out.groove_ploughing = 0.0;    // an elastic flat ploughs nothing; no new plastic history
+        out.real_area = worn_flat_real_area(flat.force, flat.contact_radius);
         return out;
       }
     }
@@ -260,6 +266,18 @@ class ElasticPlasticNormalModel {
   }
   double effective_modulus() const { return e_eff_; }
   const JacksonGreen &unit_curve() const { return unit_; }
+  // Real area of a worn flat pressed elastically with force F over the contact radius a. Sneddon's solution
+  // assumes the flat and its counter-surface conform over pi a^2 at any load; a real wear scar carries the
+  // load on its own finer roughness, whose micro-contacts are fully plastic (their plasticity index is far
+  // above 1): Bowden & Tabor's A = F / H with the small-contact limit of the Jackson-Green hardness,
+  // H_G(a/R -> 0) = 2.84 S_y. Capped at pi a^2, which it reaches where the flat's mean pressure does.
+  double worn_flat_real_area(double force, double contact_radius) const
+  {
+    const double conforming = kPi * contact_radius * contact_radius;
+    const double plastic = force * inv_flow_pressure_;
+    return plastic < conforming ? plastic : conforming;
+  }
+  double micro_contact_flow_pressure() const { return 1.0 / inv_flow_pressure_; }
 
  private:
   static constexpr double kPi = 3.14159265358979323846;
@@ -267,6 +285,7 @@ class ElasticPlasticNormalModel {
   JacksonGreen unit_;    // the loading curve of a unit-radius sphere
   double inv_omega_c_;   // 1 / omega_c of the unit sphere
   double stick_critical_load_;    // L_c of the unit sphere (fitted for 0.2 <= nu < 0.5; checked by its user)
+  double inv_flow_pressure_;      // 1 / (2.84 S_y): the flow pressure of a worn flat's micro-contacts
 };
 
 // Damping: restitution-calibrated viscoelastic damping (contact.h).
@@ -356,8 +375,7 @@ class StrengthFrictionModel {
     if (!(normal_force > 0.0)) return 0.0;
     if (normal.plastic_model) {
       // adhesion over the elastic-plastic real area; ploughing only by the plastic groove (0 below yield)
-      parts.adhesion = strength_.shear_strength() * 3.14159265358979323846 * normal.contact_radius *
-                       normal.contact_radius;
+      parts.adhesion = strength_.shear_strength() * normal.real_area;
       parts.ploughing = strength_.ploughing_factor() * normal.groove_ploughing;
     } else {
       parts = strength_.strength(normal_force, normal.contact_radius, overlap);
@@ -392,8 +410,7 @@ class BrizmerFrictionModel {
                FrictionStrengthParts &parts) const
   {
     if (!(normal_force > 0.0)) return 0.0;
-    parts.adhesion =
-        strength_.shear_strength() * 3.14159265358979323846 * normal.contact_radius * normal.contact_radius;
+    parts.adhesion = strength_.shear_strength() * normal.real_area;
     parts.ploughing = strength_.ploughing_factor() * normal.groove_ploughing;
     const double kinetic = parts.total();
     const double weight = slip <= 0.0 ? 1.0 : (d_c_ > 0.0 ? 1.0 - slip / d_c_ : 0.0);

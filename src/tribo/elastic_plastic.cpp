@@ -91,8 +91,8 @@ double JacksonGreen::mean_pressure(double omega) const
 double JacksonGreen::hardness_geometric(double omega) const
 {
   const double q = contact_radius(omega) / c_.effective_radius;
-  if (!(q > 0.0)) return 2.84 * c_.yield_strength;    // the limit a/R -> 0
-  return 2.84 * c_.yield_strength * (1.0 - std::exp(-0.82 * std::pow(q, -0.7)));
+  if (!(q > 0.0)) return kHardnessLimit * c_.yield_strength;    // the limit a/R -> 0
+  return kHardnessLimit * c_.yield_strength * (1.0 - std::exp(-0.82 * std::pow(q, -0.7)));
 }
 
 double ElasticPlasticUnloading::max_mean_pressure() const

@@ -75,6 +75,8 @@ class JacksonGreen {
   // omega* up to which the curve is tested (monotone, positive stiffness); the JG and EKK fits reach 110,
   // beyond that they are extrapolated. Hosts warn above it (NormalContact::range_ratio).
   static constexpr double kCheckedRange = 1000.0;
+  // H_G / S_y as a / R -> 0: the flow pressure of a small fully plastic contact
+  static constexpr double kHardnessLimit = 2.84;
 
   const ElasticPlasticCoefficients &coefficients() const { return c_; }
   HertzToFitTransition transition() const { return transition_; }
@@ -297,7 +299,7 @@ inline ContactPoint JacksonGreen::fit(double omega, double &log_x_out) const
   // q^(-0.7) = exp(-0.7 ln q), ln q = (ln x + ln(omega_c / R)) / 2 + ln growth
   const double q_pow = std::exp(-0.7 * (0.5 * (log_x + log_strain_c_) + log_growth));
   const double e_h = std::exp(-0.82 * q_pow);
-  const double h = 2.84 * (1.0 - e_h);    // H_G / S_y
+  const double h = kHardnessLimit * (1.0 - e_h);    // H_G / S_y
   // x^(5/12) = y^3 and x^(5/9) = y^4 with y = x^(5/36)
   const double y = std::exp(5.0 / 36.0 * log_x);
   const double x_512 = y * y * y;
@@ -312,7 +314,7 @@ inline ContactPoint JacksonGreen::fit(double omega, double &log_x_out) const
   // derivatives in x: dq/dx = q (1 + B) / (2x) and dh/dq = -2.84 * 0.574 q^(-1.7) e_h
   const double inv_x = 1.0 / x;
   const double dt1 = t1 * (1.5 - 0.25 * 5.0 / 12.0 * x_512) * inv_x;
-  const double dh = -2.84 * 0.82 * 0.7 * q_pow * e_h * 0.5 * (1.0 + B) * inv_x;
+  const double dh = -kHardnessLimit * 0.82 * 0.7 * q_pow * e_h * 0.5 * (1.0 + B) * inv_x;
   const double dg_2 = 0.04 * 5.0 / 9.0 * x_59 * e_2 * inv_x;
   const double dt2 = four_over_c * (dh * g_2 * x + h * dg_2 * x + h * g_2);
   out.contact_radius = a;

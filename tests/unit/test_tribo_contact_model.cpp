@@ -147,3 +147,49 @@ TEST(ContactModelElasticPlastic, CachedHistoryPathEqualsTheKernel)
   }
   EXPECT_EQ(checked, 600);
 }
+
+// A worn flat reloaded elastically (Sneddon) touches the counterface over pi a^2 at any load; its adhesion area
+// is that of its plastic micro-contacts, F / (2.84 S_y), up to pi a^2. An intact sphere keeps pi a^2 (JG).
+TEST(ContactModelElasticPlastic, WornFlatCarriesItsLoadOnPlasticMicroContacts)
+{
+  const auto choice = choice_of("elastic/plastic", "strength");
+  const tribo::ContactParameters p = steel();
+  const tribo::ContactModel model(choice, tribo::contact_coefficients(choice, p), {});
+  const double R = 2e-5, drop = 5e-8, pi = 3.14159265358979323846;
+  const double flat = std::sqrt(2.0 * R * drop - drop * drop);
+  const double flow_pressure = 2.84 * p.yield_strength;
+  for (double overlap : {1e-11, 1e-10, 1e-9}) {
+    double history[tribo::CONTACT_HISTORY_SIZE] = {0.0};
+    tribo::ContactGeometry g;
+    g.overlap = overlap;
+    g.effective_radius = R;
+    g.effective_mass = 1.0;
+    g.flat_radius = flat;
+    g.summit_drop = drop;
+    g.normal[2] = 1.0;
+    const tribo::ContactResult got = model.evaluate<1, 1, 0>(g, history, 1e-9, true);
+    const tribo::FlatHertzContact sneddon = tribo::flat_hertz_contact(p.effective_modulus, R, flat, overlap);
+    ASSERT_NEAR(got.normal.force, sneddon.force, 1e-12 * sneddon.force) << overlap;
+    const double conforming = pi * sneddon.contact_radius * sneddon.contact_radius;
+    const double micro = sneddon.force / flow_pressure;
+    ASSERT_LT(micro, conforming) << overlap;    // the flat's mean pressure is below the flow pressure
+    EXPECT_NEAR(got.normal.real_area, micro, 1e-12 * micro) << overlap;
+    EXPECT_NEAR(got.strength.adhesion, p.shear_strength * micro, 1e-12 * p.shear_strength * micro) << overlap;
+    EXPECT_EQ(got.strength.ploughing, 0.0);
+  }
+  // where the flat's mean pressure reaches the flow pressure the area is the whole flat
+  const tribo::ElasticPlasticNormalModel normal(
+      tribo::contact_coefficients(choice, p).of(SubModelKind::normal).data());
+  EXPECT_DOUBLE_EQ(normal.worn_flat_real_area(2.0 * flow_pressure * pi * flat * flat, flat), pi * flat * flat);
+  EXPECT_DOUBLE_EQ(normal.micro_contact_flow_pressure(), flow_pressure);
+  // an intact sphere: the Jackson-Green area
+  const tribo::JacksonGreen curve(p.effective_modulus, R, p.yield_strength, p.poisson_ratio);
+  double history[tribo::CONTACT_HISTORY_SIZE] = {0.0};
+  tribo::ContactGeometry g;
+  g.overlap = 5.0 * curve.critical_interference();
+  g.effective_radius = R;
+  g.effective_mass = 1.0;
+  g.normal[2] = 1.0;
+  const tribo::ContactResult sphere = model.evaluate<1, 1, 0>(g, history, 1e-9, true);
+  EXPECT_NEAR(sphere.normal.real_area, curve.contact_area(g.overlap), 1e-12 * curve.contact_area(g.overlap));
+}
