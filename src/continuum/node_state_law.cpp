@@ -36,10 +36,6 @@ void NodeStateLaw::reset_state(std::vector<double> h) {
   h_ = std::move(h);
 }
 
-coupling::StateLawValues NodeStateLaw::lookup(double p, double h) {
-  return law_->values(p, h, policy_, &use_);
-}
-
 double NodeStateLaw::mu_effective(const std::vector<double> &pressure, const std::vector<double> &area) {
   if (pressure.size() != h_.size() || area.size() != h_.size())
     throw std::invalid_argument("node state law: pressure/area size mismatch");
@@ -47,7 +43,7 @@ double NodeStateLaw::mu_effective(const std::vector<double> &pressure, const std
   for (std::size_t i = 0; i < h_.size(); ++i) {
     if (!(pressure[i] > 0.0)) continue;
     const double f = pressure[i] * area[i];
-    weighted += lookup(pressure[i], h_[i]).mu_body * f;
+    weighted += law_->value(StateField::MuBody, law_->slice(pressure[i], policy_), h_[i], &use_) * f;
     load += f;
   }
   return load > 0.0 ? weighted / load : 0.0;
@@ -57,7 +53,8 @@ std::vector<double> NodeStateLaw::node_mu(const std::vector<double> &pressure) c
   if (pressure.size() != h_.size()) throw std::invalid_argument("node state law: pressure size mismatch");
   std::vector<double> mu(h_.size(), 0.0);
   for (std::size_t i = 0; i < h_.size(); ++i)
-    if (pressure[i] > 0.0) mu[i] = law_->values(pressure[i], h_[i], OutOfRange::Clamp).mu_body;
+    if (pressure[i] > 0.0)
+      mu[i] = law_->value(StateField::MuBody, law_->slice(pressure[i], OutOfRange::Clamp), h_[i]);
   return mu;
 }
 
@@ -88,20 +85,28 @@ NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressur
   const int n = std::max(1, static_cast<int>(n_real));
   const double step = ds / n;
   inc.substeps = n;
+  const double last_depth = law_->worn_depth().back();
   for (std::size_t i = 0; i < h_.size(); ++i) {
     const double p = pressure[i];
     if (!(p > 0.0)) continue;
+    const coupling::StateLaw::PressureSlice slice = law_->slice(p, policy_);  // p is held over the step
     double h = h_[i], c = 0.0;
-    for (int k = 0; k < n; ++k) {
-      // Classic RK4 on dh/ds = w(p, h); the counterface depth is the same quadrature of its rate.
-      const auto v1 = lookup(p, h);
-      const auto v2 = lookup(p, h + 0.5 * step * v1.wear_rate);
-      const auto v3 = lookup(p, h + 0.5 * step * v2.wear_rate);
-      const auto v4 = lookup(p, h + step * v3.wear_rate);
-      h += step / 6.0 * (v1.wear_rate + 2.0 * v2.wear_rate + 2.0 * v3.wear_rate + v4.wear_rate);
-      c += step / 6.0 *
-           (v1.counterface_wear_rate + 2.0 * v2.counterface_wear_rate + 2.0 * v3.counterface_wear_rate +
-            v4.counterface_wear_rate);
+    double w1, c1, w2, c2, w3, c3, w4, c4;
+    if (h >= last_depth) {
+      // beyond the law's last worn depth its values are held: the rates are constant, one read is exact
+      law_->wear_rates(slice, h, &use_, w1, c1);
+      h += ds * w1;
+      c += ds * c1;
+    } else {
+      for (int k = 0; k < n; ++k) {
+        // Classic RK4 on dh/ds = w(p, h); the counterface depth is the same quadrature of its rate.
+        law_->wear_rates(slice, h, &use_, w1, c1);
+        law_->wear_rates(slice, h + 0.5 * step * w1, &use_, w2, c2);
+        law_->wear_rates(slice, h + 0.5 * step * w2, &use_, w3, c3);
+        law_->wear_rates(slice, h + step * w3, &use_, w4, c4);
+        h += step / 6.0 * (w1 + 2.0 * w2 + 2.0 * w3 + w4);
+        c += step / 6.0 * (c1 + 2.0 * c2 + 2.0 * c3 + c4);
+      }
     }
     inc.body[i] = std::max(h - h_[i], 0.0);  // rates are >= 0: never un-wears
     inc.counterface[i] = std::max(c, 0.0);

@@ -62,8 +62,6 @@ class NodeStateLaw {
   double stable_contact_step(const std::vector<double> &pressure, double stiffness, double safety);
 
  private:
-  coupling::StateLawValues lookup(double p, double h);
-
   std::shared_ptr<const coupling::StateLaw> law_;
   coupling::OutOfRange policy_;
   std::vector<double> h_, c_;

@@ -181,28 +181,42 @@ nlohmann::json StateLaw::to_json() const {
   return out;
 }
 
-StateLaw::Cell StateLaw::locate(double pressure, double worn_depth, OutOfRange policy, RangeUse *use) const {
+StateLaw::PressureSlice StateLaw::slice(double pressure, OutOfRange policy) const {
   if (!std::isfinite(pressure) || !(pressure > 0.0))
     throw std::out_of_range("state law: pressure " + format_number(pressure) + " Pa is not positive and finite");
-  if (!std::isfinite(worn_depth))
-    throw std::out_of_range("state law: worn depth " + format_number(worn_depth) + " m is not finite");
-  if (use) ++use->lookups;
-  Cell cell;
+  PressureSlice slice;
   double lp = std::log(pressure);
   if (pressure < pressure_.front() || pressure > pressure_.back()) {
     if (policy == OutOfRange::Error)
       throw std::out_of_range("state law: pressure " + format_number(pressure) + " Pa outside the law's range [" +
                               format_number(pressure_.front()) + ", " + format_number(pressure_.back()) + "] Pa");
-    if (use) ++(pressure < pressure_.front() ? use->below_pressure : use->above_pressure);
+    slice.clamped = pressure < pressure_.front() ? -1 : 1;
     lp = std::clamp(lp, log_pressure_.front(), log_pressure_.back());
   }
   const auto np = log_pressure_.size();
-  cell.ip = static_cast<std::size_t>(std::upper_bound(log_pressure_.begin(), log_pressure_.end(), lp) -
-                                     log_pressure_.begin());
-  cell.ip = std::min(std::max<std::size_t>(cell.ip, 1), np - 1) - 1;
-  cell.wp = (lp - log_pressure_[cell.ip]) / (log_pressure_[cell.ip + 1] - log_pressure_[cell.ip]);
-  cell.wp = std::clamp(cell.wp, 0.0, 1.0);
+  slice.ip = static_cast<std::size_t>(std::upper_bound(log_pressure_.begin(), log_pressure_.end(), lp) -
+                                      log_pressure_.begin());
+  slice.ip = std::min(std::max<std::size_t>(slice.ip, 1), np - 1) - 1;
+  slice.wp = (lp - log_pressure_[slice.ip]) / (log_pressure_[slice.ip + 1] - log_pressure_[slice.ip]);
+  slice.wp = std::clamp(slice.wp, 0.0, 1.0);
+  return slice;
+}
 
+StateLaw::Cell StateLaw::locate(double pressure, double worn_depth, OutOfRange policy, RangeUse *use) const {
+  const PressureSlice s = slice(pressure, policy);
+  return locate(s, worn_depth, use);
+}
+
+StateLaw::Cell StateLaw::locate(const PressureSlice &slice, double worn_depth, RangeUse *use) const {
+  if (!std::isfinite(worn_depth))
+    throw std::out_of_range("state law: worn depth " + format_number(worn_depth) + " m is not finite");
+  if (use) {
+    ++use->lookups;
+    if (slice.clamped) ++(slice.clamped < 0 ? use->below_pressure : use->above_pressure);
+  }
+  Cell cell;
+  cell.ip = slice.ip;
+  cell.wp = slice.wp;
   double h = std::max(worn_depth, 0.0);
   if (h > depth_.back()) {
     if (use) ++use->beyond_depth;
@@ -229,6 +243,17 @@ double StateLaw::value(StateField field, double pressure, double worn_depth, Ban
   const auto &t = table(field);
   const auto &grid = band == Band::Mean || t.low.empty() ? t.mean : band == Band::Low ? t.low : t.high;
   return interpolate(grid, locate(pressure, worn_depth, policy, use));
+}
+
+double StateLaw::value(StateField field, const PressureSlice &slice, double worn_depth, RangeUse *use) const {
+  return interpolate(table(field).mean, locate(slice, worn_depth, use));
+}
+
+void StateLaw::wear_rates(const PressureSlice &slice, double worn_depth, RangeUse *use, double &wear_rate,
+                          double &counterface_wear_rate) const {
+  const Cell c = locate(slice, worn_depth, use);
+  wear_rate = interpolate(table(StateField::WearRate).mean, c);
+  counterface_wear_rate = interpolate(table(StateField::CounterfaceWearRate).mean, c);
 }
 
 StateLawValues StateLaw::values(double pressure, double worn_depth, OutOfRange policy, RangeUse *use) const {

@@ -74,12 +74,27 @@ class StateLaw {
   StateLawValues values(double pressure, double worn_depth, OutOfRange policy = OutOfRange::Error,
                         RangeUse *use = nullptr) const;
 
+  // The pressure half of a lookup, found once for a caller that reads one pressure at many depths (a contact
+  // node over a wear step): the bracketing grid pressures, the weight, and which side was clamped. slice()
+  // throws like values(); each read below counts in `use` exactly as one values() call would.
+  struct PressureSlice {
+    std::size_t ip = 0;
+    double wp = 0.0;    // weight of the upper grid pressure
+    int clamped = 0;    // -1: below the grid, +1: above (OutOfRange::Clamp), 0: inside
+  };
+  PressureSlice slice(double pressure, OutOfRange policy = OutOfRange::Error) const;
+  double value(StateField field, const PressureSlice &slice, double worn_depth, RangeUse *use = nullptr) const;
+  // wear_rate and counterface_wear_rate only (what a wear step needs)
+  void wear_rates(const PressureSlice &slice, double worn_depth, RangeUse *use, double &wear_rate,
+                  double &counterface_wear_rate) const;
+
  private:
   struct Cell {
     std::size_t ip = 0, ih = 0;
     double wp = 0.0, wh = 0.0;  // weights of the upper neighbours
   };
   Cell locate(double pressure, double worn_depth, OutOfRange policy, RangeUse *use) const;
+  Cell locate(const PressureSlice &slice, double worn_depth, RangeUse *use) const;
   double interpolate(const std::vector<std::vector<double>> &grid, const Cell &cell) const;
 
   std::vector<double> pressure_, log_pressure_, depth_;
