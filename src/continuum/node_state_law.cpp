@@ -122,7 +122,7 @@ double NodeStateLaw::stable_contact_step(const std::vector<double> &pressure, do
   const double p_min = law_->pressure().front(), p_max = law_->pressure().back();
   for (std::size_t i = 0; i < h_.size(); ++i)
     if (pressure[i] > 0.0)  // a clamped node's rate does not follow p: its secant is taken at the grid edge
-      factor = std::max(factor, law_->values(pressure[i], h_[i], policy_).wear_rate /
+      factor = std::max(factor, law_->value(StateField::WearRate, law_->slice(pressure[i], policy_), h_[i]) /
                                     std::clamp(pressure[i], p_min, p_max));
   if (!(factor > 0.0) || !(stiffness > 0.0)) return std::numeric_limits<double>::infinity();
   return safety * 2.0 / (stiffness * factor);

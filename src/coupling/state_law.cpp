@@ -234,6 +234,9 @@ double StateLaw::interpolate(const std::vector<std::vector<double>> &grid, const
   const double upper = (1.0 - c.wh) * grid[c.ip + 1][c.ih] + c.wh * grid[c.ip + 1][c.ih + 1];
   // Between pressures a power law when both sides are positive: the cell's wear rate goes as p (Archard) and
   // its adhesion friction as a power of p, which linear weights in ln p miss by ~10 % at a grid ratio of 2.4.
+  // (at a grid pressure, wp = 0 or 1, no power is needed: nodes clamped to the grid's ends sit there)
+  if (c.wp == 0.0) return lower;
+  if (c.wp == 1.0) return upper;
   if (lower > 0.0 && upper > 0.0) return lower * std::pow(upper / lower, c.wp);
   return (1.0 - c.wp) * lower + c.wp * upper;
 }
