@@ -45,6 +45,7 @@
 #include "continuum/piston_ring.h"
 #include "continuum/ring_liner_wear.h"
 #include "wp_reporter.h"
+#include "thesis_setups.h"
 
 using namespace runin::continuum;
 namespace coupling = runin::coupling;
@@ -138,18 +139,7 @@ Outcome pin_baseline(const runin::cli::PinOnDiskCase &c, const SlidingFriction &
 
 // ---------------------------------------------------------------- journal bearing (wp_journal_bearing thesis)
 
-JournalBearingParameters bearing_thesis() {  // = wp_journal_bearing.cpp thesis(), two halves
-  JournalBearingParameters p;
-  p.bore = BoreGeometry{12.5e-3, 25e-6, 25e-3, 200e9, 0.29, 0.3, 256};
-  p.load = 9.81;
-  p.inertia = 6e-5;
-  p.coupling_stiffness = 0.5;
-  p.coupling_damping = 2.0 * 0.3 * std::sqrt(0.5 * 6e-5);
-  p.wear_coefficient = 1e-3;
-  p.hardness = 1.2e9;
-  p.halves = 2;
-  return p;
-}
+JournalBearingParameters bearing_thesis() { return runin::bench::journal_bearing_thesis(256, 2); }
 
 JournalBearingRun bearing_run() {
   JournalBearingRun run;  // CVODE defaults (BDF, rtol 1e-8, atol 1e-12), as the CLI without [solver]

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "continuum/journal_bearing.h"
+#include "thesis_setups.h"
 #include "wp_reporter.h"
 
 using namespace runin::continuum;
@@ -24,17 +25,8 @@ using namespace runin::continuum;
 namespace {
 
 JournalBearingParameters thesis(int nodes = 256) {
-  JournalBearingParameters p;
-  p.bore = BoreGeometry{12.5e-3, 25e-6, 25e-3, 200e9, 0.29, 0.3, nodes};
-  p.load = 9.81;
-  p.inertia = 6e-5;
-  p.coupling_stiffness = 0.5;
-  p.coupling_damping = 2.0 * 0.3 * std::sqrt(0.5 * 6e-5);
-  p.wear_coefficient = 1e-3;
-  p.hardness = 1.2e9;
   const char *halves = std::getenv("RUNIN_BENCH_HALVES");
-  p.halves = halves && std::string(halves) == "1" ? 1 : 2;
-  return p;
+  return runin::bench::journal_bearing_thesis(nodes, halves && std::string(halves) == "1" ? 1 : 2);
 }
 
 constexpr double kTEnd = 2.0, kDt = 1e-3;
