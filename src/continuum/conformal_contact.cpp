@@ -80,7 +80,7 @@ ConformalSolution ConformalContact::solve(double load_per_length, const std::vec
   if (warm_start && static_cast<int>(warm_start->size()) == n)
     for (int i = 0; i < n; ++i) active[i] = (*warm_start)[i] > 0.0;
   const LineContactResult r =
-      solve_line_contact(compliance_, rigid_gap, cosine, h, load_per_length, tolerance, active);
+      solve_line_contact(compliance_, rigid_gap, cosine, h, load_per_length, tolerance, active, blocks_.get());
   sol.iterations = r.iterations;
   sol.status = r.converged ? ConformalStatus::Converged : ConformalStatus::NotConverged;
   const Eigen::VectorXd &p = r.pressure;

@@ -12,10 +12,13 @@
 // load balance sum_i p_i cos(theta_i) R dtheta = load per length as the extra equation.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
+
+#include "continuum/half_plane_contact.h"
 
 namespace runin::continuum {
 
@@ -76,6 +79,9 @@ class ConformalContact {
   std::vector<double> theta_;
   Eigen::MatrixXd compliance_;  // K, m/Pa
   double stiffness_per_area_ = 0.0;
+  // Factorisations of K's leading blocks (K is Toeplitz, so any contiguous active block is one of them); shared
+  // by copies, which have the same K
+  std::shared_ptr<ToeplitzBlockCache> blocks_ = std::make_shared<ToeplitzBlockCache>();
 };
 
 // Hertz line contact of a cylinder (R1) in a concave cylinder (R2 > R1), load w per length:
