@@ -31,6 +31,22 @@ void running_max(std::vector<double> &v) {
   for (std::size_t i = 1; i < v.size(); ++i) v[i] = std::max(v[i], v[i - 1]);
 }
 
+// Value at x0 of the least-squares line of y over x on rows [a, b]; false if there are fewer than 3 rows or x
+// does not vary.
+bool local_line(const std::vector<double> &x, const std::vector<double> &y, std::size_t a, std::size_t b, double x0,
+                double &value) {
+  if (b < a + 2) return false;
+  const double n = static_cast<double>(b - a + 1);
+  double sx = 0, sy = 0;
+  for (std::size_t i = a; i <= b; ++i) sx += x[i], sy += y[i];
+  const double mx = sx / n, my = sy / n;
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = a; i <= b; ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+  if (!(sxx > 0)) return false;
+  value = my + sxy / sxx * (x0 - mx);
+  return true;
+}
+
 }  // namespace
 
 CellSeries cell_series(const coupling::AveTimeTable &table) {
@@ -96,10 +112,23 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
       w = (hj - H[lo]) / (H[hi] - H[lo]);  // H[hi] > hj > H[lo]
     }
     auto at = [&](const std::vector<double> &v) { return v[lo] + w * (v[hi] - v[lo]); };
-    field(F::MuBody)[j] = at(c.mu_body);
+    // friction and real area come from the few contacts of the moment: past h = 0, the least-squares line over
+    // the rows within half a grid step of hj, at hj, kept within those rows' range (one-sided at the last depth);
+    // exact for a linear trend, and it averages the contact noise of the rows instead of taking the two that
+    // bracket hj (fewer than 3 rows: those two). h = 0 stays the state when sliding begins (the first row).
+    const std::size_t wa = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj - 0.5 * dh) - H.begin());
+    const std::size_t wb_end = static_cast<std::size_t>(std::upper_bound(H.begin(), H.end(), hj + 0.5 * dh) - H.begin());
+    auto smoothed = [&](const std::vector<double> &v) {
+      double value;
+      if (j == 0 || wb_end <= wa || !local_line(H, v, wa, wb_end - 1, hj, value)) return at(v);
+      const auto [low, high] = std::minmax_element(v.begin() + static_cast<std::ptrdiff_t>(wa),
+                                                   v.begin() + static_cast<std::ptrdiff_t>(wb_end));
+      return std::clamp(value, *low, *high);
+    };
+    field(F::MuBody)[j] = smoothed(c.mu_body);
     field(F::Rq)[j] = at(c.rq);
     field(F::Rsk)[j] = at(c.rsk);
-    field(F::AreaFraction)[j] = at(c.area_fraction);
+    field(F::AreaFraction)[j] = smoothed(c.area_fraction);
     // below the first sliding row the distance runs from the end of loading, (s, h) = (0, 0): the h = 0
     // column is s = 0, where the continuum starts too (the other fields hold the first sliding row there)
     field(F::SlidingDistance)[j] =

@@ -29,7 +29,10 @@ struct DepthCurves {
 
 // Every field of the state law on `grid` for one sample run at `acceleration` (physical s = acceleration x cell s,
 // physical rates = cell rates / acceleration). Uses the rows with s > 0; h made non-decreasing by a running
-// maximum; fields linear in h between the last row below a grid depth and the first at or above it; wear rates a
+// maximum; Rq, Rsk and the sliding distance linear in h between the last row below a grid depth and the first at
+// or above it; mu_body and the area fraction (a few contacts at a time: noisy), past h = 0, the least-squares line
+// over the rows within half a grid step of the depth, at the depth, kept within those rows' range (the bracket
+// when fewer than 3 rows; h = 0 is the first sliding row); wear rates a
 // least-squares slope dh/ds over the rows within one grid step (at least 3 rows). Throws std::runtime_error when
 // fewer than 2 rows slide or the sample's h stops short of grid.back() ("reached h = ... m of depth ... m").
 DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<double> &grid, double acceleration);

@@ -105,3 +105,25 @@ TEST(HomogeniseCurves, CellSeriesRejectsNonFiniteValuesAndMissingColumns) {
 }
 
 }  // namespace
+
+// Friction from a few contacts is noisy row to row: mu_body and the area fraction at a grid depth are the
+// least-squares line over the rows within half a grid step, so a +-0.01 alternation around a linear trend
+// (what two bracketing rows would carry whole) averages out, and the trend itself is kept.
+TEST(HomogeniseCurves, NoisyFrictionIsFittedOverHalfAGridStepAroundEachDepth) {
+  CellSeries c = linear_cell(1e-3, 400, 1e-7);  // h to 4e-8 m, 0.1 nm per row
+  for (std::size_t i = 0; i < c.s.size(); ++i)
+    if (c.s[i] > 0.0) {
+      const double sign = (i % 2 == 0) ? 1.0 : -1.0;
+      c.mu_body[i] += 0.01 * sign;
+      c.area_fraction[i] += 1e-3 * sign;
+    }
+  const auto grid = depth_grid(2e-8, 11);  // 2 nm steps: 21 rows per window inside, 11 at h = 0
+  const auto out = resample_on_depth_grid(c, grid, 1.0);
+  // h = 0 is the first sliding row, as it is (the state when sliding begins)
+  EXPECT_NEAR(field(out, StateField::MuBody)[0], c.mu_body[3], 1e-15);
+  for (std::size_t j = 1; j < grid.size(); ++j) {  // a centred window of 21 rows
+    EXPECT_NEAR(field(out, StateField::MuBody)[j], 0.2 + 1e8 * grid[j], 0.01 / 5.0) << j;
+    EXPECT_NEAR(field(out, StateField::AreaFraction)[j], 0.01 + 1e6 * grid[j], 1e-3 / 5.0) << j;
+    EXPECT_NEAR(field(out, StateField::Rq)[j], 2e-7 - grid[j], 1e-20) << j;  // smooth fields: the bracket
+  }
+}
