@@ -39,3 +39,44 @@ class StateLaw:
         if lo > 0.0 and hi > 0.0:
             return lo * (hi / lo) ** wp
         return (1 - wp) * lo + wp * hi
+
+
+def sample_rows(path):
+    """The sliding rows (s > 0) of a cell's output (columns of the in.rve_wall contract: step s h h_cf mu_body rq
+    rsk area_fraction ...), with h made non-decreasing by a running maximum, as `runin homogenise` reads them."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.strip() and not line.startswith("#"):
+                rows.append([float(x) for x in line.split()])
+    rows = [r for r in rows if r[1] > 0.0]
+    top = 0.0
+    for r in rows:
+        top = max(top, r[2])
+        r[2] = top
+    return rows
+
+
+def sample_at_depth(rows, column, h, step, fit):
+    """One sample's value of `column` at worn depth h, reduced as src/cli/homogenise_curves.cpp does: fit = True
+    (mu_body, area_fraction) and h > 0: the least-squares line over the rows with h within step / 2, at h, kept
+    within those rows' range; otherwise (or with fewer than 3 rows) linear between the last row below h and the
+    first at or above it. NaN if the rows do not reach h."""
+    def bracket():
+        for a, b in zip(rows, rows[1:]):
+            if a[2] <= h <= b[2] and b[2] > a[2]:
+                w = (h - a[2]) / (b[2] - a[2])
+                return (1 - w) * a[column] + w * b[column]
+        return rows[0][column] if rows and h <= rows[0][2] else float("nan")
+    if not fit or h <= 0.0:
+        return bracket()
+    window = [(r[2], r[column]) for r in rows if h - 0.5 * step <= r[2] <= h + 0.5 * step]
+    if len(window) < 3:
+        return bracket()
+    mx = sum(x for x, _ in window) / len(window)
+    my = sum(y for _, y in window) / len(window)
+    sxx = sum((x - mx) ** 2 for x, _ in window)
+    if not sxx > 0.0:
+        return bracket()
+    value = my + sum((x - mx) * (y - my) for x, y in window) / sxx * (h - mx)
+    return min(max(value, min(y for _, y in window)), max(y for _, y in window))
