@@ -16,19 +16,26 @@ std::string g6(double x) {
   return out.str();
 }
 
-// Least-squares slope of y over x on rows [a, b] (inclusive); 0 if x does not vary.
-double slope(const std::vector<double> &x, const std::vector<double> &y, std::size_t a, std::size_t b) {
+// Least-squares line of y over x on rows [a, b] (inclusive): the means and the slope (0 if x does not vary).
+struct Line {
+  double mean_x = 0.0, mean_y = 0.0, slope = 0.0;
+  bool varies = false;
+};
+Line fit_line(const std::vector<double> &x, const std::vector<double> &y, std::size_t a, std::size_t b) {
   const double n = static_cast<double>(b - a + 1);
-  double sx = 0, sy = 0;
-  for (std::size_t i = a; i <= b; ++i) sx += x[i], sy += y[i];
-  const double mx = sx / n, my = sy / n;
+  Line line;
+  for (std::size_t i = a; i <= b; ++i) line.mean_x += x[i], line.mean_y += y[i];
+  line.mean_x /= n, line.mean_y /= n;
   double sxy = 0, sxx = 0;
-  for (std::size_t i = a; i <= b; ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
-  return sxx > 0 ? sxy / sxx : 0.0;
+  for (std::size_t i = a; i <= b; ++i)
+    sxy += (x[i] - line.mean_x) * (y[i] - line.mean_y), sxx += (x[i] - line.mean_x) * (x[i] - line.mean_x);
+  line.varies = sxx > 0;
+  line.slope = line.varies ? sxy / sxx : 0.0;
+  return line;
 }
 
-void running_max(std::vector<double> &v) {
-  for (std::size_t i = 1; i < v.size(); ++i) v[i] = std::max(v[i], v[i - 1]);
+double slope(const std::vector<double> &x, const std::vector<double> &y, std::size_t a, std::size_t b) {
+  return fit_line(x, y, a, b).slope;
 }
 
 // Value at x0 of the least-squares line of y over x on rows [a, b]; false if there are fewer than 3 rows or x
@@ -36,15 +43,14 @@ void running_max(std::vector<double> &v) {
 bool local_line(const std::vector<double> &x, const std::vector<double> &y, std::size_t a, std::size_t b, double x0,
                 double &value) {
   if (b < a + 2) return false;
-  const double n = static_cast<double>(b - a + 1);
-  double sx = 0, sy = 0;
-  for (std::size_t i = a; i <= b; ++i) sx += x[i], sy += y[i];
-  const double mx = sx / n, my = sy / n;
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = a; i <= b; ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
-  if (!(sxx > 0)) return false;
-  value = my + sxy / sxx * (x0 - mx);
+  const Line line = fit_line(x, y, a, b);
+  if (!line.varies) return false;
+  value = line.mean_y + line.slope * (x0 - line.mean_x);
   return true;
+}
+
+void running_max(std::vector<double> &v) {
+  for (std::size_t i = 1; i < v.size(); ++i) v[i] = std::max(v[i], v[i - 1]);
 }
 
 }  // namespace
