@@ -158,13 +158,14 @@ void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &de
   fs::create_directories(s.dir);
   std::error_code ignore;
   fs::remove(s.dir / "out.dat.part", ignore);
-  const std::vector<std::pair<std::string, std::string>> vars = {
+  std::vector<std::pair<std::string, std::string>> vars = {
       {"material", c.material_file}, {"rough", c.rough},         {"counterface", c.counterface},
       {"R", g17(c.R)},               {"sigma", g17(c.sigma)},    {"spacing", g17(c.spacing)},
       {"nside", std::to_string(c.nside)}, {"pressure", g17(s.pressure)}, {"speed", g17(c.speed)},
       {"seed", std::to_string(s.seed)},   {"accel", g17(s.acceleration)}, {"depth", g17(c.depth)},
       {"nslide", std::to_string(c.nslide)}, {"nout", std::to_string(c.nout)}, {"out", s.output().string()},
   };
+  if (!c.heights_file.empty()) vars.insert(vars.end(), {{"height_source", "list"}, {"heights", c.heights_file}});
   std::string text = "# runin homogenise: sample " + s.key + " (" + s.label() + ")\n";
   text += "log " + quoted(s.log().string()) + "\n";
   text += "print \"$(version)\" file " + quoted((s.dir / "lammps_version").string()) + " screen no\n";
@@ -349,6 +350,10 @@ int run_homogenise(const Options &o) {
     lmp = found;
   }
   lmp = fs::absolute(lmp).string();
+  const std::string deck_text = file_bytes(deck);
+  if (!c.heights_file.empty() && deck_text.find("height_source") == std::string::npos)
+    throw InputError(c.path + ": key 'surface.heights': the deck " + deck.string() +
+                     " does not read a summit list (it has no height_source variable; inputs/in.rve_wall does)");
   const fs::path cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
   fs::create_directories(cache_dir, error);
   if (error || !fs::is_directory(cache_dir))
@@ -356,7 +361,6 @@ int run_homogenise(const Options &o) {
                              (error ? ": " + error.message() : std::string()));
 
   const CodeIdentity code{runin_version(), lmp, sha256_hex(file_bytes(lmp))};
-  const std::string deck_text = file_bytes(deck);
   const std::vector<Sample> samples = plan_samples(c, deck_text, code, cache_dir);
   std::vector<const Sample *> todo;
   for (const auto &s : samples)
@@ -470,7 +474,12 @@ int run_homogenise(const Options &o) {
        {{"file", c.material_file}, {"sha256", sha256_hex(file_bytes(c.material_file))}, {"rough", c.rough},
         {"counterface", c.counterface}}},
       {"surface",
-       {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}, {"summits", c.nside * c.nside}}},
+       c.heights_file.empty()
+           ? nlohmann::json{{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside},
+                            {"summits", c.nside * c.nside}}
+           : nlohmann::json{{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside},
+                            {"summits", c.nside * c.nside}, {"heights", c.heights_file},
+                            {"heights_sha256", sha256_hex(file_bytes(c.heights_file))}}},
       {"speed", c.speed},
       {"samples",
        {{"seeds", c.seeds},

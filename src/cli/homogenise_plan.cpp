@@ -21,7 +21,7 @@ const Schema &schema() {
   static const Schema s = {
       {"", {"title", "material", "surface", "sliding", "grid"}},
       {"material", {"file", "rough", "counterface"}},
-      {"surface", {"R", "sigma", "spacing", "nside"}},
+      {"surface", {"R", "sigma", "spacing", "nside", "heights"}},
       {"sliding", {"speed"}},
       {"grid",
        {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "nslide",
@@ -37,6 +37,44 @@ std::string required_text(const CaseReader &reader, const std::string &key) {
   if (value.find_first_of(" \t\n\"'") != std::string::npos)
     reader.fail(key, "must not contain blanks or quotes (it is passed to LAMMPS as one word)");
   return value;
+}
+
+// A summit list (LAMMPS atomfile: '#' comments, a count line, then "ID z" lines): exactly nside^2 summits with IDs
+// 1..nside^2 once each and finite heights [m]; returns the absolute path. Defects are reader.fail on surface.heights.
+std::string checked_summit_list(const CaseReader &reader, const fs::path &file, long nside) {
+  std::error_code error;
+  if (!fs::is_regular_file(file, error)) reader.fail("surface.heights", "no such file: " + file.string());
+  const std::string resolved = fs::absolute(file).lexically_normal().string();
+  if (resolved.find_first_of(" \t\n\"'") != std::string::npos)
+    reader.fail("surface.heights", "the resolved path must not contain blanks or quotes: " + resolved);
+  std::istringstream in(file_bytes(resolved));
+  const long n = nside * nside;
+  std::vector<char> seen(static_cast<std::size_t>(n) + 1, 0);
+  long count = -1, rows = 0;
+  std::string line;
+  for (long number = 1; std::getline(in, line); ++number) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream fields(line);
+    auto where = [&] { return resolved + ":" + std::to_string(number) + ": "; };
+    if (count < 0) {
+      if (!(fields >> count) || count != n)
+        reader.fail("surface.heights", where() + "the count line must give surface.nside^2 = " + std::to_string(n) +
+                                           " summits, got '" + line + "'");
+      continue;
+    }
+    long id = 0;
+    double z = 0.0;
+    if (!(fields >> id >> z) || !std::isfinite(z) || id < 1 || id > n || seen[static_cast<std::size_t>(id)])
+      reader.fail("surface.heights", where() + "expected 'ID z' with a new ID in 1.." + std::to_string(n) +
+                                         " and a finite height, got '" + line + "'");
+    seen[static_cast<std::size_t>(id)] = 1;
+    ++rows;
+  }
+  if (rows != n)
+    reader.fail("surface.heights", resolved + ": " + std::to_string(rows) + " summits, surface.nside^2 = " +
+                                       std::to_string(n) + " expected");
+  return resolved;
 }
 
 }  // namespace
@@ -76,6 +114,8 @@ HomogeniseCase read_homogenise_case(const std::string &path) {
   c.spacing = reader.positive("surface.spacing", c.spacing);
   if (c.sigma >= c.R) reader.fail("surface.sigma", "must be below surface.R (summit heights are a small fraction of R)");
   c.nside = reader.positive_integer("surface.nside", c.nside, 1000);
+  const std::string heights = reader.text("surface.heights", "");
+  if (!heights.empty()) c.heights_file = checked_summit_list(reader, resolve_case_path(path, heights), c.nside);
 
   // [sliding]
   c.speed = reader.positive("sliding.speed", c.speed);
@@ -155,6 +195,8 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
                                  const fs::path &cache_dir) {
   const std::string material_sha = sha256_hex(file_bytes(c.material_file));
   const std::string deck_sha = sha256_hex(deck_text);
+  nlohmann::json surface = {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}};
+  if (!c.heights_file.empty()) surface["heights_sha256"] = sha256_hex(file_bytes(c.heights_file));
   std::vector<Sample> samples;
   for (std::size_t ip = 0; ip < c.pressures.size(); ++ip)
     for (std::size_t is = 0; is < c.seeds.size(); ++is) {
@@ -167,7 +209,7 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
       // nlohmann::json objects keep their keys sorted and dump doubles to round trip: a canonical text.
       s.inputs = {
           {"material", {{"sha256", material_sha}, {"rough", c.rough}, {"counterface", c.counterface}}},
-          {"surface", {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}}},
+          {"surface", surface},
           {"pressure", s.pressure},
           {"speed", c.speed},
           {"seed", s.seed},

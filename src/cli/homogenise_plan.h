@@ -24,6 +24,7 @@ struct HomogeniseCase {
   // [surface]
   double R = 1.0e-4, sigma = 2.0e-7, spacing = 2.0e-5;
   long nside = 64;
+  std::string heights_file;  // resolved summit list (LAMMPS atomfile "ID z"), empty: Gaussian heights of RMS sigma
   // [sliding]
   double speed = 0.1;
   // [grid]

@@ -4,6 +4,7 @@
   rve_cell.py acceleration --lmp LMP --workdir DIR [--accel A] [--factor 10] [--nside 32]
   rve_cell.py cell-size --lmp LMP --workdir DIR [--accel 20] [--depth 3e-8]
   rve_cell.py quasi-static --lmp LMP --workdir DIR [--accel 20] [--depth 2e-8] [--nside 32]
+  rve_cell.py summit-list --lmp LMP --workdir DIR
 
 acceleration: the cell at one pressure with wear acceleration A and A x factor (fix runin/wall wear_scale).
 Asserted:
@@ -22,10 +23,15 @@ quasi-static: the cell at its sliding speed (0.1 m/s, in.rve_wall's default) aga
   dynamics of the cell is there only to find the quasi-static state; asserted: mu_body(h), Rq(h) and A_r/A(h)
   within 3 % RMS of the slow run over h in [depth / 10, depth] (measured 0.99 %, 0.004 %, 0.50 %; at 1 m/s
   10.4 %, 0.04 %, 6.0 %, which is why the default is 0.1 m/s).
+summit-list: the cell's `heights` input (a summit list, LAMMPS atomfile "ID z") against its Gaussian draws: the
+  heights of a Gaussian sample written to a list and run again from the list give the same output file, every
+  byte; a list of equal heights (one summit level) gives Rq = 0 and Rsk = 0 at the start; a missing list file and
+  an unknown height_source each stop with an ERROR.
 """
 import argparse
 import math
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -133,9 +139,53 @@ def quasi_static(args):
     print("PASS")
 
 
+def summit_list(args):
+    fresh_dir(args.workdir)
+    common = {"material": MATERIAL, "nside": 8, "accel": 100, "depth": 2e-9, "nout": 50, "pressure": PRESSURE}
+    run_lammps(args, DECK, dict(common, out="gauss.dat"), log="log.gauss")
+    # the same sample's heights, written after the deck's set-up (no loading, no sliding), as a summit list
+    driver = os.path.join(args.workdir, "in.heights")
+    with open(driver, "w") as f:
+        f.write(f"include {DECK}\nwrite_dump all custom heights.dump id z modify format float %.17g sort id\n")
+    run_lammps(args, driver, dict(common, nload=0, nslide=0, out="unused.dat"), log="log.heights")
+    with open(os.path.join(args.workdir, "heights.dump")) as f:
+        lines = f.read().splitlines()
+    body = lines[lines.index("ITEM: ATOMS id z") + 1:]
+    with open(os.path.join(args.workdir, "heights.txt"), "w") as f:
+        f.write(f"# summit list: the count, then ID z [m]\n{len(body)}\n" + "\n".join(body) + "\n")
+    run_lammps(args, DECK, dict(common, height_source="list", heights="heights.txt", out="list.dat"), log="log.list")
+    with open(os.path.join(args.workdir, "gauss.dat"), "rb") as a, open(os.path.join(args.workdir, "list.dat"), "rb") as b:
+        if a.read() != b.read():
+            fail("the Gaussian sample and the same heights given as a summit list differ")
+    print(f"summit list of {len(body)} heights reproduces the Gaussian sample byte for byte")
+    with open(os.path.join(args.workdir, "level.txt"), "w") as f:
+        f.write("# one level\n64\n" + "".join(f"{i} 1.0e-7\n" for i in range(1, 65)))
+    run_lammps(args, DECK, dict(common, height_source="list", heights="level.txt", out="level.dat"), log="log.level")
+    first = numeric_table(os.path.join(args.workdir, "level.dat"))[0]
+    if not (abs(first[5]) < 1e-15 and abs(first[6]) < 1e-9):
+        fail(f"equal heights: Rq {first[5]!r}, Rsk {first[6]!r} at the start, expected 0")
+    print("equal heights: Rq = Rsk = 0 at the start")
+    result = subprocess.run([args.lmp, "-in", DECK, "-log", "log.missing", "-screen", "none", "-var", "material",
+                             MATERIAL, "-var", "nside", "8", "-var", "height_source", "list", "-var", "heights",
+                             "no_such_file.txt"],
+                            cwd=args.workdir, capture_output=True, text=True)
+    log = open(os.path.join(args.workdir, "log.missing")).read() if os.path.exists(
+        os.path.join(args.workdir, "log.missing")) else result.stdout
+    errors = [l for l in (log + result.stdout).splitlines() if l.startswith("ERROR")]
+    if result.returncode == 0 or not errors:
+        fail("a missing summit list did not stop with an ERROR")
+    print("missing summit list: " + errors[0])
+    result = subprocess.run([args.lmp, "-in", DECK, "-log", "none", "-var", "material", MATERIAL, "-var", "nside", "8",
+                             "-var", "height_source", "file"], cwd=args.workdir, capture_output=True, text=True)
+    if result.returncode == 0 or "\nERROR: height_source must be gaussian or list, got file" not in result.stdout:
+        fail(f"an unknown height_source was not refused: {result.stdout[-500:]}")
+    print("unknown height_source: ERROR: height_source must be gaussian or list, got file")
+    print("PASS")
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("mode", choices=["acceleration", "cell-size", "quasi-static"])
+    parser.add_argument("mode", choices=["acceleration", "cell-size", "quasi-static", "summit-list"])
     parser.add_argument("--lmp", required=True)
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--mpiexec", default="mpiexec")
@@ -148,6 +198,8 @@ def main():
     if args.mode == "acceleration":
         args.accel = args.accel or 4.0
         acceleration(args)
+    elif args.mode == "summit-list":
+        summit_list(args)
     elif args.mode == "quasi-static":
         args.accel = args.accel or 20.0
         quasi_static(args)
