@@ -474,12 +474,7 @@ int run_homogenise(const Options &o) {
        {{"file", c.material_file}, {"sha256", sha256_hex(file_bytes(c.material_file))}, {"rough", c.rough},
         {"counterface", c.counterface}}},
       {"surface",
-       c.heights_file.empty()
-           ? nlohmann::json{{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside},
-                            {"summits", c.nside * c.nside}}
-           : nlohmann::json{{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside},
-                            {"summits", c.nside * c.nside}, {"heights", c.heights_file},
-                            {"heights_sha256", sha256_hex(file_bytes(c.heights_file))}}},
+       {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}, {"summits", c.nside * c.nside}}},
       {"speed", c.speed},
       {"samples",
        {{"seeds", c.seeds},
@@ -502,6 +497,10 @@ int run_homogenise(const Options &o) {
         {"date_utc", utc_now()},
         {"host", host_name()}}},
   };
+  if (!c.heights_file.empty()) {
+    metadata["surface"]["heights"] = c.heights_file;
+    metadata["surface"]["heights_sha256"] = c.heights_sha256;
+  }
   std::vector<double> pressures = c.pressures;
   const coupling::StateLaw law = [&] {
     try {

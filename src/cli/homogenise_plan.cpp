@@ -40,14 +40,17 @@ std::string required_text(const CaseReader &reader, const std::string &key) {
 }
 
 // A summit list (LAMMPS atomfile: '#' comments, a count line, then "ID z" lines): exactly nside^2 summits with IDs
-// 1..nside^2 once each and finite heights [m]; returns the absolute path. Defects are reader.fail on surface.heights.
-std::string checked_summit_list(const CaseReader &reader, const fs::path &file, long nside) {
+// 1..nside^2 once each and finite heights [m]. Sets the case's absolute path and the SHA-256 of the bytes checked.
+// Defects are reader.fail on surface.heights.
+void check_summit_list(const CaseReader &reader, const fs::path &file, HomogeniseCase &c) {
   std::error_code error;
   if (!fs::is_regular_file(file, error)) reader.fail("surface.heights", "no such file: " + file.string());
   const std::string resolved = fs::absolute(file).lexically_normal().string();
   if (resolved.find_first_of(" \t\n\"'") != std::string::npos)
     reader.fail("surface.heights", "the resolved path must not contain blanks or quotes: " + resolved);
-  std::istringstream in(file_bytes(resolved));
+  const std::string bytes = file_bytes(resolved);
+  std::istringstream in(bytes);
+  const long nside = c.nside;
   const long n = nside * nside;
   std::vector<char> seen(static_cast<std::size_t>(n) + 1, 0);
   long count = -1, rows = 0;
@@ -74,7 +77,8 @@ std::string checked_summit_list(const CaseReader &reader, const fs::path &file, 
   if (rows != n)
     reader.fail("surface.heights", resolved + ": " + std::to_string(rows) + " summits, surface.nside^2 = " +
                                        std::to_string(n) + " expected");
-  return resolved;
+  c.heights_file = resolved;
+  c.heights_sha256 = sha256_hex(bytes);
 }
 
 }  // namespace
@@ -115,7 +119,7 @@ HomogeniseCase read_homogenise_case(const std::string &path) {
   if (c.sigma >= c.R) reader.fail("surface.sigma", "must be below surface.R (summit heights are a small fraction of R)");
   c.nside = reader.positive_integer("surface.nside", c.nside, 1000);
   const std::string heights = reader.text("surface.heights", "");
-  if (!heights.empty()) c.heights_file = checked_summit_list(reader, resolve_case_path(path, heights), c.nside);
+  if (!heights.empty()) check_summit_list(reader, resolve_case_path(path, heights), c);
 
   // [sliding]
   c.speed = reader.positive("sliding.speed", c.speed);
@@ -196,7 +200,7 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
   const std::string material_sha = sha256_hex(file_bytes(c.material_file));
   const std::string deck_sha = sha256_hex(deck_text);
   nlohmann::json surface = {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}};
-  if (!c.heights_file.empty()) surface["heights_sha256"] = sha256_hex(file_bytes(c.heights_file));
+  if (!c.heights_file.empty()) surface["heights_sha256"] = c.heights_sha256;
   std::vector<Sample> samples;
   for (std::size_t ip = 0; ip < c.pressures.size(); ++ip)
     for (std::size_t is = 0; is < c.seeds.size(); ++is) {

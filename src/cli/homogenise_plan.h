@@ -25,6 +25,7 @@ struct HomogeniseCase {
   double R = 1.0e-4, sigma = 2.0e-7, spacing = 2.0e-5;
   long nside = 64;
   std::string heights_file;  // resolved summit list (LAMMPS atomfile "ID z"), empty: Gaussian heights of RMS sigma
+  std::string heights_sha256;  // of the list's bytes as checked (part of every sample's key)
   // [sliding]
   double speed = 0.1;
   // [grid]

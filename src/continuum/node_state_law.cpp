@@ -64,9 +64,9 @@ double NodeStateLaw::peak_mu(const std::vector<double> &pressure, const std::vec
   double weighted = 0.0, load = 0.0;
   for (std::size_t i = 0; i < h_.size(); ++i) {
     if (!(pressure[i] > 0.0)) continue;
+    const auto slice = law_->slice(pressure[i], policy_);  // the Error policy throws here too
     double peak = 0.0;
-    for (double h : law_->worn_depth())
-      peak = std::max(peak, law_->values(pressure[i], h, policy_).mu_body);  // Error policy throws here too
+    for (double h : law_->worn_depth()) peak = std::max(peak, law_->value(StateField::MuBody, slice, h));
     weighted += peak * pressure[i] * area[i];
     load += pressure[i] * area[i];
   }

@@ -11,6 +11,7 @@ and Rq(h) within 3 % at every h in [depth/10, depth].
 """
 import argparse
 import json
+import math
 import os
 import subprocess
 import sys
@@ -18,8 +19,10 @@ import sys
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tests", "lammps"))
 from run_deck import mpi_env  # noqa: E402  (Open MPI as root, oversubscription, one thread per rank)
+sys.path.insert(0, os.path.join(SOURCE, "tools"))
+from state_law import sample_at_depth, sample_rows  # noqa: E402  (homogenise's reduction of a sample)
 P1, P2, PMID = 3.0e6, 7.3e6, (3.0e6 * 7.3e6) ** 0.5
-DEPTH, SEED, NSIDE = 3.0e-8, 4711, 32
+DEPTH, SEED, NSIDE, DEPTH_POINTS = 3.0e-8, 4711, 32, 16
 LIMIT = 0.03
 
 
@@ -66,7 +69,7 @@ pressures = 2
 seeds = 1
 acceleration = [{1e8 / P1}, {1e8 / P2}]
 depth = {DEPTH}
-depth_points = 16
+depth_points = {DEPTH_POINTS}
 nslide = 60000
 nout = 50
 ''')
@@ -80,20 +83,17 @@ nout = 50
          "-var", "material", material, "-var", "nside", str(NSIDE), "-var", "pressure", repr(PMID),
          "-var", "seed", str(seeds[0]), "-var", "accel", repr(1e8 / PMID), "-var", "depth", repr(DEPTH),
          "-var", "nout", "50", "-var", "nslide", "60000", "-var", "out", direct], work)
-    rows = []
-    with open(os.path.join(work, direct)) as f:
-        for line in f:
-            if not line.startswith("#") and line.strip():
-                rows.append([float(x) for x in line.split()])
-    rows = [r for r in rows if r[1] > 0.0]          # sliding rows (s > 0): what the law is built from
+    # the direct run reduced as `runin homogenise` reduces a sample (mu_body: the least-squares line over half a
+    # grid step of the law's depths; Rq: linear between rows), so that law and run mean the same thing at h
+    rows = sample_rows(os.path.join(work, direct))
     grid = [DEPTH * (0.1 + 0.9 * i / 18) for i in range(19)]
+    step = DEPTH / (DEPTH_POINTS - 1)
 
     def direct_at(h, column):
-        for r0, r1 in zip(rows, rows[1:]):
-            if r0[2] <= h <= r1[2] and r1[2] > r0[2]:
-                w = (h - r0[2]) / (r1[2] - r0[2])
-                return (1 - w) * r0[column] + w * r1[column]
-        fail(f"direct run does not reach h = {h:g} m")
+        value = sample_at_depth(rows, column, h, step, fit=column == 4)
+        if math.isnan(value):
+            fail(f"direct run does not reach h = {h:g} m")
+        return value
 
     lookups = json.loads(run([a.reader, law, repr(PMID)] + [repr(h) for h in grid], work))["lookup"]
     worst = {}
