@@ -576,7 +576,8 @@ void PairRuninAsperity::eval(int eflag)
     const int i = ilist[ii];
     const int jnum = numneigh[i];
     if (jnum == 0) continue;
-    if (ntouching + jnum > static_cast<int>(touching.size())) touching.resize(2 * (ntouching + jnum));
+    if (ntouching + jnum + kPrefetchAhead > static_cast<int>(touching.size()))
+      touching.resize(2 * (ntouching + jnum + kPrefetchAhead));
     TouchingPair *out = touching.data();
     const double xi[3] = {x[i][0], x[i][1], x[i][2]};
     const double radi = radius[i];
@@ -599,8 +600,13 @@ void PairRuninAsperity::eval(int eflag)
     }
   }
 
-  // Pass 2: the contact forces.
+  // Pass 2: the contact forces. The histories of all neighbours far exceed the caches and pass 1 did not
+  // read them: fetch each a few contacts ahead (the records past ntouching exist, as pass 1 sized the list
+  // for it; a prefetch of a stale address is harmless).
+  constexpr int HISTORY_LINES = (HISTORY * static_cast<int>(sizeof(double)) + 63) / 64;
   for (int c = 0; c < ntouching; c++) {
+    const double *ahead = touching[c + kPrefetchAhead].history;
+    for (int line = 0; line < HISTORY_LINES; line++) __builtin_prefetch(ahead + 8 * line, 1);
     const int i = touching[c].i, j = touching[c].j;
     double *history = touching[c].history;
     const int itype = type[i];

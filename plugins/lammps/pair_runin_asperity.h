@@ -118,6 +118,7 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
     double *history;
   };
   std::vector<TouchingPair> touching;    // the touching pairs of one step (grows, never shrinks)
+  static constexpr int kPrefetchAhead = 8;    // contacts between a history's prefetch and its use
   double *maxrad;            // per type
 
   class FixDummy *fix_dummy;

@@ -148,7 +148,7 @@ RestitutionDamping::RestitutionDamping(double e) : restitution_(e), factor_(0.0)
 }
 
 StaticKineticFriction::StaticKineticFriction(double mu_static, double mu_kinetic, double d_c)
-    : mu_s_(mu_static), mu_k_(mu_kinetic), d_c_(d_c)
+    : mu_s_(mu_static), mu_k_(mu_kinetic), d_c_(d_c), inv_d_c_(d_c > 0.0 ? 1.0 / d_c : 0.0)
 {
   require(mu_s_ >= 0.0, "mu_s: static friction coefficient must be >= 0");
   require(mu_k_ >= 0.0, "mu_k: kinetic friction coefficient must be >= 0");

@@ -85,14 +85,14 @@ class StaticKineticFriction {
   {
     if (accumulated_slip <= 0.0) return mu_s_;
     if (d_c_ == 0.0) return mu_k_;
-    return mu_k_ + (mu_s_ - mu_k_) * std::max(0.0, 1.0 - accumulated_slip / d_c_);
+    return mu_k_ + (mu_s_ - mu_k_) * std::max(0.0, 1.0 - accumulated_slip * inv_d_c_);
   }
   // The part of coefficient() above mu_k: (mu_s - mu_k) max(0, 1 - slip/d_c).
   double static_excess(double accumulated_slip) const
   {
     if (accumulated_slip <= 0.0) return mu_s_ - mu_k_;
     if (d_c_ == 0.0) return 0.0;
-    return (mu_s_ - mu_k_) * std::max(0.0, 1.0 - accumulated_slip / d_c_);
+    return (mu_s_ - mu_k_) * std::max(0.0, 1.0 - accumulated_slip * inv_d_c_);
   }
   // Limit force when the kinetic level is given as a force (e.g. adhesion + ploughing, friction_strength.h):
   // kinetic_force + static_excess(slip) F_n; with kinetic_force = mu_k F_n this is coefficient(slip) F_n.
@@ -106,6 +106,7 @@ class StaticKineticFriction {
 
  private:
   double mu_s_, mu_k_, d_c_;
+  double inv_d_c_;    // 1 / d_c (0 for d_c = 0): a multiplication in the force loop
 };
 
 // Outcome of one tangential update of a contact.
@@ -143,10 +144,12 @@ inline TangentialUpdate mindlin_spring(double kt, double limit, const double n[3
   // 1. rotate into the current tangent plane, keeping the length
   const double along_normal = xi[0] * n[0] + xi[1] * n[1] + xi[2] * n[2];
   if (std::fabs(along_normal) * kt > 1e-10 * limit) {
-    const double length = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+    // one square root of the squared ratio: LAMMPS takes two (both lengths), a longer chain of dependent
+    // operations for the same factor to rounding
+    const double length_sq = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
     for (int k = 0; k < 3; ++k) xi[k] -= along_normal * n[k];
-    const double projected = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
-    const double restore = projected > 0.0 ? length / projected : 0.0;
+    const double projected_sq = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
+    const double restore = projected_sq > 0.0 ? std::sqrt(length_sq / projected_sq) : 0.0;
     for (int k = 0; k < 3; ++k) xi[k] *= restore;
   }
   // 2. advance with the tangential relative velocity
@@ -162,12 +165,13 @@ inline TangentialUpdate mindlin_spring(double kt, double limit, const double n[3
     // (LAMMPS also tests |xi| != 0 here: with a finite k_t, |F_t| > limit >= 0 implies it)
     out.slipping = true;
     out.force_magnitude = limit;
-    const double neg_inv_kt = -1.0 / kt, scale = limit / ft_mag;
+    // two divisions where LAMMPS takes five (xi = -limit F_t / (|F_t| k_t) per component): equal to rounding
+    const double inv_kt = 1.0 / kt, scale = limit / ft_mag;
     // the spring shrinks along itself from |xi| = |F_t| / k_t to limit / k_t: the slider slips by the difference
-    out.slip_increment = (ft_mag - limit) * -neg_inv_kt;
+    out.slip_increment = (ft_mag - limit) * inv_kt;
     for (int k = 0; k < 3; ++k) {
-      xi[k] = neg_inv_kt * (limit * ft[k] / ft_mag);
       ft[k] *= scale;
+      xi[k] = -inv_kt * ft[k];
     }
   }
   for (int k = 0; k < 3; ++k) out.force[k] = ft[k];

@@ -188,10 +188,13 @@ TEST(MindlinLammps, SlipIncrementIsTheShortening)
   }
 }
 
-// Bit for bit against the LAMMPS transcription over a random history: rotating and tilting normals,
-// random tangential velocities (stick, slip, reversals), k_t and limit changing with the overlap, a
-// limit that drops to zero (F_n clamped), and setup calls.
-TEST(MindlinLammps, AgreesWithPairGranularBitForBit)
+// Against the LAMMPS transcription over a random history: rotating and tilting normals, random tangential
+// velocities (stick, slip, reversals), k_t and limit changing with the overlap, a limit that drops to zero
+// (F_n clamped), and setup calls. Equal to rounding: RunIn restores the length with one square root of the
+// squared ratio and rescales a slipping spring with two divisions where LAMMPS takes five (shorter chains
+// of dependent operations in the force loop); the two histories, each carried on by its own code, stay
+// within 1e-13 of each other over the 5000 steps.
+TEST(MindlinLammps, AgreesWithPairGranularToRounding)
 {
   std::mt19937_64 rng(29092021);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -218,9 +221,10 @@ TEST(MindlinLammps, AgreesWithPairGranularBitForBit)
     }
     lammps_mindlin(kt, limit, n, vt, 1e-10, history, true, fs);
     const TangentialUpdate out = mindlin_spring(kt, limit, n, vt, 1e-10, spring, slip, true);
+    const double force_scale = norm3(fs), spring_scale = norm3(history);
     for (int k = 0; k < 3; ++k) {
-      ASSERT_EQ(out.force[k], fs[k]) << step << " " << k;
-      ASSERT_EQ(spring[k], history[k]) << step << " " << k;
+      ASSERT_NEAR(out.force[k], fs[k], 1e-13 * force_scale) << step << " " << k;
+      ASSERT_NEAR(spring[k], history[k], 1e-13 * spring_scale) << step << " " << k;
     }
     (out.slipping ? slipping : sticking)++;
   }
