@@ -150,7 +150,8 @@ class ElasticPlasticNormalModel {
   static constexpr std::array<const char *, 3> coefficient_names{"E*", "S_y", "nu"};
   static constexpr int history_slots = CONTACT_HISTORY_SIZE - HISTORY_MAX_OVERLAP;
   explicit ElasticPlasticNormalModel(const double *c)
-      : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]), inv_omega_c_(1.0 / unit_.critical_interference()),
+      : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]), plastic_table_(unit_),
+        inv_omega_c_(1.0 / unit_.critical_interference()),
         stick_critical_load_(BrizmerStaticFriction::critical_load_ratio(c[2]) * unit_.critical_force()),
         inv_flow_pressure_(1.0 / (JacksonGreen::kHardnessLimit * c[1]))
   {
@@ -178,11 +179,21 @@ class ElasticPlasticNormalModel {
     const bool loading = omega >= omega_max;
     double residual = cached_residual, exponent = 0.0;
 
-    if (loading) {
-      // the Jackson-Green curve
+    const double x = omega * inv_omega_c_;
+    if (loading && plastic_table_.covers(x)) {
+      // the fully plastic Jackson-Green branch and what loading derives from it, tabulated
+      const PlasticLoadingPoint p = plastic_table_.evaluate(x);
+      out.range_ratio = x * (1.0 / JacksonGreen::kCheckedRange);
+      residual = p.residual_ratio * omega;
+      exponent = p.exponent;
+      out.force = p.force;
+      out.contact_radius = p.contact_radius;
+      out.stiffness = p.stiffness;
+      out.groove_ploughing = p.groove_ploughing;
+    } else if (loading) {
+      // the Jackson-Green curve (Hertz and the bridge to the fit; the fit itself beyond the table)
       double log_x;    // ln(omega / omega_c) for omega > omega_c (the fit's own)
       const ContactPoint p = unit_.evaluate(omega, log_x);
-      const double x = omega * inv_omega_c_;
       out.range_ratio = x * (1.0 / JacksonGreen::kCheckedRange);
       if (x > 1.0) {
         residual = ElasticPlasticUnloading::residual_ratio_of_log(log_x) * omega;
@@ -283,6 +294,7 @@ class ElasticPlasticNormalModel {
   static constexpr double kPi = 3.14159265358979323846;
   double e_eff_;
   JacksonGreen unit_;    // the loading curve of a unit-radius sphere
+  PlasticLoadingTable plastic_table_;    // its fully plastic branch, tabulated for the force loops
   double inv_omega_c_;   // 1 / omega_c of the unit sphere
   double stick_critical_load_;    // L_c of the unit sphere (fitted for 0.2 <= nu < 0.5; checked by its user)
   double inv_flow_pressure_;      // 1 / (2.84 S_y): the flow pressure of a worn flat's micro-contacts

@@ -142,4 +142,66 @@ BrizmerStaticFriction::BrizmerStaticFriction(const JacksonGreen &loading)
   inv_critical_load_ = 1.0 / critical_load_;
 }
 
+PlasticLoadingPoint PlasticLoadingTable::exact(const JacksonGreen &curve, double x)
+{
+  const double omega = x * curve.critical_interference();
+  double log_x;
+  const ContactPoint p = curve.fit(omega, log_x);
+  PlasticLoadingPoint out;
+  out.force = p.force;
+  out.stiffness = p.stiffness;
+  out.contact_radius = p.contact_radius;
+  out.residual_ratio = ElasticPlasticUnloading::residual_ratio_of_log(log_x);
+  out.exponent = ElasticPlasticUnloading::unloading_exponent_of_log(log_x);
+  out.groove_ploughing = p.force / (JacksonGreen::kPi * p.contact_radius * p.contact_radius) *
+                         sphere_groove_area(curve.coefficients().effective_radius, out.residual_ratio * omega);
+  return out;
+}
+
+PlasticLoadingTable::PlasticLoadingTable(const JacksonGreen &curve) : pieces_(kPieces)
+{
+  // T_k(t) as monomial coefficients, for the conversion of each piece's Chebyshev series
+  long double chebyshev[kCoefficients][kCoefficients] = {};
+  chebyshev[0][0] = 1.0L;
+  chebyshev[1][1] = 1.0L;
+  for (int k = 2; k < kCoefficients; ++k)
+    for (int m = 0; m < kCoefficients; ++m)
+      chebyshev[k][m] = (m > 0 ? 2.0L * chebyshev[k - 1][m - 1] : 0.0L) - chebyshev[k - 2][m];
+  const long double pi = 3.141592653589793238462643383279502884L;
+
+  for (int p = 0; p < kPieces; ++p) {
+    const int index = kFirstPiece + p;
+    const double octave = std::ldexp(1.0, (index >> kMantissaBits) - 1023);
+    const double half_width = octave / (2 * kPiecesPerOctave);    // a power of two: t is exact to rounding
+    Piece &piece = pieces_[p];
+    piece.centre = octave * (1.0 + static_cast<double>(index & (kPiecesPerOctave - 1)) / kPiecesPerOctave) +
+                   half_width;
+    piece.inv_half_width = 1.0 / half_width;
+
+    long double series[kCoefficients][kQuantities] = {};
+    for (int j = 0; j < kCoefficients; ++j) {
+      const long double angle = pi * (j + 0.5L) / kCoefficients;
+      const double t = static_cast<double>(std::cos(angle));
+      const PlasticLoadingPoint v = exact(curve, piece.centre + t * half_width);
+      const double values[kQuantities] = {v.force,    v.stiffness, v.contact_radius, v.residual_ratio,
+                                          v.exponent, v.groove_ploughing};
+      for (int k = 0; k < kCoefficients; ++k) {
+        const long double weight = (k == 0 ? 1.0L : 2.0L) / kCoefficients * std::cos(k * angle);
+        for (int q = 0; q < kQuantities; ++q) series[k][q] += weight * values[q];
+      }
+    }
+    for (int m = 0; m < kCoefficients; ++m)
+      for (int q = 0; q < kQuantities; ++q) {
+        long double monomial = 0.0L;
+        for (int k = m; k < kCoefficients; ++k) monomial += series[k][q] * chebyshev[k][m];
+        piece.coefficient[m][q] = static_cast<double>(monomial);
+      }
+    const double end = piece.centre + half_width;
+    const double omega_end = end * curve.critical_interference();
+    if (upper_ == kUpper && PlasticLoadingTable::exact(curve, end).residual_ratio * omega_end >=
+                                curve.coefficients().effective_radius)
+      upper_ = piece.centre - half_width;
+  }
+}
+
 }    // namespace runin::tribo

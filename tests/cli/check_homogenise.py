@@ -112,11 +112,15 @@ def mode_build(args):
             fail(f"provenance.{field} missing")
     if doc["material"]["rough"] != "Steel1020" or len(doc["material"]["sha256"]) != 64:
         fail(f"material: {doc['material']}")
-    # physical wear rate at the top pressure: Archard k p / H (the cell's k was acceleration x k)
+    # physical wear rate at the top pressure: Archard k p / H (the cell's k was acceleration x k). Mean over
+    # the law's depths: the 36-summit cell is chaotic (a change of S_y by 3e-14 moves the rate at one depth by
+    # a few per cent), the mean is not
     p = read["pressure"][-1]
-    rate = read["mid_depth"][-1]["wear_rate"]
+    with open(law) as f:
+        rates = json.load(f)["fields"]["wear_rate"]["mean"][-1]
+    rate = sum(rates) / len(rates)
     if abs(rate / (K * p / H) - 1.0) > 0.25:
-        fail(f"wear rate at p = {p:g}: {rate:.4g}, Archard k p / H = {K * p / H:.4g}")
+        fail(f"wear rate at p = {p:g} (mean over depths): {rate:.4g}, Archard k p / H = {K * p / H:.4g}")
 
     second, warm = homogenise(args, case, law, cache, args.deck, 0)
     if "0 samples to run" not in second.stdout or "mpirun" in second.stdout:
