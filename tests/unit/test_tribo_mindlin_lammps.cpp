@@ -232,6 +232,38 @@ TEST(MindlinLammps, AgreesWithPairGranularToRounding)
   EXPECT_GT(sticking, 500);
 }
 
+// The restore factor from a spring nearly in the new plane to one nearly along the normal (q = sin^2 of its
+// angle to the plane): the rotated spring equals LAMMPS's to rounding and keeps its length.
+TEST(MindlinLammps, RestoreAgreesWithLammpsAtEveryAngle)
+{
+  const double n[3] = {0.0, 0.0, 1.0}, zero[3] = {0.0, 0.0, 0.0};
+  for (double q : {1e-10, 1e-6, 1e-3, 0.1, 0.9}) {
+    const double s = std::sqrt(q), c = std::sqrt(1.0 - q);
+    double spring[3] = {1e-9 * c * 0.6, 1e-9 * c * 0.8, 1e-9 * s}, history[3], slip = 0.0, fs[3];
+    for (int k = 0; k < 3; ++k) history[k] = spring[k];
+    const double length = norm3(spring);
+    lammps_mindlin(1e6, 1.0, n, zero, 1e-9, history, true, fs);
+    mindlin_spring(1e6, 1.0, n, zero, 1e-9, spring, slip, true);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(spring[k], history[k], 4e-16 * length) << "q = " << q << " " << k;
+    EXPECT_NEAR(norm3(spring), length, 4e-16 * length) << "q = " << q;
+    EXPECT_EQ(spring[2], 0.0) << "q = " << q;
+  }
+}
+
+// A spring lying along the new normal but for a denormal remainder: the squared-ratio restore would
+// overflow to inf (LAMMPS's two lengths would not); the spring is dropped instead and the force is finite.
+TEST(MindlinLammps, SpringAlongTheNormalStaysFinite)
+{
+  const double n[3] = {0.0, 0.0, 1.0}, zero[3] = {0.0, 0.0, 0.0};
+  double spring[3] = {1e-160, 0.0, 1.0}, slip = 0.0;
+  const TangentialUpdate out = mindlin_spring(1.0, 1.0, n, zero, 1e-9, spring, slip, true);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_TRUE(std::isfinite(out.force[k])) << k;
+    EXPECT_TRUE(std::isfinite(spring[k])) << k;
+  }
+  EXPECT_EQ(spring[2], 0.0);
+}
+
 // Setup (advance = false): nothing is stored, and the force is that of the stored spring after the frame
 // update (equal to LAMMPS's when the spring is in the tangent plane, as in a continued run).
 TEST(MindlinLammps, SetupReadsButDoesNotStore)
