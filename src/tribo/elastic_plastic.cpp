@@ -179,16 +179,24 @@ PlasticLoadingTable::PlasticLoadingTable(const JacksonGreen &curve) : pieces_(kP
     piece.inv_half_width = 1.0 / half_width;
 
     long double series[kCoefficients][kQuantities] = {};
+    bool finite = true;
     for (int j = 0; j < kCoefficients; ++j) {
       const long double angle = pi * (j + 0.5L) / kCoefficients;
       const double t = static_cast<double>(std::cos(angle));
       const PlasticLoadingPoint v = exact(curve, piece.centre + t * half_width);
       const double values[kQuantities] = {v.force,    v.stiffness, v.contact_radius, v.residual_ratio,
                                           v.exponent, v.groove_ploughing};
+      for (double value : values) finite = finite && std::isfinite(value);
       for (int k = 0; k < kCoefficients; ++k) {
         const long double weight = (k == 0 ? 1.0L : 2.0L) / kCoefficients * std::cos(k * angle);
         for (int q = 0; q < kQuantities; ++q) series[k][q] += weight * values[q];
       }
+    }
+    if (!finite) {
+      // the fit overflows from here on (extreme S_y/E*: B = 0.14 exp(23 S_y/E*) reaches hundreds): the
+      // equations take over, and a non-finite force is caught by the hosts' finite-force check as before
+      upper_ = piece.centre - half_width;
+      break;
     }
     for (int m = 0; m < kCoefficients; ++m)
       for (int q = 0; q < kQuantities; ++q) {
@@ -198,9 +206,10 @@ PlasticLoadingTable::PlasticLoadingTable(const JacksonGreen &curve) : pieces_(kP
       }
     const double end = piece.centre + half_width;
     const double omega_end = end * curve.critical_interference();
-    if (upper_ == kUpper && PlasticLoadingTable::exact(curve, end).residual_ratio * omega_end >=
-                                curve.coefficients().effective_radius)
+    if (PlasticLoadingTable::exact(curve, end).residual_ratio * omega_end >= curve.coefficients().effective_radius) {
       upper_ = piece.centre - half_width;
+      break;
+    }
   }
 }
 

@@ -303,6 +303,26 @@ TEST(PlasticLoadingTable, MatchesTheEquationsItInterpolates)
   }
 }
 
+// An extreme material (S_y/E* = 0.2: omega_c = 0.26 R, area exponent B = 14): the residual depth reaches the
+// radius at a few omega_c, so the table is short, and finite and exact up to its end (a non-finite sample
+// would also end it there; for the fit to overflow within 2^19 omega_c, B would have to exceed 57, at
+// S_y/E* > 0.26, where the residual cut-off comes first).
+TEST(PlasticLoadingTable, ExtremeMaterialStaysFiniteAndExact)
+{
+  const JacksonGreen jg(100e9, 1.0, 20e9, 0.3);
+  const PlasticLoadingTable table(jg);
+  ASSERT_LT(table.upper(), PlasticLoadingTable::kUpper);
+  ASSERT_GT(table.upper(), JacksonGreen::kFitStart);
+  for (int i = 0; i < 1000; ++i) {
+    const double x = JacksonGreen::kFitStart * std::pow(table.upper() / JacksonGreen::kFitStart, i / 1000.0);
+    const PlasticLoadingPoint got = table.evaluate(x), want = PlasticLoadingTable::exact(jg, x);
+    ASSERT_TRUE(std::isfinite(got.force) && std::isfinite(got.contact_radius) && std::isfinite(got.groove_ploughing))
+        << x;
+    EXPECT_LT(relative(got.force, want.force), 1e-12) << x;
+    EXPECT_LT(relative(got.contact_radius, want.contact_radius), 1e-12) << x;
+  }
+}
+
 TEST(ElasticPlasticUnloading, ResidualInterferenceMatchesEtsionKligermanKadin)
 {
   for (double x : {0.5, 1.0, 1.5, 2.0, 10.0, 50.0, 110.0}) {
