@@ -257,8 +257,9 @@ class BrizmerStaticFriction {
 // piecewise polynomials in omega*: a force loop evaluates it with a few dozen multiply-adds instead of about
 // ten libm calls (one log, six exponentials, asin). Pieces are 1/16 of an octave of omega* (indexed by the
 // bits of the double, no logarithm), each a degree-7 polynomial interpolating the exact curve at its 8
-// Chebyshev nodes; relative error below 1e-13 for omega* in [1.9, kUpper) (unit test against the equations).
-// Above kUpper, far outside the fits' range, callers evaluate the equations.
+// Chebyshev nodes; relative error below 1e-13 (the groove 1e-10, its own closed form's cancellation) for
+// omega* in [1.9, upper()) (unit test against the equations). Outside that range callers evaluate the
+// equations.
 struct PlasticLoadingPoint {
   double force = 0.0;               // P [N]
   double stiffness = 0.0;           // dP/domega [N/m]
