@@ -179,35 +179,36 @@ class ElasticPlasticNormalModel {
     const bool loading = omega >= omega_max;
     double residual = cached_residual, exponent = 0.0;
 
-    const double x = omega * inv_omega_c_;
-    if (loading && plastic_table_.covers(x)) {
-      // the fully plastic Jackson-Green branch and what loading derives from it, tabulated
-      const PlasticLoadingPoint p = plastic_table_.evaluate(x);
+    if (loading) {
+      const double x = omega * inv_omega_c_;
       out.range_ratio = x * (1.0 / JacksonGreen::kCheckedRange);
-      residual = p.residual_ratio * omega;
-      exponent = p.exponent;
-      out.force = p.force;
-      out.contact_radius = p.contact_radius;
-      out.stiffness = p.stiffness;
-      out.groove_ploughing = p.groove_ploughing;
-    } else if (loading) {
-      // the Jackson-Green curve (Hertz and the bridge to the fit; the fit itself beyond the table)
-      double log_x;    // ln(omega / omega_c) for omega > omega_c (the fit's own)
-      const ContactPoint p = unit_.evaluate(omega, log_x);
-      out.range_ratio = x * (1.0 / JacksonGreen::kCheckedRange);
-      if (x > 1.0) {
-        residual = ElasticPlasticUnloading::residual_ratio_of_log(log_x) * omega;
-        exponent = ElasticPlasticUnloading::unloading_exponent_of_log(log_x);
+      if (plastic_table_.covers(x)) {
+        // the fully plastic Jackson-Green branch and what loading derives from it, tabulated
+        const PlasticLoadingPoint p = plastic_table_.evaluate(x);
+        residual = p.residual_ratio * omega;
+        exponent = p.exponent;
+        out.force = p.force;
+        out.contact_radius = p.contact_radius;
+        out.stiffness = p.stiffness;
+        out.groove_ploughing = p.groove_ploughing;
       } else {
-        residual = 0.0;
-        exponent = 1.5;
+        // the Jackson-Green curve (Hertz and the bridge to the fit; the fit itself beyond the table)
+        double log_x;    // ln(omega / omega_c) for omega > omega_c (the fit's own)
+        const ContactPoint p = unit_.evaluate(omega, log_x);
+        if (x > 1.0) {
+          residual = ElasticPlasticUnloading::residual_ratio_of_log(log_x) * omega;
+          exponent = ElasticPlasticUnloading::unloading_exponent_of_log(log_x);
+        } else {
+          residual = 0.0;
+          exponent = 1.5;
+        }
+        out.force = p.force;
+        out.contact_radius = p.contact_radius;
+        out.stiffness = p.stiffness;
+        if (residual > 0.0)
+          out.groove_ploughing =
+              p.force / (kPi * p.contact_radius * p.contact_radius) * sphere_groove_area(1.0, residual);
       }
-      out.force = p.force;
-      out.contact_radius = p.contact_radius;
-      out.stiffness = p.stiffness;
-      if (residual > 0.0)
-        out.groove_ploughing =
-            p.force / (kPi * p.contact_radius * p.contact_radius) * sphere_groove_area(1.0, residual);
     } else if (!(cached_residual > 0.0)) {
       // an elastic history: unloading is the (Hertz) loading curve itself
       const ContactPoint p = unit_.evaluate(omega);

@@ -195,7 +195,7 @@ PlasticLoadingTable::PlasticLoadingTable(const JacksonGreen &curve) : pieces_(kP
     if (!finite) {
       // the fit overflows from here on (extreme S_y/E*: B = 0.14 exp(23 S_y/E*) reaches hundreds): the
       // equations take over, and a non-finite force is caught by the hosts' finite-force check as before
-      upper_ = piece.centre - half_width;
+      end_before(p);
       break;
     }
     for (int m = 0; m < kCoefficients; ++m)
@@ -206,11 +206,17 @@ PlasticLoadingTable::PlasticLoadingTable(const JacksonGreen &curve) : pieces_(kP
       }
     const double end = piece.centre + half_width;
     const double omega_end = end * curve.critical_interference();
-    if (PlasticLoadingTable::exact(curve, end).residual_ratio * omega_end >= curve.coefficients().effective_radius) {
-      upper_ = piece.centre - half_width;
+    if (exact(curve, end).residual_ratio * omega_end >= curve.coefficients().effective_radius) {
+      end_before(p);
       break;
     }
   }
+}
+
+void PlasticLoadingTable::end_before(int piece)
+{
+  upper_ = pieces_[piece].centre - 1.0 / pieces_[piece].inv_half_width;
+  pieces_.resize(piece);    // only the pieces below upper_ are ever read
 }
 
 }    // namespace runin::tribo

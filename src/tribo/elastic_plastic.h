@@ -295,6 +295,7 @@ class PlasticLoadingTable {
     double centre, inv_half_width;
     double coefficient[kCoefficients][kQuantities];    // monomials in t = (x - centre) / half width
   };
+  void end_before(int piece);    // the table ends where this piece starts
   std::vector<Piece> pieces_;
   double upper_ = kUpper;
 };
