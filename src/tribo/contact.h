@@ -146,11 +146,13 @@ inline TangentialUpdate mindlin_spring(double kt, double limit, const double n[3
   if (std::fabs(along_normal) * kt > 1e-10 * limit) {
     // one square root of the squared ratio: LAMMPS takes two (both lengths), a longer chain of dependent
     // operations for the same factor to rounding. A spring (almost) along the normal has no direction in
-    // the plane left: it is dropped, as LAMMPS drops a zero projection (the ratio stays finite).
+    // the plane left: it is dropped, as LAMMPS drops a zero projection (the ratio stays finite). The test
+    // scales the projection up, not the length down: 1e-300 |xi|^2 of a micrometre spring is subnormal,
+    // and subnormal arithmetic costs the force loop about half its speed.
     const double length_sq = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
     for (int k = 0; k < 3; ++k) xi[k] -= along_normal * n[k];
     const double projected_sq = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
-    const double restore = projected_sq > 1e-300 * length_sq ? std::sqrt(length_sq / projected_sq) : 0.0;
+    const double restore = projected_sq * 1e300 > length_sq ? std::sqrt(length_sq / projected_sq) : 0.0;
     for (int k = 0; k < 3; ++k) xi[k] *= restore;
   }
   // 2. advance with the tangential relative velocity
