@@ -196,7 +196,7 @@ TEST(ContactModelElasticPlastic, WornFlatCarriesItsLoadOnPlasticMicroContacts)
 }
 
 // Subnormal numbers cost the force loops up to a hundred cycles per operation (the Mindlin drop test once
-// formed 1e-300 |xi|^2 of a micrometre spring and halved the pair's speed). A sliding, rolling contact of
+// formed 1e-300 |xi|^2 of a micrometre spring and halved the pair's speed). A sliding contact of
 // the micro decks' scale (R* = 0.5 um, nm overlaps, m/s, dt = 0.1 ns), loaded, unloaded and reloaded with
 // the normal turning every step, must not raise the underflow flag with any normal and friction model.
 namespace {
