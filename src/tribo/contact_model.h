@@ -205,9 +205,7 @@ class ElasticPlasticNormalModel {
         out.force = p.force;
         out.contact_radius = p.contact_radius;
         out.stiffness = p.stiffness;
-        if (residual > 0.0)
-          out.groove_ploughing =
-              p.force / (kPi * p.contact_radius * p.contact_radius) * sphere_groove_area(1.0, residual);
+        if (residual > 0.0) out.groove_ploughing = groove_ploughing_force(p.force, p.contact_radius, 1.0, residual);
       }
     } else if (!(cached_residual > 0.0)) {
       // an elastic history: unloading is the (Hertz) loading curve itself

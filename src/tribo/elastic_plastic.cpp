@@ -103,7 +103,7 @@ double ElasticPlasticUnloading::max_mean_pressure() const
 
 double ElasticPlasticUnloading::ploughing_force() const
 {
-  return max_mean_pressure() * sphere_groove_area(radius_, omega_res_);
+  return groove_ploughing_force(force_max_, radius_max_, radius_, omega_res_);
 }
 
 double sphere_ploughing_coefficient(double half_width_over_radius)
@@ -153,8 +153,8 @@ PlasticLoadingPoint PlasticLoadingTable::exact(const JacksonGreen &curve, double
   out.contact_radius = p.contact_radius;
   out.residual_ratio = ElasticPlasticUnloading::residual_ratio_of_log(log_x);
   out.exponent = ElasticPlasticUnloading::unloading_exponent_of_log(log_x);
-  out.groove_ploughing = p.force / (JacksonGreen::kPi * p.contact_radius * p.contact_radius) *
-                         sphere_groove_area(curve.coefficients().effective_radius, out.residual_ratio * omega);
+  out.groove_ploughing = groove_ploughing_force(p.force, p.contact_radius, curve.coefficients().effective_radius,
+                                                out.residual_ratio * omega);
   return out;
 }
 

@@ -204,6 +204,14 @@ inline double sphere_groove_area(double radius, double depth)
   return 0.5 * radius * radius * phi_minus_sin;
 }
 
+// Ploughing force of the permanent groove of residual depth `residual` that a sphere of radius R leaves,
+// pushed at the mean pressure P / (pi a^2) of the contact that made it (0 for a = 0): F_p = p_m A_g.
+inline double groove_ploughing_force(double force, double contact_radius, double radius, double residual)
+{
+  if (!(contact_radius > 0.0)) return 0.0;
+  return force / (3.14159265358979323846 * contact_radius * contact_radius) * sphere_groove_area(radius, residual);
+}
+
 // Ploughing coefficient of a sphere that leaves a groove of half-width b (b <= R), Bowden & Tabor's
 // two-term model with the load carried by the front half of the contact, pi b^2 / 2 (Goddard & Wilman
 // 1962, Wear 5:114): mu_p = A_g / (pi b^2 / 2) = (2/pi) [(R/b)^2 asin(b/R) - sqrt((R/b)^2 - 1)];
