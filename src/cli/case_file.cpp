@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <tuple>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -95,9 +96,12 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       const std::string file = law_path ? *law_path : reader.text("friction.law", "");
       if (file.empty())
         reader.fail("friction.law", "missing (required): the state law file (runin homogenise), or --law FILE");
-      state->path = (law_path ? std::filesystem::path(file).lexically_normal() : resolve_case_path(reader.path(), file))
-                        .string();
-      if (!std::filesystem::exists(state->path)) reader.fail("friction.law", "no such file: " + state->path);
+      if (law_path) {
+        state->path = std::filesystem::path(file).lexically_normal().string();
+        if (!std::filesystem::exists(state->path)) throw InputError("--law: no such file: " + state->path);
+      } else {
+        state->path = find_case_file(reader, "friction.law", file).string();
+      }
       try {
         state->law = std::make_shared<const coupling::StateLaw>(coupling::StateLaw::read_file(state->path));
       } catch (const coupling::InputFormatError &e) {
@@ -146,6 +150,49 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
   }
 }
 
+std::filesystem::path find_case_file(const CaseReader &reader, const std::string &key, const std::string &file) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path named(file);
+  if (named.is_absolute()) {
+    if (!fs::is_regular_file(named, error)) reader.fail(key, "no such file: " + file);
+    return named.lexically_normal();
+  }
+  std::vector<fs::path> tried = {(fs::path(reader.path()).parent_path() / named).lexically_normal(),
+                                 (fs::current_path(error) / named).lexically_normal()};
+#ifdef RUNIN_SOURCE_DIR
+  tried.push_back((fs::path(RUNIN_SOURCE_DIR) / named).lexically_normal());
+#endif
+  std::string list;
+  for (std::size_t i = 0; i < tried.size(); ++i) {
+    if (fs::is_regular_file(tried[i], error)) {
+      if (i > 0)
+        std::cout << "runin: note: " << reader.path() << ": key '" << key << "': '" << file
+                  << "' is not beside the case file; read " << fs::absolute(tried[i]).lexically_normal().string()
+                  << (i == 1 ? " (current directory)" : " (RunIn source tree)") << "\n";
+      return tried[i];
+    }
+    list += (list.empty() ? "" : ", ") + tried[i].string();
+  }
+  reader.fail(key, "no such file '" + file + "' (tried " + list + ")");
+}
+
+void check_law_materials(const CaseReader &reader, const continuum::SlidingFriction &friction,
+                         const std::optional<std::string> &law_path, const std::string &key_a,
+                         const std::string &name_a, const std::string &key_b, const std::string &name_b) {
+  const auto *state = friction.state_law();
+  if (!state || !state->law || name_a.empty() || name_b.empty()) return;
+  const auto law = state->law->materials();
+  if (!law) return;
+  if ((law->first == name_a && law->second == name_b) || (law->first == name_b && law->second == name_a)) return;
+  const std::string problem = "the state law " + state->path + " is for " + law->first + " on " + law->second +
+                              " (its material.rough, material.counterface), the case's bodies are " + name_a + " (" +
+                              key_a + ") and " + name_b + " (" + key_b +
+                              "): use a law homogenised for these materials (runin homogenise)";
+  if (law_path) throw InputError(reader.path() + ": --law: " + problem);
+  reader.fail("friction.law", problem);
+}
+
 std::filesystem::path resolve_case_path(const std::string &case_path, const std::string &file) {
   std::filesystem::path resolved(file);
   if (resolved.is_relative()) {
@@ -166,8 +213,8 @@ std::optional<NamedMaterials> read_named_materials(const CaseReader &reader, con
   NamedMaterials m;
   const std::string file = reader.text(file_key, "");
   if (file.empty()) reader.fail(file_key, "needed with " + a_key + " / " + b_key);
-  m.path = resolve_case_path(case_path, file).string();
-  if (!std::filesystem::exists(m.path)) reader.fail(file_key, "no such file: " + m.path);
+  (void)case_path;
+  m.path = find_case_file(reader, file_key, file).string();
   m.name_a = reader.text(a_key, "");
   m.name_b = reader.text(b_key, "");
   if (m.name_a.empty()) reader.fail(a_key, "needed with " + file_key);
@@ -200,7 +247,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   c.path = path;
   c.title = reader.text("title", path);
   auto &p = c.parameters;
-  p.mass = reader.positive("pin.mass");
+  p.mass = reader.positive_at_most("pin.mass", 1e3);  // kg; above it eq. 4.11's torque overflows long before
   p.track_radius = reader.positive("pin.track_radius");
   p.normal_load = reader.positive("pin.normal_load");
   p.ramp_time = reader.non_negative("loading.ramp_time", 2.0);
@@ -280,7 +327,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     if (reader.has("contact.materials") || reader.has("contact.pin_material") || reader.has("contact.disk_material")) {
       const std::string file = reader.text("contact.materials", "");
       if (file.empty()) reader.fail("contact.materials", "needed with contact.pin_material / disk_material");
-      k.materials_path = resolve_case_path(path, file).string();
+      k.materials_path = find_case_file(reader, "contact.materials", file).string();
       k.pin_name = reader.text("contact.pin_material", "");
       k.disk_name = reader.text("contact.disk_material", "");
       if (k.pin_name.empty() || k.disk_name.empty())
@@ -346,6 +393,8 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
       k.max_wear_steps = reader.positive_integer("wear.max_steps", 1000000);
     }
     c.contact = k;
+    check_law_materials(reader, *c.friction, law_path, "contact.pin_material", k.pin_name, "contact.disk_material",
+                        k.disk_name);
   }
   if (reader.has("output.vtk_times")) {
     if (!c.contact) reader.fail("output.vtk_times", "needs a [contact] table");
@@ -356,8 +405,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
     if (c.friction_model == "law_file")
       reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
-    c.sweep_mu0 = reader.numbers("sweep.mu0");
-    if (c.sweep_mu0.size() > 20) reader.fail("sweep.mu0", "more than 20 values");
+    c.sweep_mu0 = reader.numbers_at_most("sweep.mu0", CaseReader::kMaxSweepValues);
     for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
       if (c.sweep_mu0[i] < 0.0) reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0");
       try {

@@ -75,6 +75,17 @@ class CaseReader;
 // and inputs/. Lexically normal; whether it exists is the caller's check.
 std::filesystem::path resolve_case_path(const std::string &case_path, const std::string &file);
 
+// A file a case names under `key`: an absolute path as given; a relative one beside the case file, else in the
+// current directory, else in the RunIn source tree (its potentials/ and inputs/), the last two with a note on
+// stdout naming the file read. None exists: fails naming the key and every path tried (exit 2).
+std::filesystem::path find_case_file(const CaseReader &reader, const std::string &key, const std::string &file);
+
+// friction.model = "state_law" with both bodies' materials named: the law's materials (StateLaw::materials)
+// must be the same pair, in either order; otherwise fails naming both (exit 2). `law_path` is the --law option.
+void check_law_materials(const CaseReader &reader, const continuum::SlidingFriction &friction,
+                         const std::optional<std::string> &law_path, const std::string &key_a,
+                         const std::string &name_a, const std::string &key_b, const std::string &name_b);
+
 // Two materials named in a RunIn coefficient file, for the subsurface-stress yield verdict of the line contacts
 // (journal bearing, piston ring): `<section>.materials` (the .runin file; relative: to the case file's
 // directory, else to the RunIn source tree) with `<section>.<key_a>` and `<section>.<key_b>`. None of the three

@@ -32,6 +32,7 @@ toml::table parse_json_case(const std::string &text, const std::string &path);
 class CaseReader {
  public:
   static constexpr std::size_t kMaxFrames = 200;
+  static constexpr std::size_t kMaxSweepValues = 20;  // sweep.mu0: one full run each
   CaseReader(std::string path, toml::table root, const Schema &schema)
       : path_(std::move(path)), root_(std::move(root)), schema_(schema) {}
 
@@ -76,6 +77,19 @@ class CaseReader {
     const double value = number(key, fallback);
     if (value < 0.0) fail(key, "must be >= 0, got " + format(value));
     return value;
+  }
+  // In (0, max]: a key whose huge values would overflow the run's arithmetic or its run time.
+  double positive_at_most(const std::string &key, double max, std::optional<double> fallback = std::nullopt) const {
+    const double value = positive(key, fallback);
+    if (value > max) fail(key, "must be in (0, " + format(max) + "], got " + format(value));
+    return value;
+  }
+  // numbers(key), at most `max_count` of them (each is a full run).
+  std::vector<double> numbers_at_most(const std::string &key, std::size_t max_count) const {
+    std::vector<double> values = numbers(key);
+    if (values.size() > max_count)
+      fail(key, std::to_string(values.size()) + " values: give 1 to " + std::to_string(max_count));
+    return values;
   }
   // Positive and at most `max` (an int by default: callers store counts in int, which must not wrap).
   long positive_integer(const std::string &key, long fallback, long max = std::numeric_limits<int>::max()) const {

@@ -43,7 +43,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 struct Options {
-  std::string case_path, output = "law.json", cache_dir, lmp, deck;
+  std::string case_path, output = "law.json", output_dir, cache_dir, lmp, deck;
   int np = 0;  // 0: the number of cores
   std::string command_line;
 };
@@ -331,11 +331,38 @@ fs::path default_cache_dir() {
   return fs::path(".runin-cache") / "homogenise";
 }
 
+// A path for the law's provenance, valid on any machine: relative to the RunIn source tree when inside it, else
+// the file's name alone (the SHA-256 beside it identifies the content); never an absolute path of this machine.
+std::string portable_path(const fs::path &path) {
+  std::error_code error;
+  const fs::path full = fs::weakly_canonical(fs::absolute(path), error);
+  const fs::path source = fs::weakly_canonical(fs::path(RUNIN_SOURCE_DIR), error);
+  const fs::path relative = full.lexically_relative(source);
+  if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+  return full.filename().string();
+}
+
+// The command line with every absolute path (also in --option=/path) made portable.
+std::string portable_command_line(const std::string &command_line) {
+  std::istringstream words(command_line);
+  std::string out;
+  for (std::string word; words >> word;) {
+    const auto equals = word.find('=');
+    if (!word.empty() && word[0] == '/')
+      word = portable_path(word);
+    else if (equals != std::string::npos && equals + 1 < word.size() && word[equals + 1] == '/')
+      word = word.substr(0, equals + 1) + portable_path(word.substr(equals + 1));
+    out += (out.empty() ? "" : " ") + word;
+  }
+  return out;
+}
+
 int run_homogenise(const Options &o) {
   const auto start = Clock::now();
   const HomogeniseCase c = read_homogenise_case(o.case_path);
   if (o.np < 0) throw InputError("--np: must be positive");
-  const fs::path deck = fs::absolute(o.deck.empty() ? fs::path(RUNIN_SOURCE_DIR) / "inputs" / "in.rve_wall"
+  // default: the rough-on-rough cell of the pipeline (the rough-on-flat in.rve_wall's friction does not run in)
+  const fs::path deck = fs::absolute(o.deck.empty() ? fs::path(RUNIN_SOURCE_DIR) / "inputs" / "in.rve_rough"
                                                     : fs::path(o.deck));
   std::error_code error;
   if (!fs::is_regular_file(deck, error)) throw InputError("--deck: not a file: " + deck.string());
@@ -471,7 +498,7 @@ int run_homogenise(const Options &o) {
   nlohmann::json metadata = {
       {"title", c.title},
       {"material",
-       {{"file", c.material_file}, {"sha256", sha256_hex(file_bytes(c.material_file))}, {"rough", c.rough},
+       {{"file", portable_path(c.material_file)}, {"sha256", sha256_hex(file_bytes(c.material_file))}, {"rough", c.rough},
         {"counterface", c.counterface}}},
       {"surface",
        {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}, {"summits", c.nside * c.nside}}},
@@ -483,22 +510,22 @@ int run_homogenise(const Options &o) {
         {"nslide", c.nslide},
         {"nout", c.nout},
         {"band", "low/high: minimum/maximum over the good seeds at each point; mean: their mean"},
-        {"deck", {{"path", deck.string()}, {"sha256", sha256_hex(deck_text)}}},
-        {"cache_dir", cache_dir.string()},
+        {"deck", {{"path", portable_path(deck)}, {"sha256", sha256_hex(deck_text)}}},
+        {"cache_dir", portable_path(cache_dir)},
         {"list", list}}},
       {"provenance",
        {{"runin_version", runin_version()},
         {"runin_git", runin_git_describe()},
         {"lammps_version", lammps_version},
-        {"lmp", {{"path", lmp}, {"sha256", code.lmp_sha256}}},
-        {"command_line", o.command_line},
-        {"case", {{"path", fs::absolute(o.case_path).lexically_normal().string()},
+        {"lmp", {{"path", portable_path(lmp)}, {"sha256", code.lmp_sha256}}},
+        {"command_line", portable_command_line(o.command_line)},
+        {"case", {{"path", portable_path(o.case_path)},
                   {"sha256", sha256_hex(file_bytes(o.case_path))}}},
         {"date_utc", utc_now()},
         {"host", host_name()}}},
   };
   if (!c.heights_file.empty()) {
-    metadata["surface"]["heights"] = c.heights_file;
+    metadata["surface"]["heights"] = portable_path(c.heights_file);
     metadata["surface"]["heights_sha256"] = c.heights_sha256;
   }
   std::vector<double> pressures = c.pressures;
@@ -509,6 +536,10 @@ int run_homogenise(const Options &o) {
       throw std::runtime_error(std::string("homogenise: the samples give no valid state law: ") + e.what());
     }
   }();
+  if (!o.output_dir.empty()) {
+    fs::create_directories(o.output_dir, error);
+    if (error) throw std::runtime_error("cannot create --output-dir " + o.output_dir + ": " + error.message());
+  }
   StagedFile out(fs::absolute(o.output));
   out.write(law.to_json().dump(1) + "\n");
   out.commit();
@@ -528,21 +559,30 @@ int run_homogenise(const Options &o) {
 Subcommand add_homogenise_command(CLI::App &app) {
   auto o = std::make_shared<Options>();
   auto *cmd = app.add_subcommand("homogenise",
-                                 "Sample the rough-on-flat cell over a pressure grid and seeds (LAMMPS partitions) and "
-                                 "write the state law");
+                                 "Sample the rough cell (default inputs/in.rve_rough, rough on rough) over a pressure grid "
+                                 "and seeds (LAMMPS partitions) and write the state law");
   cmd->add_option("case", o->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
-  cmd->add_option("--output", o->output, "state law file to write (JSON)")->capture_default_str()->check(non_empty_path());
+  auto *output = cmd->add_option("--output", o->output, "state law file to write (JSON)")
+                     ->capture_default_str()
+                     ->check(non_empty_path());
+  // the elements' spelling: the law goes to DIR/law.json
+  cmd->add_option("--output-dir", o->output_dir, "directory to write law.json into (instead of --output)")
+      ->check(output_directory())
+      ->excludes(output);
   cmd->add_option("--cache-dir", o->cache_dir,
                   "sample cache (default $XDG_CACHE_HOME/runin/homogenise, else ~/.cache/runin/homogenise)")
       ->check(non_empty_path());
   cmd->add_option("--np", o->np, "MPI ranks = LAMMPS partitions (default: the number of cores)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--lmp", o->lmp, "LAMMPS executable with the RunIn styles (default: lmp_runin beside runin)");
-  cmd->add_option("--deck", o->deck, "cell deck (default: inputs/in.rve_wall of the RunIn source tree)");
+  cmd->add_option("--deck", o->deck,
+                  "cell deck (default: inputs/in.rve_rough of the RunIn source tree, the rough-on-rough cell; "
+                  "inputs/in.rve_wall is the rough-on-flat one)");
   return {cmd, [o] {
             // the command line as run, for the provenance: /proc/self/cmdline (NUL-separated)
             std::ifstream in("/proc/self/cmdline", std::ios::binary);
             for (std::string arg; std::getline(in, arg, '\0');) o->command_line += (o->command_line.empty() ? "" : " ") + arg;
+            if (!o->output_dir.empty()) o->output = (fs::path(o->output_dir) / "law.json").string();
             return run_homogenise(*o);
           }};
 }

@@ -451,7 +451,7 @@ Subcommand add_journal_bearing_command(CLI::App &app, PlotRunner plot) {
   cmd->add_option("--law", options->law_path,
                   "law file: from fit-law (friction.model = \"law_file\"), or from homogenise (\"state_law\", overrides friction.law)");
   cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required()
-      ->check(non_empty_path());
+      ->check(output_directory());
   cmd->add_flag("--no-plot", options->no_plot, "write CSV and VTK only");
   cmd->add_option("--max-wear-updates", options->max_wear_updates,
                   "stop with an error instead of running more wear updates (contact re-solves) than this")

@@ -455,7 +455,7 @@ CLI::App *add_pin_on_disk_command(CLI::App &app, PinOnDiskOptions &o) {
   cmd->add_option("--output-dir", o.output_dir,
                   "directory for pin_on_disk.csv/.png, pin_face_*.vts/.pvd and the mu0 sweep files")
       ->required()
-      ->check(non_empty_path());
+      ->check(output_directory());
   cmd->add_flag("--no-plot", o.no_plot, "write the CSV (and VTK) only");
   return cmd;
 }

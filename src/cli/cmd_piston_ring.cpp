@@ -840,7 +840,7 @@ Subcommand add_piston_ring_command(CLI::App &app, PlotRunner plot) {
   cmd->add_option("--output-dir", options->output_dir,
                   "directory for piston_ring*.csv, piston_ring*.png and vtk/ (liner and ring-face frames)")
       ->required()
-      ->check(non_empty_path());
+      ->check(output_directory());
   cmd->add_flag("--no-plot", options->no_plot, "write the CSV and VTK files only");
   return {cmd, [options, plot = std::move(plot)] { return run(*options, plot); }};
 }

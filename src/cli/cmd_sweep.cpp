@@ -281,7 +281,7 @@ Subcommand add_sweep_command(CLI::App &app, PlotRunner plot) {
   cmd->add_option("case", o->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
   cmd->add_option("--output-dir", o->output_dir, "directory for sweep.csv, sweep_tornado.png and cases/")
       ->required()
-      ->check(non_empty_path());
+      ->check(output_directory());
   cmd->add_option("--key", o->keys,
                   "a real-valued case key to vary (repeatable); default: the element's free parameters the case sets");
   cmd->add_option("--span", o->span, "ratio of the largest to the smallest value of each key")->capture_default_str();

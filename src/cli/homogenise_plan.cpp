@@ -93,11 +93,10 @@ HomogeniseCase read_homogenise_case(const std::string &path) {
   c.path = path;
   c.title = reader.text("title", "");
 
-  // [material]: a RunIn coefficient file (relative: to the case file's directory, else to the RunIn source tree)
+  // [material]: a RunIn coefficient file (relative: beside the case file, else the current directory, else the
+  // RunIn source tree, the last two with a note; find_case_file)
   const std::string file = required_text(reader, "material.file");
-  const fs::path resolved = resolve_case_path(path, file);
-  std::error_code error;
-  if (!fs::is_regular_file(resolved, error)) reader.fail("material.file", "no such file: " + resolved.string());
+  const fs::path resolved = find_case_file(reader, "material.file", file);
   c.material_file = fs::absolute(resolved).lexically_normal().string();
   if (c.material_file.find_first_of(" \t\n\"'") != std::string::npos)
     reader.fail("material.file", "the resolved path must not contain blanks or quotes: " + c.material_file);
@@ -119,7 +118,7 @@ HomogeniseCase read_homogenise_case(const std::string &path) {
   if (c.sigma >= c.R) reader.fail("surface.sigma", "must be below surface.R (summit heights are a small fraction of R)");
   c.nside = reader.positive_integer("surface.nside", c.nside, 1000);
   const std::string heights = reader.text("surface.heights", "");
-  if (!heights.empty()) check_summit_list(reader, resolve_case_path(path, heights), c);
+  if (!heights.empty()) check_summit_list(reader, find_case_file(reader, "surface.heights", heights), c);
 
   // [sliding]
   c.speed = reader.positive("sliding.speed", c.speed);

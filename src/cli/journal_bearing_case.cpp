@@ -109,15 +109,18 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
                          ? tribo::ArchardForm::plain
                          : tribo::ArchardForm::thesis;
   }
-  c.run.wear_step_fraction = reader.positive("wear.step_fraction", 0.5);
-  if (c.run.wear_step_fraction >= 1.0)
-    reader.fail("wear.step_fraction", "must be below 1 (the explicit wear step is unstable above it), got " +
+  // [0.01, 1): unstable above; below, the number of wear updates (each a contact solve) grows without bound, and
+  // the state-law path has no update cap of its own
+  c.run.wear_step_fraction = reader.number("wear.step_fraction", 0.5);
+  if (!(c.run.wear_step_fraction >= 0.01 && c.run.wear_step_fraction < 1.0))
+    reader.fail("wear.step_fraction", "must be in [0.01, 1) (the explicit wear step is unstable from 1 on), got " +
                                           CaseReader::format(c.run.wear_step_fraction));
   c.run.fixed_wear_step = reader.has("wear.fixed_step") ? reader.positive("wear.fixed_step") : 0.0;
 
   c.friction_model =
       reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
   c.friction = read_friction(reader, law_path);
+  check_law_materials(reader, *c.friction, law_path, "contact.bearing_material", c.bearing_material_name, "contact.shaft_material", c.shaft_material_name);
   c.alpha = c.friction->speed_coefficient();
   if (c.friction_model == "static_kinetic") {
     const double mu_static = reader.number("friction.mu_static");
@@ -143,7 +146,7 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
     if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
     if (c.friction_model == "law_file")
       reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
-    c.sweep_mu0 = reader.numbers("sweep.mu0");
+    c.sweep_mu0 = reader.numbers_at_most("sweep.mu0", CaseReader::kMaxSweepValues);
     for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
       if (c.sweep_mu0[i] < 0.0)
         reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0, got " + CaseReader::format(c.sweep_mu0[i]));

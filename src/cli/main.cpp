@@ -6,8 +6,10 @@
 //   runin journal-bearing CASE.toml [--law law.json] --output-dir DIR [--no-plot]
 //   runin piston-ring CASE.toml [--law law.json] --output-dir DIR [--no-plot]
 //   runin sweep ELEMENT CASE.toml --output-dir DIR [--key KEY]... [--span 10] [--points 3] [--no-plot]
-//   runin homogenise CASE.toml [--output law.json] [--cache-dir DIR] [--np N] [--lmp PATH] [--deck PATH]
+//   runin homogenise CASE.toml [--output law.json | --output-dir DIR] [--cache-dir DIR] [--np N] [--lmp PATH] [--deck PATH]
+//   runin --version
 // Exit codes: 0 success, 1 numerical/plot/I/O failure, 2 bad input.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -19,6 +21,9 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <csignal>
+#include <cerrno>
+#include <pthread.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -28,6 +33,7 @@
 #include "cli/cmd_homogenise.h"
 #include "cli/cmd_piston_ring.h"
 #include "cli/cmd_sweep.h"
+#include "cli/runin_version.h"
 #include "cli/staged_file.h"
 #include "continuum/feedback_system.h"
 #include "continuum/pin_on_disk.h"
@@ -109,11 +115,31 @@ void run_python_plot(const std::string &script_name, const std::vector<std::stri
   std::vector<char *> argv;
   for (auto &a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  // Its own process group, registered with SIGINT/SIGTERM held back: a signal to runin stops the script (and
+  // whatever it started) before the staging directory it writes into is removed.
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t none, held, previous;
+  sigemptyset(&none);
+  sigemptyset(&held);
+  sigaddset(&held, SIGINT);
+  sigaddset(&held, SIGTERM);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setpgroup(&attr, 0);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
+  pthread_sigmask(SIG_BLOCK, &held, &previous);
   pid_t pid = 0;
-  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-    throw RunError("cannot start " + python + " for the plot (set RUNIN_PYTHON or use --no-plot)");
+  const int started = posix_spawnp(&pid, python.c_str(), nullptr, &attr, argv.data(), environ);
+  if (started == 0) register_child(pid);
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+  posix_spawnattr_destroy(&attr);
+  if (started != 0) throw RunError("cannot start " + python + " for the plot (set RUNIN_PYTHON or use --no-plot)");
   int status = 0;
-  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  pid_t waited = 0;
+  while ((waited = waitpid(pid, &status, 0)) < 0 && errno == EINTR) {
+  }
+  unregister_child();
+  if (waited < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw RunError("plotting failed: " + python + " " + script + " (use --no-plot to skip)");
 }
 
@@ -258,6 +284,44 @@ int dump_to_vtk(const std::string &dump_path, const std::string &output_dir, con
 #endif
 }
 
+// Edit distance of a and b ('_' and '-' count as equal: pin_on_disk means pin-on-disk).
+std::size_t edit_distance(const std::string &a, const std::string &b) {
+  auto same = [](char x, char y) { return x == y || ((x == '_' || x == '-') && (y == '_' || y == '-')); };
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same(a[i - 1], b[j - 1]) ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// "unknown subcommand 'X'" with the nearest name when it is close (at most a third of its letters differ).
+std::string unknown_subcommand(const CLI::App &app, const std::string &given) {
+  std::string best, names;
+  std::size_t best_distance = std::string::npos;
+  for (const CLI::App *sub : app.get_subcommands({})) {
+    const std::string &name = sub->get_name();
+    names += (names.empty() ? "" : ", ") + name;
+    const std::size_t d = edit_distance(given, name);
+    if (d < best_distance) best_distance = d, best = name;
+  }
+  std::string message = "unknown subcommand '" + given + "'";
+  if (!best.empty() && best_distance <= std::max<std::size_t>(2, best.size() / 3))
+    return message + "; did you mean '" + best + "'?";
+  return message + "; the subcommands are " + names + " (runin --help)";
+}
+
+std::string version_text() {
+  const std::string git = runin_git_describe();
+  return std::string("runin ") + runin_version() + (git == "unknown" ? "" : " (git " + git + ")");
+}
+
 }  // namespace
 }  // namespace runin::cli
 
@@ -288,14 +352,14 @@ int main(int argc, char **argv) {
   auto *fb_cmd = app.add_subcommand("feedback", "Two-mechanism roughness-feedback model R(t), mu(t) (thesis ch. 3)");
   fb_cmd->add_option("case", fb_case, "case file (TOML, or JSON if it ends in .json)")->required();
   fb_cmd->add_option("--output-dir", fb_dir, "directory for feedback.csv and feedback.png (+ sweep files)")->required()
-      ->check(non_empty_path());
+      ->check(output_directory());
   fb_cmd->add_flag("--no-plot", fb_no_plot, "write the CSV(s) only");
 
   std::string dump_path, vtk_dir, vtk_stem = "asperities";
   auto *vtk_cmd = app.add_subcommand("dump-to-vtk", "Convert a LAMMPS custom dump to VTK (.vtp per snapshot + .pvd)");
   vtk_cmd->add_option("dump", dump_path, "LAMMPS dump file (style custom with x y z columns)")->required();
   vtk_cmd->add_option("--output-dir", vtk_dir, "directory for the .vtp files and the .pvd collection")->required()
-      ->check(non_empty_path());
+      ->check(output_directory());
   vtk_cmd->add_option("--stem", vtk_stem, "file name stem")->capture_default_str();
 
   const Subcommand journal_bearing = add_journal_bearing_command(app, run_python_plot);
@@ -303,6 +367,23 @@ int main(int argc, char **argv) {
   const Subcommand sweep = add_sweep_command(app, run_python_plot);
   const Subcommand homogenise = add_homogenise_command(app);
 
+  app.set_version_flag("--version", version_text(), "print the version and exit");
+  // Before CLI11, whose answer to each of these is only "A subcommand is required".
+  if (argc < 2) {
+    std::cerr << app.help();
+    return 2;
+  }
+  const std::string first = argv[1];
+  if (first == "--version") {
+    std::cout << version_text() << "\n";
+    return 0;
+  }
+  const auto subcommands = app.get_subcommands({});
+  if (!first.empty() && first[0] != '-' &&
+      std::none_of(subcommands.begin(), subcommands.end(), [&](const CLI::App *s) { return s->check_name(first); })) {
+    std::cerr << "runin: error: " << unknown_subcommand(app, first) << "\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError &e) {

@@ -222,6 +222,7 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   }
 
   c.friction = read_friction(reader, law_path);
+  check_law_materials(reader, *c.friction, law_path, "material.ring_material", c.ring_material_name, "material.liner_material", c.liner_material_name);
   c.friction_model =
       reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
   const bool state_law = c.friction_model == "state_law";
@@ -300,7 +301,7 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   }
   if (reader.has("sweep.mu0")) {
     if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
-    c.sweep_mu0 = reader.numbers("sweep.mu0");
+    c.sweep_mu0 = reader.numbers_at_most("sweep.mu0", CaseReader::kMaxSweepValues);
     if (c.friction_model == "law_file")
       reader.fail("sweep.mu0", "needs friction.model constant, static_kinetic or feedback, not 'law_file'");
     for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {

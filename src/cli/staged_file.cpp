@@ -73,7 +73,13 @@ constexpr std::size_t kPathBytes = 4096;
 char active_paths[kMaxActive][kPathBytes];
 volatile std::sig_atomic_t active_used[kMaxActive];
 
+volatile std::sig_atomic_t active_child = 0;  // pid = process group of the running plot script, 0: none
+
 extern "C" void remove_staging_and_reraise(int signal_number) {
+  if (const pid_t child = static_cast<pid_t>(active_child); child > 0) {
+    ::kill(-child, SIGTERM);
+    ::waitpid(child, nullptr, 0);
+  }
   for (int k = 0; k < kMaxActive; ++k) {
     if (!active_used[k]) continue;
     const pid_t child = ::fork();
@@ -109,6 +115,13 @@ int register_active(const fs::path &staging) {
 void unregister_active(int slot) {
   if (slot >= 0) active_used[slot] = 0;
 }
+
+}  // namespace
+
+void register_child(pid_t process_group) { active_child = static_cast<std::sig_atomic_t>(process_group); }
+void unregister_child() { active_child = 0; }
+
+namespace {
 
 // ".NAME.staging-PID-N" siblings of `directory` whose process no longer exists (killed by SIGKILL, power
 // loss): the next run in that directory removes them.

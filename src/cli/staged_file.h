@@ -11,7 +11,15 @@
 #include <string>
 #include <vector>
 
+#include <sys/types.h>
+
 namespace runin::cli {
+
+// The running child (a plot script) of this process, if any: SIGINT/SIGTERM stop its process group with SIGTERM and
+// reap it before the staging directories are removed, so it cannot write into a removed directory. Register it
+// with those signals blocked (between the start and the registration).
+void register_child(pid_t process_group);
+void unregister_child();
 
 class StagedFile {
  public:

@@ -1,6 +1,7 @@
 // What the machine-element subcommands share with main: their registration and the plot runner.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -17,6 +18,20 @@ inline const CLI::Validator &non_empty_path() {
   static const CLI::Validator check(
       [](std::string &value) { return value.empty() ? std::string("must not be empty") : std::string(); },
       "PATH");
+  return check;
+}
+
+// For --output-dir: non-empty, and not an existing file (a directory, or a path still to be created).
+inline const CLI::Validator &output_directory() {
+  static const CLI::Validator check(
+      [](std::string &value) {
+        if (value.empty()) return std::string("must not be empty");
+        std::error_code error;
+        if (std::filesystem::exists(value, error) && !std::filesystem::is_directory(value, error))
+          return "'" + value + "' is an existing file, not a directory (name a directory, or a path to create)";
+        return std::string();
+      },
+      "DIR");
   return check;
 }
 

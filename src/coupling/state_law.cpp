@@ -115,6 +115,15 @@ StateLaw::StateLaw(std::vector<double> pressure, std::vector<double> worn_depth,
   if (!metadata_.is_object()) throw std::invalid_argument("metadata must be a JSON object");
 }
 
+std::optional<std::pair<std::string, std::string>> StateLaw::materials() const {
+  const auto material = metadata_.find("material");
+  if (material == metadata_.end() || !material->is_object()) return std::nullopt;
+  const auto rough = material->find("rough"), counterface = material->find("counterface");
+  if (rough == material->end() || counterface == material->end() || !rough->is_string() || !counterface->is_string())
+    return std::nullopt;
+  return std::make_pair(rough->get<std::string>(), counterface->get<std::string>());
+}
+
 bool StateLaw::has_band() const { return !fields_[0].low.empty(); }
 
 StateLaw StateLaw::from_json(const nlohmann::json &document, const std::string &path) {

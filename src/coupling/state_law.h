@@ -9,6 +9,8 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -66,6 +68,9 @@ class StateLaw {
   const StateFieldTable &table(StateField field) const { return fields_[static_cast<std::size_t>(field)]; }
   const nlohmann::json &metadata() const { return metadata_; }  // material, surface, samples, provenance
   bool has_band() const;
+  // The two bodies' materials the law was homogenised for (metadata material.rough and material.counterface, as
+  // `runin homogenise` writes them from its material file); nullopt when the law names none (a synthetic law).
+  std::optional<std::pair<std::string, std::string>> materials() const;
 
   // One field at (p, h). Error policy: std::out_of_range naming p and the grid. `use` (optional) counts.
   double value(StateField field, double pressure, double worn_depth, Band band = Band::Mean,

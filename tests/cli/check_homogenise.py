@@ -3,7 +3,7 @@
 seeds of 36 summits. Standard library only.
 
   check_homogenise.py --runin BIN --lmp LMP --reader READ_LAW --deck DECK --workdir DIR --mode MODE
-  (--deck default: no --deck option, i.e. the shipped inputs/in.rve_wall; mode fail needs a deck file)
+  (--deck default: no --deck option, i.e. runin's default inputs/in.rve_rough; mode fail needs a deck file)
 
 MODE build:  a cold run (4 samples under one mpirun, 2 partitions) writes a law the continuum reader
              (runin_read_state_law = coupling::StateLaw::read_file) accepts, with the grid, seeds, band and
@@ -57,7 +57,7 @@ def fail(message):
 
 def homogenise(args, case, law, cache, deck, expect):
     command = [args.runin, "homogenise", case, "--output", law, "--cache-dir", cache, "--np", "2", "--lmp", args.lmp]
-    if deck != "default":  # default: runin's own, inputs/in.rve_wall
+    if deck != "default":  # default: runin's own, inputs/in.rve_rough
         command += ["--deck", deck]
     start = time.monotonic()
     result = subprocess.run(command, capture_output=True, text=True)
@@ -86,7 +86,8 @@ def setup(args, name):
 
 
 def mode_build(args):
-    work, case = setup(args, "build" if args.deck != "default" else "build_rve_wall")
+    shipped = args.deck == "default" or os.path.basename(args.deck) != "in.rve_fixture"
+    work, case = setup(args, "build_" + os.path.basename(args.deck).replace(".", "_") if shipped else "build")
     law, cache = os.path.join(work, "law.json"), os.path.join(work, "cache")
     first, cold = homogenise(args, case, law, cache, args.deck, 0)
     if "4 samples to run" not in first.stdout or "mpirun -np 2" not in first.stdout:
@@ -112,6 +113,22 @@ def mode_build(args):
             fail(f"provenance.{field} missing")
     if doc["material"]["rough"] != "Steel1020" or len(doc["material"]["sha256"]) != 64:
         fail(f"material: {doc['material']}")
+    # provenance without this machine's paths (the work directory, the build tree, the cache are all absolute here)
+    def strings(node):
+        if isinstance(node, dict):
+            for v in node.values():
+                yield from strings(v)
+        elif isinstance(node, list):
+            for v in node:
+                yield from strings(v)
+        elif isinstance(node, str):
+            yield node
+    absolute = [t for t in strings({k: v for k, v in doc.items() if k != "fields"})
+                if any(word.startswith("/") or "=/" in word for word in t.split())]
+    if absolute:
+        fail(f"the law names absolute paths: {absolute}")
+    if doc["provenance"]["lmp"]["path"] != os.path.basename(args.lmp) and "/" not in doc["provenance"]["lmp"]["path"]:
+        fail(f"provenance.lmp.path {doc['provenance']['lmp']['path']}: neither relative to the source tree nor the name")
     # physical wear rate at the top pressure: Archard k p / H (the cell's k was acceleration x k). Mean over
     # the law's depths: the 36-summit cell is chaotic (a change of S_y by 3e-14 moves the rate at one depth by
     # a few per cent), the mean is not
@@ -192,6 +209,8 @@ def mode_interrupt(args):
                 .replace("acceleration = [2000.0, 1000.0]", "acceleration = [30.0, 15.0]"))
     cache, law = os.path.join(work, "cache"), os.path.join(work, "law.json")
     command = [args.runin, "homogenise", case, "--output", law, "--cache-dir", cache, "--np", "2", "--lmp", args.lmp]
+    if args.deck != "default":
+        command += ["--deck", args.deck]
     proc = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     for line in proc.stdout:
         if "sample 1/4 done" in line:

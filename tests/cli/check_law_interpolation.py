@@ -75,7 +75,7 @@ nout = 50
 ''')
     law = os.path.join(work, "law.json")
     run([a.runin, "homogenise", case, "--output", law, "--cache-dir", os.path.join(work, "cache"), "--np", "2",
-         "--lmp", a.lmp], work)
+         "--lmp", a.lmp, "--deck", os.path.join(SOURCE, "inputs", "in.rve_wall")], work)
     with open(law) as f:
         seeds = json.load(f)["samples"]["seeds"]
     direct = "direct.dat"

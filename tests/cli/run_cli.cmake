@@ -2,6 +2,8 @@
 #   -DCOMMAND=a|b|c            command line, '|'-separated
 #   -DEXPECT_EXIT=N            required exit code (default 0)
 #   -DEXPECT_STDERR=REGEX      stderr must be exactly one line matching REGEX
+#   -DEXPECT_STDOUT=REGEX      stdout must be exactly one line matching REGEX
+#   -DEXPECT_STDERR_CONTAINS=a|b|c   stderr must contain each of these strings
 #   -DCLEAN=PATH               removed before the run (no stale output can pass a check)
 #   -DEXPECT_ABSENT=PATH       must not exist after the run (no partial output)
 #   -DCHECK=a|b|c              checker run after the command; must exit 0
@@ -31,6 +33,21 @@ if(DEFINED EXPECT_STDERR)
   if(NOT line MATCHES "${EXPECT_STDERR}")
     message(FATAL_ERROR "stderr does not match: ${EXPECT_STDERR}")
   endif()
+endif()
+if(DEFINED EXPECT_STDOUT)
+  string(REGEX REPLACE "\n$" "" line "${out}")
+  if(line MATCHES "\n" OR NOT line MATCHES "${EXPECT_STDOUT}")
+    message(FATAL_ERROR "stdout is not one line matching: ${EXPECT_STDOUT}")
+  endif()
+endif()
+if(DEFINED EXPECT_STDERR_CONTAINS)
+  string(REPLACE "|" ";" wanted "${EXPECT_STDERR_CONTAINS}")
+  foreach(text IN LISTS wanted)
+    string(FIND "${err}" "${text}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "stderr does not contain '${text}'")
+    endif()
+  endforeach()
 endif()
 if(DEFINED EXPECT_ABSENT AND EXISTS "${EXPECT_ABSENT}")
   message(FATAL_ERROR "partial output left behind: ${EXPECT_ABSENT}")

@@ -100,6 +100,20 @@ TEST(StateLaw, JsonRoundTripKeepsTablesAndMetadata) {
   EXPECT_FALSE(StateLaw::from_json(make_law(false).to_json(), "x").has_band());
 }
 
+// The bodies' materials for the elements' check: material.rough / .counterface as homogenise writes them; a law
+// whose material is no such object (a string, a synthetic law) names none.
+TEST(StateLaw, MaterialsFromTheMetadata) {
+  EXPECT_FALSE(make_law().materials());  // "Steel1020/Steel1020": a string, not homogenise's object
+  auto document = make_law().to_json();
+  document["material"] = {{"rough", "Cu"}, {"counterface", "Al"}, {"file", "potentials/CuAl.runin"}};
+  const auto pair = StateLaw::from_json(document, "law.json").materials();
+  ASSERT_TRUE(pair);
+  EXPECT_EQ(pair->first, "Cu");
+  EXPECT_EQ(pair->second, "Al");
+  document["material"] = {{"rough", "Cu"}};
+  EXPECT_FALSE(StateLaw::from_json(document, "law.json").materials());
+}
+
 TEST(StateLaw, MalformedFilesGiveOneLineNamingTheKey) {
   const auto good = make_law().to_json();
   auto expect_error = [](nlohmann::json doc, const std::string &needle) {
