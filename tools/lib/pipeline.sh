@@ -17,7 +17,8 @@ lammps_stage() {
   while kill -0 "$pid" 2>/dev/null; do
     sleep 2
     [ $(( (SECONDS - start) % 10 )) -lt 2 ] || continue
-    line=$(awk '/^run +[0-9]+/ {runs++; length_ = $2} $1 ~ /^[0-9]+$/ && NF > 3 {step = $1}
+    line=$(awk '/^run +[0-9]+/ {runs++; length_ = $2} $1 == "Step" {table = 1} /^Loop time/ {table = 0}
+                table && $1 ~ /^[0-9]+$/ {step = $1}
                 END {if (step != "") printf "step %s (run %d: %s steps)", step, runs, length_}' \
            "$dir/log.lammps" 2>/dev/null || true)
     if [ -n "$line" ] && [ "$line" != "$last" ]; then
