@@ -60,7 +60,7 @@ def figure(data_path, title="RunIn micro: rough Cu-on-Al asperity slider"):
         ax_rsk.set_ylabel("Rsk", color="tab:purple")
     axes[-1].set_xscale("log")
     axes[-1].set_xlim(min(s_um), max(s_um))
-    axes[-1].set_xlabel("sliding distance [um] (log scale: the run-in is the first ~0.1 um)")
+    axes[-1].set_xlabel("sliding distance [um] (log scale, so the run-in at the start shows)")
     fig.tight_layout()
     return fig
 
