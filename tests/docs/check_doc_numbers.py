@@ -12,6 +12,7 @@ source text, and `log` names a LAMMPS log it writes in DIR, if any, whose text i
 regex `quote` whose one group is the number as the doc prints it (it must match exactly once, unless
 `occurrence` picks one of several), and `value`, a Python expression on the source:
   log(table, row, column)   a thermo value of the log (tables and rows count from 0, -1 is the last)
+  log_table(table)          the rows of a thermo table, as {column: value} dicts
   text(regex[, group[, occurrence]])   a number the source text prints (default: the last match)
   texts(regex[, group])     every such number, as a list
   key(name)                 a value of a key-number file ('name value' lines)
@@ -114,6 +115,11 @@ class Source:
                 raise Failed(f"text({regex!r}): the source prints no such line")
             return float(found[occurrence].group(group).replace(",", ""))
 
+        def log_table(table):
+            if self.tables is None or not -len(self.tables) <= table < len(self.tables):
+                raise Failed(f"log_table({table}): no such thermo table")
+            return self.tables[table]
+
         def texts(regex, group=1):
             return [float(m.group(group).replace(",", "")) for m in re.finditer(regex, self.text, re.M)]
 
@@ -140,7 +146,7 @@ class Source:
             return worst
 
         names = {name: getattr(math, name) for name in dir(math) if not name.startswith("_")}
-        names.update(log=log, text=text, texts=texts, key=key, csv=csv, rank_diff=rank_diff, abs=abs, min=min, max=max, range=range, sum=sum, len=len)
+        names.update(log=log, log_table=log_table, text=text, texts=texts, key=key, csv=csv, rank_diff=rank_diff, abs=abs, min=min, max=max, range=range, sum=sum, len=len)
         return names
 
 
