@@ -93,8 +93,8 @@ def figure(csv_path, liner_csv, ring_csv, title="piston ring run-in"):
     ax.grid(alpha=0.3)
 
     ax = axes[1, 1]
-    ax.plot(t, d["wear_ring_m3"] * 1e9, label="ring face")
-    ax.plot(t, d["wear_liner_m3"] * 1e9, label="liner")
+    ax.plot(t, d["wear_ring_m3"] * 1e9, linewidth=4, alpha=0.45, label="ring face")   # visible under an equal liner
+    ax.plot(t, d["wear_liner_m3"] * 1e9, linestyle="--", label="liner")
     ax.plot(t, d["wear_volume_m3"] * 1e9, color="k", label="total")
     ax.set_xlabel("time t (s)")
     ax.set_ylabel("wear volume (mm^3)")
