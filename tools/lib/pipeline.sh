@@ -7,8 +7,8 @@ machine_cores() {
 }
 
 # lammps_stage DIR NP ARGS...: runs `mpirun -np NP lmp_runin ARGS` in DIR (log DIR/log.lammps, no screen output)
-# and prints its progress: the thermo step every 10 s while it runs (with the length of the current `run`), then
-# each run of the deck with its step count and loop time. Needs $build.
+# and prints its progress: every 10 s the current `run` of the deck and how far it is (as far as the log has been
+# written), then each run of the deck with its step count and loop time. Needs $build.
 lammps_stage() {
   local dir=$1 np=$2 start=$SECONDS last="" line
   shift 2
@@ -17,9 +17,9 @@ lammps_stage() {
   while kill -0 "$pid" 2>/dev/null; do
     sleep 2
     [ $(( (SECONDS - start) % 10 )) -lt 2 ] || continue
-    line=$(awk '/^run +[0-9]+/ {runs++; length_ = $2} $1 == "Step" {table = 1} /^Loop time/ {table = 0}
-                table && $1 ~ /^[0-9]+$/ {step = $1}
-                END {if (step != "") printf "step %s (run %d: %s steps)", step, runs, length_}' \
+    line=$(awk '/^run +[0-9]+/ {runs++; length_ = $2} $1 == "Step" {table = 1; first = ""} /^Loop time/ {table = 0}
+                table && $1 ~ /^[0-9]+$/ {if (first == "") first = $1; step = $1}
+                END {if (step != "") printf "run %d: step %d of %s", runs, step - first, length_}' \
            "$dir/log.lammps" 2>/dev/null || true)
     if [ -n "$line" ] && [ "$line" != "$last" ]; then
       echo "   ... $line, $((SECONDS - start)) s"
