@@ -67,7 +67,7 @@ def progress(args):
         fail(f"tools/run-pipeline: {stages} lammps_stage call(s), want one per micro LAMMPS run (2)")
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
-    code = (f'. {LIBRARY!r}; build={args.lmp_dir!r}; lammps_stage {args.workdir!r} 1 -in '
+    code = (f'. {LIBRARY!r}; build={os.path.abspath(args.lmp_dir)!r}; lammps_stage {args.workdir!r} 1 -in '
             f'{os.path.join(SOURCE_DIR, "inputs", "in.runin_wall")!r} -var nside 10 -var nload 300 -var nslide 500 '
             f'-var thermo_every 100 -var out runin.dat')
     result = bash(code, {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"})
