@@ -1,6 +1,6 @@
 // Work-precision of the lubricated roughness-feedback model (thesis ch. 3, inputs/feedback_lubricated.toml:
 // C1 = 0.02, C2 = 0.08, K1 = 1e-3, K2 = 4e-3, A = B = 1, R0 = 6 um, R* = 2 um, 8000 s = 16 relaxation times).
-//   build-bench/bench/wp_feedback [OUT_DIR]   -> OUT_DIR/wp_feedback.csv, OUT_DIR/wp_feedback.png
+//   build-bench/bench/wp_feedback [OUT_DIR]   -> OUT_DIR/wp_feedback.csv, OUT_DIR/wp_feedback.png  (OUT_DIR default: build-bench/bench/out)
 // Reference: the closed form R^2(t) = R*^2 + (R0^2 - R*^2) exp(-2 A K1 t) (tribo::FeedbackModel::exact_roughness).
 // Error: max relative error of R over the 40 s output grid (200 points).
 // Methods: CVODE BDF and Adams (continuum::simulate, rtol 1e-4 ... 1e-12, atol = 1e-3 rtol) against

@@ -3,7 +3,7 @@
 // switched at step ends, no event location) against a CVODE BDF rtol = 1e-12 reference.
 // Error: max over the 1 ms output grid of |s(t) - s_ref(t)| / s_ref(2 s), s the sliding distance.
 // Also times the long wear run-in: 1000 wear updates on a 512-node arc.
-//   build-bench/bench/wp_journal_bearing [OUT.csv]   (default wp_journal_bearing.csv; PNG beside it)
+//   build-bench/bench/wp_journal_bearing [OUT.csv]   (default BUILD/bench/out/wp_journal_bearing.csv; PNG beside it)
 // Wall time: timed by Google Benchmark (median of 5 repetitions, wall time; Euler h = 1e-6 and wear: 3), one core.
 // Bearing halves: 2 (the thesis's two loaded halves, two contacts), RUNIN_BENCH_HALVES=1 for the single
 // contact (the model before issue 14). The wear benchmark wears one contact either way.

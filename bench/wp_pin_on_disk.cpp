@@ -1,6 +1,6 @@
 // Work-precision of the pin-on-disk thesis case (2 s: torque ramp to eq. 4.11's T_app,
 // break-away at 1.866 s, slip to 2 s) and timing of the long pin-wear run.
-//   build-bench/bench/wp_pin_on_disk [OUT_DIR]   -> OUT_DIR/wp_pin_on_disk.csv, .png, wear_timing.csv
+//   build-bench/bench/wp_pin_on_disk [OUT_DIR]   -> OUT_DIR/wp_pin_on_disk.csv, .png, wear_timing.csv  (OUT_DIR default: build-bench/bench/out)
 // Error: max relative error of speed and sliding distance over the 10 ms output grid after
 // break-away (1.87 s .. 2 s, the first point 3.6 ms = 2.4 inertial time constants into the
 // slip transient) against the closed form of the linear ODE m dV/dt = T(t)/r - mu0 W - alpha W V

@@ -1,6 +1,6 @@
 // Work-precision of the piston-ring thesis cases (inputs/piston_ring.toml: 2 s displacement ramp,
 // mu0 = 0.95 / 0.55 / 0.15, mu_kinetic = 0.7 mu0) and timing of the long wear run-in.
-//   build-bench/bench/wp_piston_ring [OUT_DIR]  -> OUT_DIR/wp_piston_ring.csv, .png, wear_timing_piston_ring.csv
+//   build-bench/bench/wp_piston_ring [OUT_DIR]  -> OUT_DIR/wp_piston_ring.csv, .png, wear_timing_piston_ring.csv  (OUT_DIR default: build-bench/bench/out)
 // Reference: after break-away the ring obeys a linear damped oscillator (constant W, v_p, mu_k),
 // so the closed form is exact: with eps = e + mu_k W / k,
 //   eps'' + (c/m) eps' + (k/m) eps = 0,  eps(t_b) = -v_p t_b + mu_k W / k,  eps'(t_b) = -v_p,

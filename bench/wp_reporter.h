@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <unistd.h>
@@ -78,9 +79,14 @@ inline std::string label(const std::string &method, double setting) {
 }
 
 // benchmark::Initialize strips --benchmark_* flags; the first remaining argument (if any) is the output.
+// Without one, `default_output` goes under the build tree's bench/out (never the caller's cwd: a run from
+// the source root would leave its CSVs there).
 inline std::string initialize(int &argc, char **argv, const std::string &default_output) {
   benchmark::Initialize(&argc, argv);
-  return argc > 1 ? argv[1] : default_output;
+  if (argc > 1) return argv[1];
+  if (default_output.empty()) return default_output;
+  std::filesystem::create_directories(RUNIN_BENCH_OUTPUT_DIR);
+  return (std::filesystem::path(RUNIN_BENCH_OUTPUT_DIR) / default_output).lexically_normal().string();
 }
 
 // One configuration of a single-case work-precision diagram (feedback model, pin-on-disk).

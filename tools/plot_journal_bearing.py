@@ -6,7 +6,7 @@ usage: plot_journal_bearing.py curve CSV PNG [--title TEXT]
        plot_journal_bearing.py wp WP_CSV PNG [--title TEXT]
 
 curve: friction force and mu (stick phases shaded) / journal and drive speed / contact
-half-angle, peak and mean pressure and wear volume against time.
+half-angle, peak and mean pressure / wear volume against time.
 sweep: friction force and journal speed for every mu0 of the [sweep] (the thesis's
 mu0 = 0.95 / 0.55 / 0.15 overlay, cf. its fig. 5.5).
 wp: error vs CPU time from bench/wp_journal_bearing, one panel per mu0.
@@ -34,25 +34,30 @@ def shade_stick(axis, t, slip):
 
 
 def curve(args):
-    d = np.genfromtxt(args.csv, delimiter=",", names=True)
+    figure(args.csv, args.title).savefig(args.png, dpi=110, format="png")
+
+
+def figure(csv_path, title="journal bearing run-in"):
+    """The curve figure: axes [friction and mu, speeds, pressures and half-angle, wear volume]."""
+    d = np.genfromtxt(csv_path, delimiter=",", names=True)
     t = d["t_s"]
     slip = d["state_slip"] > 0.5
-    fig, (top, mid, bottom) = plt.subplots(3, 1, sharex=True, figsize=(8, 9), constrained_layout=True)
-    fig.suptitle(textwrap.fill(args.title, 90), fontsize=10)
+    fig, (top, mid, bottom, wear) = plt.subplots(4, 1, sharex=True, figsize=(8, 11), constrained_layout=True)
+    fig.suptitle(textwrap.fill(title, 90), fontsize=10)
     shade_stick(top, t, slip)
     top.plot(t, d["friction_force_N"], color="tab:red", label="friction force F = T_f / R")
     top.set_ylabel("friction force (N)", color="tab:red")
     mu_axis = top.twinx()
     mu_axis.plot(t, d["mu"], color="tab:blue", linestyle="--", label="mu = F / N")
     mu_axis.set_ylabel("friction coefficient", color="tab:blue")
-    top.legend(loc="upper right", fontsize=8)
-    mu_axis.legend(loc="lower right", fontsize=8)
+    lines = top.get_lines() + mu_axis.get_lines()
+    top.legend(lines, [line.get_label() for line in lines], loc="upper right", fontsize=8)
     top.set_title("grey: stick", fontsize=8, loc="left")
 
     mid.plot(t, d["journal_speed_rad_s"], color="tab:green", label="journal speed")
     mid.plot(t, d["drive_speed_rad_s"], color="k", linestyle=":", label="drive speed")
     mid.set_ylabel("speed (rad/s)")
-    mid.legend(loc="upper right", fontsize=8)
+    mid.legend(loc="center right", fontsize=8)
 
     bottom.plot(t, d["peak_pressure_Pa"] / 1e6, color="tab:purple", label="peak pressure")
     bottom.plot(t, d["mean_pressure_Pa"] / 1e6, color="tab:purple", linestyle="--", label="mean pressure")
@@ -60,16 +65,20 @@ def curve(args):
         bottom.plot(t, d["upper_peak_pressure_Pa"] / 1e6, color="tab:pink", linestyle="-.",
                     label="peak pressure, upper half")
     bottom.set_ylabel("pressure (MPa)", color="tab:purple")
-    bottom.set_xlabel("time (s)")
-    bottom.legend(loc="upper left", fontsize=8)
     arc = bottom.twinx()
     arc.plot(t, np.degrees(d["contact_half_angle_rad"]), color="tab:orange", label="contact half-angle")
-    arc.plot(t, d["wear_volume_m3"] * 1e9 / max(d["wear_volume_m3"].max() * 1e9, 1e-300)
-             * np.degrees(d["contact_half_angle_rad"]).max(), color="tab:brown", linestyle=":",
-             label=f"wear volume (scaled, max {d['wear_volume_m3'].max() * 1e9:.3g} mm^3)")
     arc.set_ylabel("half-angle (deg)", color="tab:orange")
-    arc.legend(loc="lower right", fontsize=8)
-    fig.savefig(args.png, dpi=110, format="png")
+    lines = bottom.get_lines() + arc.get_lines()
+    bottom.legend(lines, [line.get_label() for line in lines], loc="lower center", fontsize=8, ncol=4,
+                  bbox_to_anchor=(0.5, 1.0))   # above the panel, off the curves
+
+    # wear on its own axis, in its own unit (not scaled onto another quantity's axis)
+    wear.plot(t, d["wear_volume_m3"] * 1e9, color="tab:brown", label="wear volume")
+    wear.set_ylabel("wear volume (mm^3)", color="tab:brown")
+    wear.ticklabel_format(axis="y", style="plain", useOffset=False)
+    wear.set_xlabel("time (s)")
+    wear.grid(alpha=0.3)
+    return fig
 
 
 def sweep(args):

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plot a RunIn micro run (fix ave/time output of inputs/in.rough_slider or inputs/in.runin_wall)
-against the sliding distance: mu_eff (with its adhesion and ploughing parts when recorded), wear
-volume, and Rq / Rsk of the worn summits when compute runin/roughness was recorded.
+against the sliding distance (log axis, so the run-in at the start shows): mu_eff (with its adhesion and
+ploughing parts when recorded), wear volume, and Rq / Rsk of the worn summits when compute runin/roughness
+was recorded.
 
 usage: plot_micro.py DATA PNG [TITLE]
 """
@@ -22,7 +23,9 @@ def read_ave_time(path):
     return {name: [row[k] for row in rows] for k, name in enumerate(header)}
 
 
-def main(data_path, png_path, title="RunIn micro: rough Cu-on-Al asperity slider"):
+def figure(data_path, title="RunIn micro: rough Cu-on-Al asperity slider"):
+    """The figure (axes[0]: friction, [1]: wear, [2]: Rq/Rsk if recorded). Log distance axis: the run-in (the
+    break-away peak and its decay over d_c = 20 nm) happens in the first 0.1 % of a 40 um slide."""
     data = read_ave_time(data_path)
     sliding = [k for k, s in enumerate(data["v_slide"]) if s > 0.0]    # the loading phase has no distance
     s_um = [data["v_slide"][k] * 1e6 for k in sliding]
@@ -55,8 +58,15 @@ def main(data_path, png_path, title="RunIn micro: rough Cu-on-Al asperity slider
         ax_rsk.plot(s_um, column("c_rough[3]"), color="tab:purple", linestyle="--")
         ax_rsk.axhline(0.0, color="tab:purple", linewidth=0.5)
         ax_rsk.set_ylabel("Rsk", color="tab:purple")
-    axes[-1].set_xlabel("sliding distance [um]")
+    axes[-1].set_xscale("log")
+    axes[-1].set_xlim(min(s_um), max(s_um))
+    axes[-1].set_xlabel("sliding distance [um] (log scale, so the run-in at the start shows)")
     fig.tight_layout()
+    return fig
+
+
+def main(data_path, png_path, title="RunIn micro: rough Cu-on-Al asperity slider"):
+    fig = figure(data_path, title)
     tmp = png_path + ".part.png"
     fig.savefig(tmp, dpi=110)
     os.replace(tmp, png_path)

@@ -5,8 +5,8 @@ usage: plot_piston_ring.py curve CSV LINER_CSV RING_CSV PNG [--title TEXT]
        plot_piston_ring.py sweep SWEEP_CSV PNG [--title TEXT]
        plot_piston_ring.py wp WP_CSV PNG            (bench/wp_piston_ring output)
 
-curve: friction and land force vs time (whole run and the start-up), friction force over the
-stroke position, wear volumes and peak contact pressure vs time, liner wear depth vs distance
+curve: friction and land force vs time (whole run, scaled to the forces after the start-up, and the
+start-up), friction force over the stroke position (every sample, coloured by time), wear volumes and peak contact pressure vs time, liner wear depth vs distance
 from TDC, ring-face profile (crown, wear, final pressure).
 sweep: friction force vs time for each mu0 (the thesis's 0.95 / 0.55 / 0.15 overlay).
 Uses Debian's matplotlib: run with /usr/bin/python3.
@@ -29,27 +29,45 @@ def startup_window(t, slip):
 
 
 def plot_curve(args):
-    d = np.genfromtxt(args.csv, delimiter=",", names=True)
-    liner = np.genfromtxt(args.liner_csv, delimiter=",", names=True)
-    ring = np.genfromtxt(args.ring_csv, delimiter=",", names=True)
+    figure(args.csv, args.liner_csv, args.ring_csv, args.title).savefig(args.png, dpi=110, format="png")
+
+
+def legend_above(ax, handles=None, ncol=3):
+    """A legend above the panel, where it covers no curve."""
+    handles = handles if handles is not None else ax.get_lines()
+    return ax.legend(handles, [h.get_label() for h in handles], loc="lower center", bbox_to_anchor=(0.5, 1.0),
+                     ncol=ncol, fontsize=8, frameon=False)
+
+
+def figure(csv_path, liner_csv, ring_csv, title="piston ring run-in"):
+    """The curve figure, axes [[forces, start-up], [friction over the stroke, wear], [liner, ring face]]."""
+    d = np.genfromtxt(csv_path, delimiter=",", names=True)
+    liner = np.genfromtxt(liner_csv, delimiter=",", names=True)
+    ring = np.genfromtxt(ring_csv, delimiter=",", names=True)
     t = d["t_s"]
     slip = d["state_slip"] > 0.5
-    fig, axes = plt.subplots(3, 2, figsize=(12, 11), constrained_layout=True)
-    fig.suptitle(textwrap.fill(args.title, 90), fontsize=10)
+    fig, axes = plt.subplots(3, 2, figsize=(12, 11.5), constrained_layout=True)
+    fig.suptitle(textwrap.fill(title, 90), fontsize=10)
+    end = startup_window(t, slip)
 
     ax = axes[0, 0]
     ax.plot(t, d["friction_force_N"], color="tab:red", label="friction force (liner)")
     ax.plot(t, d["land_force_N"], color="tab:gray", linestyle="--", linewidth=0.8, label="land force (piston on ring)")
     ax.set_xlabel("time t (s)")
     ax.set_ylabel("force (N)")
+    # the axis fits the forces after the start-up (its land-force spike, tens of times larger, has its own panel)
+    after = t > end
+    if np.any(after):
+        top = max(np.abs(d["friction_force_N"][after]).max(), np.abs(d["land_force_N"][after]).max())
+        bottom = min(0.0, d["friction_force_N"][after].min(), d["land_force_N"][after].min())
+        ax.set_ylim(bottom - 0.05 * (top - bottom), 1.15 * top)
     mu_axis = ax.twinx()
-    mu_axis.plot(t, d["mu"], color="tab:blue", linewidth=0.6, alpha=0.6)
+    mu_axis.plot(t, d["mu"], color="tab:blue", linewidth=0.6, alpha=0.6, label="mu = |F| / W")
     mu_axis.set_ylabel("mu = |F| / W", color="tab:blue")
-    ax.legend(loc="lower right", fontsize=8)
+    legend_above(ax, ax.get_lines() + mu_axis.get_lines())
     ax.grid(alpha=0.3)
 
     ax = axes[0, 1]
-    end = startup_window(t, slip)
     m = t <= end
     ax.plot(t[m] * 1e3, d["friction_force_N"][m], color="tab:red", label="friction force")
     ax.plot(t[m] * 1e3, d["land_force_N"][m], color="tab:gray", linestyle="--", label="land force")
@@ -59,26 +77,24 @@ def plot_curve(args):
     speed_axis.set_ylabel("ring speed (solid), piston speed (dotted) (m/s)", color="tab:green")
     ax.set_xlabel("time t (ms)")
     ax.set_ylabel("force (N)")
+    ax.legend(loc="center right", fontsize=8)
     ax.set_title("start-up: stick, break-away, settling", fontsize=9)
-    ax.legend(loc="lower right", fontsize=8)
     ax.grid(alpha=0.3)
 
     ax = axes[1, 0]
+    # every sample over the stroke, coloured by time: the first and last strokes of a slow run cover only a
+    # few mm of it
     stroke_mm = (d["ring_position_m"] - d["ring_position_m"].max()) * 1e3
-    n = len(t)
-    first = slice(0, max(2, n // 20))
-    last = slice(n - max(2, n // 20), n)
-    ax.plot(stroke_mm[first], d["friction_force_N"][first], color="tab:orange", linewidth=0.8, label="first 5 % of the run")
-    ax.plot(stroke_mm[last], d["friction_force_N"][last], color="tab:purple", linewidth=0.8, label="last 5 % of the run")
+    points = ax.scatter(stroke_mm, d["friction_force_N"], c=t, s=2, cmap="viridis")
+    fig.colorbar(points, ax=ax, label="time t (s)")
     ax.set_xlabel("ring position relative to its highest point (mm)")
     ax.set_ylabel("friction force (N)")
-    ax.set_title("friction over the stroke (sign = sliding direction)", fontsize=9)
-    ax.legend(fontsize=8)
+    ax.set_title("friction over the stroke, whole run (sign = sliding direction)", fontsize=9)
     ax.grid(alpha=0.3)
 
     ax = axes[1, 1]
-    ax.plot(t, d["wear_ring_m3"] * 1e9, label="ring face")
-    ax.plot(t, d["wear_liner_m3"] * 1e9, label="liner")
+    ax.plot(t, d["wear_ring_m3"] * 1e9, linewidth=4, alpha=0.45, label="ring face")   # visible under an equal liner
+    ax.plot(t, d["wear_liner_m3"] * 1e9, linestyle="--", label="liner")
     ax.plot(t, d["wear_volume_m3"] * 1e9, color="k", label="total")
     ax.set_xlabel("time t (s)")
     ax.set_ylabel("wear volume (mm^3)")
@@ -105,10 +121,9 @@ def plot_curve(args):
     pr_axis = ax.twinx()
     pr_axis.plot(z, ring["final_pressure_Pa"] * 1e-6, color="tab:red")
     pr_axis.set_ylabel("final contact pressure (MPa)", color="tab:red")
-    ax.legend(fontsize=8, loc="upper center")
+    legend_above(ax)
     ax.grid(alpha=0.3)
-
-    fig.savefig(args.png, dpi=110, format="png")
+    return fig
 
 
 def plot_sweep(args):

@@ -150,7 +150,7 @@ std::vector<std::string> write_surface_series(const std::vector<SurfaceFrame> &f
       for (std::size_t a = 0; a < values.size(); ++a) array->SetValue(static_cast<vtkIdType>(a), values[a]);
       grid->GetPointData()->AddArray(array);
     }
-    char index[16];
+    char index[24];  // any size_t: up to 20 digits
     std::snprintf(index, sizeof index, "%04zu", f);
     const std::string name = stem + "_" + index + ".vts";
     write_atomically<vtkXMLStructuredGridWriter>(grid, fs::path(output_dir) / name);
