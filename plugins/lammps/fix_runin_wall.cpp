@@ -54,6 +54,8 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
   };
   cfg = runin_wall::parse(narg, arg, hooks);
   motion.wall_z = cfg.wall_z;
+  // here, before the first run's init prints LAMMPS's citation block
+  runin_lammps::cite(lmp, runin_lammps::model_citations(cfg.choice, cfg.parameters.wear_coefficient > 0.0, true));
 
   vector_flag = 1;
   size_vector = NOUTPUT;
@@ -115,7 +117,6 @@ void FixRuninWall::init()
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) local_min = std::min(local_min, atom->radius[i]);
   MPI_Allreduce(&local_min, &smallest_radius, 1, MPI_DOUBLE, MPI_MIN, world);
-  runin_lammps::cite(lmp, runin_lammps::model_citations(cfg.choice, cfg.parameters.wear_coefficient > 0.0, true));
   guard_timestep();
 }
 

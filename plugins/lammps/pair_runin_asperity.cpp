@@ -254,6 +254,8 @@ void PairRuninAsperity::coeff(int narg, char **arg)
       count++;
     }
   if (count == 0) error->all(FLERR, "pair_coeff runin/asperity: no type pair in range {} {}", arg[0], arg[1]);
+  // here, before the first run's init prints the citation block (and again at init_style, after a restart)
+  runin_lammps::cite(lmp, runin_lammps::model_citations(choice, wear_on, false));
 }
 
 // GRANULAR-style blocks, one per kind: 'normal hertz E*' 'damping restitution e' 'tangential mindlin G*'
