@@ -19,11 +19,17 @@ int host_version(void *lmp)
   return version ? version(lmp) : -1;
 }
 
-// One ERROR line: through lammps_error where the host has it (a proper ERROR, the deck stops), else on stderr.
+// One ERROR line, and the deck stops: through lammps_error where the host has it (2023+); before, printed by the
+// host's 'print' (screen and log file) and ended by its 'quit 1' (every rank runs this, as 'quit' needs).
 void refuse(void *lmp, const std::string &message)
 {
   using ErrorFunction = void (*)(void *, int, const char *);
+  using CommandFunction = char *(*)(void *, const char *);
   if (auto error = reinterpret_cast<ErrorFunction>(dlsym(RTLD_DEFAULT, "lammps_error"))) error(lmp, 2, message.c_str());
+  if (auto command = reinterpret_cast<CommandFunction>(dlsym(RTLD_DEFAULT, "lammps_command"))) {
+    command(lmp, ("print \"ERROR: " + message + "\"").c_str());
+    command(lmp, "quit 1");
+  }
   fprintf(stderr, "ERROR: %s\n", message.c_str());
 }
 
