@@ -60,13 +60,12 @@ inline double finite_number(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, 
 
 // The RunIn styles take SI coefficients (potentials/*.runin, the explicit forms) and print SI units; in another
 // unit system every force would be off by orders of magnitude without a word. One ERROR naming the deck's units.
-inline void require_si_units(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &style,
-                             const char *what = "the coefficients are in SI")
+inline void require_si_units(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &style)
 {
   const char *units = lmp->update->unit_style;
   if (units && std::strcmp(units, "si") == 0) return;
   lmp->error->all(file, line,
-                  style + ": " + what + "; this deck uses 'units " + (units ? units : "?") + "'; use 'units si'");
+                  style + ": the coefficients are in SI; this deck uses 'units " + (units ? units : "?") + "'; use 'units si'");
 }
 
 // Adds the papers of the models in use to LAMMPS's citation list (log.cite); none with -nocite.
