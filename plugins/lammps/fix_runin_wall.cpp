@@ -1,5 +1,6 @@
 #include "fix_runin_wall.h"
 #include "runin_errors.h"
+#include "runin_citations.h"
 #include "runin_lammps_compat.h"
 
 #include "fix_runin_wear_state.h"
@@ -38,6 +39,7 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), body_groupbit(0), dt(0.0), history(nullptr), fix_wear(nullptr)
 {
   if (!runin_compat::sphere_atoms(atom)) error->all(FLERR, "fix runin/wall: requires atom_style sphere");
+  runin_lammps::require_si_units(lmp, FLERR, "fix runin/wall");
 
   runin_wall::Hooks hooks;
   hooks.fail = [this](const std::string &message) { error->all(FLERR, message); };
@@ -52,6 +54,8 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
   };
   cfg = runin_wall::parse(narg, arg, hooks);
   motion.wall_z = cfg.wall_z;
+  // here, before the first run's init prints LAMMPS's citation block
+  runin_lammps::cite(lmp, runin_lammps::model_citations(cfg.choice, cfg.parameters.wear_coefficient > 0.0, true));
 
   vector_flag = 1;
   size_vector = NOUTPUT;

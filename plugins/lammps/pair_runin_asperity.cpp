@@ -1,5 +1,6 @@
 #include "pair_runin_asperity.h"
 #include "runin_errors.h"
+#include "runin_citations.h"
 
 #include "fix_runin_wear_state.h"
 #include "runin_lammps_compat.h"
@@ -179,6 +180,7 @@ void PairRuninAsperity::coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
   if (narg < 2) error->all(FLERR, "pair_coeff runin/asperity: expected type I and type J");
+  runin_lammps::require_si_units(lmp, FLERR, "pair runin/asperity");
 
   tribo::ContactCoefficients c;
   const char *origin = "explicit";
@@ -209,12 +211,23 @@ void PairRuninAsperity::coeff(int narg, char **arg)
       p.yield_strength = v[7] / tribo::kTaborConstraintFactor;    // unless 'S_y' follows
       p.yield_from_hardness = true;
       optional_first = 10;
-    } else {
+    } else if (strcmp(arg[2], "file") == 0) {
       error->all(FLERR,
-                 "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values), "
-                 "'I J file <path> <material-I> <material-J>', then optional 'tau_s X' 'plough X', or "
-                 "'I J normal NAME values ... damping ... tangential ... friction ... wear ...'; got {} arguments",
-                 narg);
+                 "pair_coeff runin/asperity: 'file' takes a path and two material names ('I J file <path> "
+                 "<material-I> <material-J>'), got {} value(s)",
+                 narg - 3);
+    } else {
+      // count the numbers the user gave after the type pair, and name the positional values they leave out
+      const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
+      int given = 0;
+      while (2 + given < narg && utils::is_double(arg[2 + given])) given++;
+      std::string missing;
+      for (int k = given; k < 8; k++) missing += fmt::format("{}{}", missing.empty() ? "" : " ", names[k]);
+      error->all(FLERR,
+                 "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values after the type "
+                 "pair), got {} value(s){}; or 'I J file <path> <material-I> <material-J>', then optional 'tau_s X' "
+                 "'plough X', or 'I J normal NAME values ... damping ... tangential ... friction ... wear ...'",
+                 given, given < 8 ? fmt::format(" (missing: {})", missing) : fmt::format(" ({} too many)", given - 8));
     }
     read_optional_coefficients(p, narg, arg, optional_first);
     if (p.yield_from_hardness && p.yield_strength > 0.0 && choice.of(SubModelKind::normal) ==
@@ -241,6 +254,8 @@ void PairRuninAsperity::coeff(int narg, char **arg)
       count++;
     }
   if (count == 0) error->all(FLERR, "pair_coeff runin/asperity: no type pair in range {} {}", arg[0], arg[1]);
+  // here, before the first run's init prints the citation block (and again at init_style, after a restart)
+  runin_lammps::cite(lmp, runin_lammps::model_citations(choice, wear_on, false));
 }
 
 // GRANULAR-style blocks, one per kind: 'normal hertz E*' 'damping restitution e' 'tangential mindlin G*'
@@ -331,6 +346,8 @@ void PairRuninAsperity::init_style()
     error->all(FLERR, "pair runin/asperity: requires atom attributes radius and rmass (atom_style sphere)");
   if (comm->ghost_velocity == 0)
     error->all(FLERR, "pair runin/asperity: requires ghost velocities (comm_modify vel yes)");
+  runin_lammps::require_si_units(lmp, FLERR, "pair runin/asperity");
+  runin_lammps::cite(lmp, runin_lammps::model_citations(choice, wear_on, false));
 
   runin_compat::request_size_history_list(this, neighbor, instance_me);
   dt = update->dt;

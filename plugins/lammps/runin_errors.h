@@ -2,13 +2,16 @@
 #ifndef LMP_RUNIN_ERRORS_H
 #define LMP_RUNIN_ERRORS_H
 
+#include "citeme.h"
 #include "error.h"
 #include "exceptions.h"
 #include "lammps.h"
+#include "update.h"
 #include "utils.h"
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <optional>
 #include <string>
@@ -53,6 +56,23 @@ inline double finite_number(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, 
 {
   if (const auto value = parse_finite(text)) return *value;
   lmp->error->all(file, line, where + ": " + name + " must be a finite number, got '" + (text ? text : "") + "'");
+}
+
+// The RunIn styles take SI coefficients (potentials/*.runin, the explicit forms) and print SI units; in another
+// unit system every force would be off by orders of magnitude without a word. One ERROR naming the deck's units.
+inline void require_si_units(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &style)
+{
+  const char *units = lmp->update->unit_style;
+  if (units && std::strcmp(units, "si") == 0) return;
+  lmp->error->all(file, line,
+                  style + ": the coefficients are in SI; this deck uses 'units " + (units ? units : "?") + "'; use 'units si'");
+}
+
+// Adds the papers of the models in use to LAMMPS's citation list (log.cite); none with -nocite.
+template <class Entries> void cite(LAMMPS_NS::LAMMPS *lmp, const Entries &entries)
+{
+  if (!lmp->citeme) return;
+  for (const char *entry : entries) lmp->citeme->add(entry);
 }
 
 }    // namespace runin_lammps

@@ -1,4 +1,5 @@
 #include "runin_material_file.h"
+#include "runin_potential_path.h"
 
 #include "comm.h"
 #include "error.h"
@@ -18,9 +19,11 @@ RuninMaterialPair LAMMPS_NS::read_runin_material_pair(LAMMPS *lmp, const std::st
   RuninMaterialPair entry;
   std::string problem;
   if (lmp->comm->me == 0) {
-    FILE *fp = utils::open_potential(file, lmp, nullptr);
+    // the path as given, then $LAMMPS_POTENTIALS (runin_potential_path.h); the ERROR lists every place tried
+    const auto search = runin_lammps::find_potential_file(file);
+    FILE *fp = search.found.empty() ? nullptr : fopen(search.found.c_str(), "r");
     if (!fp) {
-      problem = fmt::format("cannot open coefficient file '{}'", file);
+      problem = search.message(file);
     } else {
       std::string text;
       char buffer[4096];

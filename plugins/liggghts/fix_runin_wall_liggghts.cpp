@@ -34,6 +34,7 @@ FixRuninWallLiggghts::FixRuninWallLiggghts(LAMMPS *lmp, int narg, char **arg) :
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     runin_liggghts::all(lmp, FLERR, "fix runin/wall: requires atom attributes radius, rmass, omega and torque "
                                     "(atom_style granular or sphere)");
+  runin_liggghts::require_si_units(lmp, FLERR, "fix runin/wall");
   runin_wall::Hooks hooks;
   hooks.fail = [this](const std::string &message) { runin_liggghts::all(this->lmp, FLERR, message); };
   hooks.number = [this](const std::string &name, const char *text) {

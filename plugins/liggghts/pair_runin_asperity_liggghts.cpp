@@ -169,6 +169,7 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
   if (!allocated) allocate();
   if (narg < 2) runin_liggghts::all(lmp, FLERR, "pair_coeff runin/asperity: expected type I and type J");
   const char *where = "pair_coeff runin/asperity";
+  runin_liggghts::require_si_units(lmp, FLERR, "pair runin/asperity");
 
   tribo::ContactParameters p;
   int optional_first = narg;
@@ -194,11 +195,19 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
     p.yield_from_hardness = true;
     optional_first = 10;
   } else {
+    // count the numbers given after the type pair and name the positional values left out
+    const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
+    int given = 0;
+    while (2 + given < narg && runin_liggghts::is_double(arg[2 + given])) given++;
+    std::string missing;
+    for (int k = given; k < 8; k++) missing += fmt::format("{}{}", missing.empty() ? "" : " ", names[k]);
     runin_liggghts::all(lmp, FLERR,
-                        fmt::format("pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values) "
-                                    "or 'I J file <path> <material-I> <material-J>', then optional 'tau_s X' "
-                                    "'plough X' 'S_y X' 'nu X'; got {} arguments (the keyword-block form is "
-                                    "LAMMPS-only)", narg));
+                        fmt::format("pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values "
+                                    "after the type pair), got {} value(s){}; or 'I J file <path> <material-I> "
+                                    "<material-J>', then optional 'tau_s X' 'plough X' 'S_y X' 'nu X' (the "
+                                    "keyword-block form is LAMMPS-only)",
+                                    given, given < 8 ? fmt::format(" (missing: {})", missing)
+                                                     : fmt::format(" ({} too many)", given - 8)));
   }
   for (int iarg = optional_first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
@@ -250,6 +259,7 @@ void PairRuninAsperityLiggghts::init_style()
                                     "torque (atom_style granular or sphere)");
   if (comm->ghost_velocity == 0)
     runin_liggghts::all(lmp, FLERR, "pair runin/asperity: requires ghost velocities (communicate single vel yes)");
+  runin_liggghts::require_si_units(lmp, FLERR, "pair runin/asperity");
   if (force->newton_pair)
     runin_liggghts::all(lmp, FLERR, "pair runin/asperity: requires 'newton off' in LIGGGHTS (its contact history "
                                     "keeps no ghost contacts; LAMMPS takes either)");

@@ -4,12 +4,14 @@
 
 #include "error.h"
 #include "lammps.h"
+#include "update.h"
 
 #include <fmt/format.h>
 
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <string>
 #include <utility>
@@ -74,6 +76,15 @@ inline bool yes_no(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std
   if (value == "yes" || value == "on" || value == "true" || value == "1") return true;
   if (value == "no" || value == "off" || value == "false" || value == "0") return false;
   all(lmp, file, line, fmt::format("{} must be 'yes' or 'no', got '{}'", what, value));
+}
+
+// The RunIn styles take SI coefficients: another unit system is one ERROR naming the deck's units.
+inline void require_si_units(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &style)
+{
+  const char *units = lmp->update->unit_style;
+  if (units && std::strcmp(units, "si") == 0) return;
+  all(lmp, file, line,
+      style + ": the coefficients are in SI; this deck uses 'units " + (units ? units : "?") + "'; use 'units si'");
 }
 
 }    // namespace runin_liggghts

@@ -1,6 +1,7 @@
 #include "runin_liggghts_material.h"
 
 #include "runin_liggghts_errors.h"
+#include "../lammps/runin_potential_path.h"
 
 #include "comm.h"
 #include "lammps.h"
@@ -17,9 +18,12 @@ runin_liggghts::MaterialPair runin_liggghts::read_material_pair(LAMMPS_NS::LAMMP
   MaterialPair entry;
   std::string problem;
   if (lmp->comm->me == 0) {
-    std::ifstream in(file);
-    if (!in) {
-      problem = fmt::format("cannot open coefficient file '{}'", file);
+    // the path as given, then $LAMMPS_POTENTIALS, as on the LAMMPS host
+    const auto search = runin_lammps::find_potential_file(file);
+    std::ifstream in;
+    if (!search.found.empty()) in.open(search.found);
+    if (!in.is_open()) {
+      problem = search.message(file);
     } else {
       try {
         entry = tribo::parse_material_file(in, file).pair(material_a, material_b);

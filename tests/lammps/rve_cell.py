@@ -5,6 +5,7 @@
   rve_cell.py cell-size --lmp LMP --workdir DIR [--accel 20] [--depth 3e-8]
   rve_cell.py quasi-static --lmp LMP --workdir DIR [--accel 20] [--depth 2e-8] [--nside 32]
   rve_cell.py summit-list --lmp LMP --workdir DIR
+  rve_cell.py normal-hertz --lmp LMP --workdir DIR [--nside 32]
 
 acceleration: the cell at one pressure with wear acceleration A and A x factor (fix runin/wall wear_scale).
 Asserted:
@@ -27,6 +28,14 @@ summit-list: the cell's `heights` input (a summit list, LAMMPS atomfile "ID z") 
   heights of a Gaussian sample written to a list and run again from the list give the same output file, every
   byte; a list of equal heights (one summit level) gives Rq = 0 and Rsk = 0 at the start; a missing list file and
   an unknown height_source each stop with an ERROR.
+normal-hertz: the cell's model choices are deck variables; loaded (no sliding) with -var normal hertz and with
+  its default elastic/plastic. Asserted, for hertz: the contact load equals the Hertz sum over the sample's own
+  summits at the separation that gives the measured real area (1e-9: the sample's exact elastic
+  Greenwood-Williamson sum), W / A_r is within 25 % of the GW elastic mean real pressure
+  (4 / 3 pi) E* sqrt(sigma / R) F_3/2(h) / F_1(h) of the Gaussian (the sample has ~50 contacts) and above the
+  hardness H (psi = 4: elastic summits carry more than H), no summit is flattened (flattened volume 0, Rq of
+  the summits unchanged to 1e-12); for elastic/plastic: W / A_r in the Bowden-Tabor band [0.5, 1] H, summits
+  flattened, and A_r larger than with hertz by more than 1.5 times.
 """
 import argparse
 import math
@@ -183,9 +192,96 @@ def summit_list(args):
     print("PASS")
 
 
+def gaussian_tail_moment(n, h):
+    """F_n(h) = int_h^inf (s - h)^n phi(s) ds of the unit Gaussian (midpoint rule to 12 sigma)."""
+    steps = 20000
+    ds = (12.0 - h) / steps
+    total = 0.0
+    for k in range(steps):
+        s = h + (k + 0.5) * ds
+        total += (s - h) ** n * math.exp(-0.5 * s * s)
+    return total * ds / math.sqrt(2.0 * math.pi)
+
+
+def bisect(f, lo, hi):
+    """Root of a function increasing on [lo, hi], to the last bit."""
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if mid in (lo, hi):
+            break
+        lo, hi = (mid, hi) if f(mid) < 0.0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def normal_hertz(args):
+    fresh_dir(args.workdir)
+    from run_deck import runin_materials  # noqa: E402
+    e_young, nu = runin_materials(MATERIAL)["Steel1020"]
+    e_star = 1.0 / (2.0 * (1.0 - nu * nu) / e_young)
+    radius, spacing = 1.0e-4, 2.0e-5    # in.rve_wall's defaults
+    driver = os.path.join(args.workdir, "in.loaded")
+    with open(driver, "w") as f:
+        f.write(f"include {DECK}\n"
+                "print \"LOADED $(c_fric[1]:%.17g) $(c_fric[9]:%.17g) $(v_area:%.17g) $(v_rq:%.17g)\"\n"
+                "write_dump all custom ${normal_name}.dump id z radius f_RUNIN_WEAR_STATE[5] "
+                "modify format float %.17g sort id\n")
+    result = {}
+    for normal in ("hertz", "elastic/plastic"):
+        name = normal.replace("/", "_")
+        log = run_lammps(args, driver, {"material": MATERIAL, "nside": args.nside, "nslide": 0, "normal": normal,
+                                        "normal_name": name, "pressure": PRESSURE, "out": f"{name}.dat"},
+                         log=f"log.{name}")
+        words = [l for l in log.splitlines() if l.startswith("LOADED ")][-1].split()
+        load, area, nominal, rq = (float(w) for w in words[1:5])
+        with open(os.path.join(args.workdir, f"{name}.dump")) as f:
+            lines = f.read().splitlines()
+        atoms = [[float(w) for w in l.split()] for l in lines[lines.index("ITEM: ATOMS id z radius f_RUNIN_WEAR_STATE[5]") + 1:]]
+        result[normal] = dict(load=load, area=area, nominal=nominal, rq=rq, z=[a[1] for a in atoms],
+                              flattened=sum(a[3] for a in atoms))
+        print(f"{normal}: W = {load:.6g} N, A_r = {area:.6g} m^2 (A_r/A {area / nominal:.5f}), "
+              f"W / A_r = {load / area:.6g} Pa = {load / area / H:.4f} H, flattened volume {result[normal]['flattened']:.6g} m^3")
+    hz, ep = result["hertz"], result["elastic/plastic"]
+    # the sample's exact elastic sum: the wall position z_w with sum pi R delta = A_r, delta = z + R - z_w
+    z = hz["z"]
+    overlaps = lambda z_w: [max(0.0, zi + radius - z_w) for zi in z]
+    z_w = bisect(lambda z_w: hz["area"] - sum(math.pi * radius * d for d in overlaps(z_w)), min(z), max(z) + radius)
+    hertz_load = sum(4.0 / 3.0 * e_star * math.sqrt(radius) * d ** 1.5 for d in overlaps(z_w))
+    print(f"hertz: Hertz sum over the sample's summits at that real area {hertz_load:.6g} N (measured {hz['load']:.6g} N, "
+          f"{hertz_load / hz['load'] - 1.0:+.2e})")
+    if abs(hertz_load / hz["load"] - 1.0) > 1e-9:
+        fail(f"hertz: the contact load {hz['load']!r} N is not the elastic (Hertz) sum {hertz_load!r} N of the sample")
+    # the Gaussian's GW elastic mean real pressure at the separation h of the measured real area, with the
+    # sample's RMS height for sigma
+    mean = sum(z) / len(z)
+    rq0 = math.sqrt(sum((zi - mean) ** 2 for zi in z) / len(z))
+    sigma = rq0
+    density = 1.0 / spacing ** 2
+    target = hz["area"] / hz["nominal"] / (math.pi * density * radius * sigma)
+    h = bisect(lambda h: target - gaussian_tail_moment(1, h), -3.0, 8.0)
+    gw_pressure = 4.0 / (3.0 * math.pi) * e_star * math.sqrt(sigma / radius) * gaussian_tail_moment(1.5, h) / \
+        gaussian_tail_moment(1, h)
+    print(f"hertz: GW elastic W / A_r at h = {h:.4f} sigma: {gw_pressure:.6g} Pa; measured {hz['load'] / hz['area']:.6g} Pa "
+          f"({hz['load'] / hz['area'] / gw_pressure:.4f})")
+    if abs(hz["load"] / hz["area"] / gw_pressure - 1.0) > 0.25:
+        fail("hertz: W / A_r is not the Greenwood-Williamson elastic mean real pressure")
+    if not hz["load"] / hz["area"] > H:
+        fail(f"hertz: W / A_r = {hz['load'] / hz['area']:.4g} Pa not above H: the summits do not act elastic")
+    if hz["flattened"] != 0.0 or abs(hz["rq"] / rq0 - 1.0) > 1e-12:
+        fail(f"hertz: summits flattened (volume {hz['flattened']!r}, Rq {hz['rq']!r} against {rq0!r} of the heights)")
+    if not 0.5 * H <= ep["load"] / ep["area"] <= H:
+        fail(f"elastic/plastic: W / A_r = {ep['load'] / ep['area']:.4g} Pa outside the Bowden-Tabor band [0.5, 1] H")
+    if not (ep["flattened"] > 0.0 and ep["rq"] < hz["rq"]):
+        fail("elastic/plastic: no plastic flattening of the summits")
+    if not ep["area"] > 1.5 * hz["area"]:
+        fail(f"A_r elastic/plastic {ep['area']:.4g} not above 1.5 x hertz's {hz['area']:.4g}")
+    print(f"A_r elastic/plastic / hertz = {ep['area'] / hz['area']:.4f}; Rq after loading {ep['rq']:.6g} m "
+          f"(elastic/plastic) against {hz['rq']:.6g} m (hertz, = the heights' {rq0:.6g} m)")
+    print("PASS")
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("mode", choices=["acceleration", "cell-size", "quasi-static", "summit-list"])
+    parser.add_argument("mode", choices=["acceleration", "cell-size", "quasi-static", "summit-list", "normal-hertz"])
     parser.add_argument("--lmp", required=True)
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--mpiexec", default="mpiexec")
@@ -200,6 +296,8 @@ def main():
         acceleration(args)
     elif args.mode == "summit-list":
         summit_list(args)
+    elif args.mode == "normal-hertz":
+        normal_hertz(args)
     elif args.mode == "quasi-static":
         args.accel = args.accel or 20.0
         quasi_static(args)
