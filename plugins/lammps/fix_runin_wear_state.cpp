@@ -19,7 +19,7 @@ using namespace LAMMPS_NS;
 
 namespace {
 // WEAR_DEPTH, FLAT_RADIUS and VOLUME_FLATTENED: all the force needs from a ghost (the last for a reload of
-// flattened summits)
+// flattened summits, only when a pair asks for it: forward_flattened)
 constexpr int kGeometryColumns = 3;
 }
 
@@ -167,7 +167,7 @@ int FixRuninWearState::pack_forward_comm(int n, int *list, double *buf, int /*pb
   for (int k = 0; k < n; k++) {
     buf[m++] = values[list[k]][WEAR_DEPTH];
     buf[m++] = values[list[k]][FLAT_RADIUS];
-    buf[m++] = values[list[k]][VOLUME_FLATTENED];
+    if (send_flattened) buf[m++] = values[list[k]][VOLUME_FLATTENED];
   }
   return m;
 }
@@ -178,7 +178,7 @@ void FixRuninWearState::unpack_forward_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++) {
     values[i][WEAR_DEPTH] = buf[m++];
     values[i][FLAT_RADIUS] = buf[m++];
-    values[i][VOLUME_FLATTENED] = buf[m++];
+    if (send_flattened) values[i][VOLUME_FLATTENED] = buf[m++];
   }
 }
 

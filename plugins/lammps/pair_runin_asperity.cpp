@@ -350,6 +350,7 @@ void PairRuninAsperity::init_style()
   }
   // after read_restart, pair_style settings did not run; plastic flattening needs the state too
   if (wear_on || plastic_normal()) attach_wear_state();
+  if (fix_wear) fix_wear->forward_flattened(plastic_normal());    // the ghosts' part for reloads
 
   // largest radius per type bounds the contact cutoff
   std::vector<double> local(atom->ntypes + 1, 0.0);
