@@ -18,7 +18,9 @@
 using namespace LAMMPS_NS;
 
 namespace {
-constexpr int kGeometryColumns = 2;    // WEAR_DEPTH, FLAT_RADIUS: all the force needs from a ghost
+// WEAR_DEPTH, FLAT_RADIUS and VOLUME_FLATTENED: all the force needs from a ghost (the last for a reload of
+// flattened summits, only when a pair asks for it: forward_flattened)
+constexpr int kGeometryColumns = 3;
 }
 
 FixRuninWearState::FixRuninWearState(LAMMPS *lmp, int narg, char **arg) :
@@ -165,6 +167,7 @@ int FixRuninWearState::pack_forward_comm(int n, int *list, double *buf, int /*pb
   for (int k = 0; k < n; k++) {
     buf[m++] = values[list[k]][WEAR_DEPTH];
     buf[m++] = values[list[k]][FLAT_RADIUS];
+    if (send_flattened) buf[m++] = values[list[k]][VOLUME_FLATTENED];
   }
   return m;
 }
@@ -175,6 +178,7 @@ void FixRuninWearState::unpack_forward_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++) {
     values[i][WEAR_DEPTH] = buf[m++];
     values[i][FLAT_RADIUS] = buf[m++];
+    if (send_flattened) values[i][VOLUME_FLATTENED] = buf[m++];
   }
 }
 

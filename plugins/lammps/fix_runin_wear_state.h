@@ -66,6 +66,8 @@ class FixRuninWearState : public Fix {
   void refresh_geometry_all();
   // Send the geometry columns to the ghosts.
   void forward_geometry();
+  // Whether the ghosts also get VOLUME_FLATTENED (a pair with a plastic normal model reads it for reloads).
+  void forward_flattened(bool on) { send_flattened = on; }
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -82,6 +84,7 @@ class FixRuninWearState : public Fix {
 
  private:
   double **values;
+  bool send_flattened = true;
   void assign_from_variable(Column column, const char *name);
 };
 

@@ -367,6 +367,7 @@ void PairRuninAsperity::init_style()
   }
   // after read_restart, pair_style settings did not run; plastic flattening needs the state too
   if (wear_on || plastic_normal()) attach_wear_state();
+  if (fix_wear) fix_wear->forward_flattened(plastic_normal());    // the ghosts' part for reloads
 
   // largest radius per type bounds the contact cutoff
   std::vector<double> local(atom->ntypes + 1, 0.0);
@@ -507,6 +508,17 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   }
 }
 
+// How far plastic flattening (not wear) lowered the summits of i and j together (ghosts included: the wear
+// state forwards the flattened volume with the geometry).
+double PairRuninAsperity::flattened_drop(int i, int j) const
+{
+  double **state = fix_wear->state();
+  const double *radius = atom->radius;
+  constexpr int DEPTH = FixRuninWearState::WEAR_DEPTH, FLATTENED = FixRuninWearState::VOLUME_FLATTENED;
+  return tribo::flattened_part_of_drop(radius[i], state[i][DEPTH], state[i][FLATTENED]) +
+         tribo::flattened_part_of_drop(radius[j], state[j][DEPTH], state[j][FLATTENED]);
+}
+
 // The geometry of the contact of i and j (centre distance 1/rinv, overlap from the worn summits).
 tribo::ContactGeometry PairRuninAsperity::contact_geometry(int i, int j, double overlap, double rinv,
                                                            const double *del, double flat) const
@@ -639,6 +651,9 @@ void PairRuninAsperity::eval(int eflag)
         RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
     tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
     if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
+    // a new contact of flattened summits is a reload: the model restores the state that flattened them
+    if (PLASTIC_MODEL && RESHAPE && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
+      g.flattened_drop = flattened_drop(i, j);
     const double smaller_radius = std::min(radi, radj);
     const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
     const double fn = contact.normal_force;
@@ -798,6 +813,8 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
   const double r = std::sqrt(rsq);
   tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, flat);
   if (state) g.summit_drop = std::max(depth_i, 0.0) + std::max(depth_j, 0.0);
+  if (state && plastic_normal() && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
+    g.flattened_drop = flattened_drop(i, j);
   const tribo::ContactModel &model = *models[itype * (atom->ntypes + 1) + jtype];
   double energy = 0.0;
   tribo::ContactResult contact;

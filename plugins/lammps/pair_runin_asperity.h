@@ -137,6 +137,8 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   static constexpr int NFLAGS = 4;    // WEAR, RESHAPE, SUMS, EVFLAG
   template <int... Index>
   static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
+  // The part of the two summits' drop that plastic flattening left (a reload's flattened_drop).
+  double flattened_drop(int i, int j) const;
   // One contact's geometry from positions, velocities, radii, masses and the worn state (eval and single).
   // Inlined into the force loop (out of line it cost a call and a 14-value struct through memory per contact).
   [[gnu::always_inline]] inline runin::tribo::ContactGeometry contact_geometry(int i, int j, double overlap,

@@ -374,6 +374,10 @@ void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **hi
     }
     g.flat_radius = worn_geometry ? wear_state[i][WearFix::FLAT_RADIUS] : 0.0;
     g.summit_drop = std::max(summit_drop, 0.0);
+    // a flattened summit under a contact without plastic history is a reload: the model restores the state
+    // that flattened it (the history kept below normally holds it already)
+    if (worn_geometry && summit_drop > 0.0 && !(history[i][tribo::HISTORY_MAX_OVERLAP] > 0.0))
+      g.flattened_drop = tribo::flattened_part_of_drop(r, summit_drop, wear_state[i][WearFix::VOLUME_FLATTENED]);
     g.effective_radius = r;    // a flat wall: the asperity's own radius
     g.effective_mass = rmass[i];
     for (int k = 0; k < 3; k++) g.normal[k] = normal[k];

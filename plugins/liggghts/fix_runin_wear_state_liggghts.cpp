@@ -14,7 +14,9 @@
 using namespace LAMMPS_NS;
 
 namespace {
-constexpr int kGeometryColumns = 2;    // WEAR_DEPTH, FLAT_RADIUS: all the force needs from a ghost
+// WEAR_DEPTH, FLAT_RADIUS and VOLUME_FLATTENED: all the force needs from a ghost (the last for a reload of
+// flattened summits)
+constexpr int kGeometryColumns = 3;
 }
 
 FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char **arg) :
@@ -86,12 +88,14 @@ bool FixRuninWearStateLiggghts::forward_geometry(bool always)
         const double *from = values[source[j]];
         values[j][WEAR_DEPTH] = from[WEAR_DEPTH];
         values[j][FLAT_RADIUS] = from[FLAT_RADIUS];
+        values[j][VOLUME_FLATTENED] = from[VOLUME_FLATTENED];
       }
     } else {
       for (const int i : changed_atoms)
         for (int k = image_start[i]; k < image_start[i + 1]; k++) {
           values[image_list[k]][WEAR_DEPTH] = values[i][WEAR_DEPTH];
           values[image_list[k]][FLAT_RADIUS] = values[i][FLAT_RADIUS];
+          values[image_list[k]][VOLUME_FLATTENED] = values[i][VOLUME_FLATTENED];
         }
     }
     changed_atoms.clear();
@@ -141,8 +145,8 @@ void FixRuninWearStateLiggghts::start_exchange()
     for (int s = 0; s < plan.nswap; s++) {
       for (int k = 0; k < plan.sendnum[s]; k++)
         highest_sent[s] = plan.sendlist[s][k] > highest_sent[s] ? plan.sendlist[s][k] : highest_sent[s];
-      send_buffer[s].resize(1 + 2 * static_cast<std::size_t>(plan.sendnum[s]));
-      recv_buffer[s].resize(1 + 2 * static_cast<std::size_t>(plan.recvnum[s]));
+      send_buffer[s].resize(1 + kGeometryColumns * static_cast<std::size_t>(plan.sendnum[s]));
+      recv_buffer[s].resize(1 + kGeometryColumns * static_cast<std::size_t>(plan.recvnum[s]));
     }
     plan_known = true;
   }
@@ -177,6 +181,7 @@ bool FixRuninWearStateLiggghts::advance_exchange(bool wait)
       for (int k = 0; k < plan.recvnum[s]; k++) {
         values[plan.firstrecv[s] + k][WEAR_DEPTH] = values[list[k]][WEAR_DEPTH];
         values[plan.firstrecv[s] + k][FLAT_RADIUS] = values[list[k]][FLAT_RADIUS];
+        values[plan.firstrecv[s] + k][VOLUME_FLATTENED] = values[list[k]][VOLUME_FLATTENED];
       }
       continue;
     }
@@ -187,6 +192,7 @@ bool FixRuninWearStateLiggghts::advance_exchange(bool wait)
       for (int k = 0; k < plan.sendnum[s]; k++) {
         out[size++] = values[list[k]][WEAR_DEPTH];
         out[size++] = values[list[k]][FLAT_RADIUS];
+        out[size++] = values[list[k]][VOLUME_FLATTENED];
       }
     MPI_Irecv(recv_buffer[s].data(), static_cast<int>(recv_buffer[s].size()), MPI_DOUBLE, plan.recvproc[s], s,
               exchange_comm, &requests[2 * s + 1]);
@@ -205,9 +211,10 @@ void FixRuninWearStateLiggghts::receive_swap(int s, bool unpack)
   exchange_dirty = true;          // what this rank passes on changed
   if (!unpack) return;
   const runin_liggghts::SwapPlan plan = runin_liggghts::swap_plan(comm);
-  for (int k = 0, m = 1; k < plan.recvnum[s]; k++, m += 2) {
+  for (int k = 0, m = 1; k < plan.recvnum[s]; k++, m += kGeometryColumns) {
     values[plan.firstrecv[s] + k][WEAR_DEPTH] = in[m];
     values[plan.firstrecv[s] + k][FLAT_RADIUS] = in[m + 1];
+    values[plan.firstrecv[s] + k][VOLUME_FLATTENED] = in[m + 2];
   }
 }
 
@@ -312,13 +319,14 @@ int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int
   if (send_indices) {
     for (int k = 0; k < n; k++) {
       buf[m++] = source[list[k]];
-      buf[m++] = 0.0;
+      for (int c = 1; c < kGeometryColumns; c++) buf[m++] = 0.0;
     }
     return kGeometryColumns;
   }
   for (int k = 0; k < n; k++) {
     buf[m++] = values[list[k]][WEAR_DEPTH];
     buf[m++] = values[list[k]][FLAT_RADIUS];
+    buf[m++] = values[list[k]][VOLUME_FLATTENED];
   }
   return kGeometryColumns;    // LIGGGHTS's Comm::forward_comm_fix takes the count per atom
 }
@@ -327,12 +335,13 @@ void FixRuninWearStateLiggghts::unpack_comm(int n, int first, double *buf)
 {
   int m = 0;
   if (send_indices) {
-    for (int i = first; i < first + n; i++, m += 2) source[i] = static_cast<int>(buf[m]);
+    for (int i = first; i < first + n; i++, m += kGeometryColumns) source[i] = static_cast<int>(buf[m]);
     return;
   }
   for (int i = first; i < first + n; i++) {
     values[i][WEAR_DEPTH] = buf[m++];
     values[i][FLAT_RADIUS] = buf[m++];
+    values[i][VOLUME_FLATTENED] = buf[m++];
   }
 }
 

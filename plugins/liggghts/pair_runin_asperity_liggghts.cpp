@@ -464,7 +464,7 @@ void PairRuninAsperityLiggghts::eval(int eflag)
   const double *state = state_rows && atom->nmax > 0 ? state_rows[0] : nullptr;
   using W = FixRuninWearStateLiggghts;
   constexpr int NCOL = W::NCOLUMNS;
-  constexpr int DEPTH = W::WEAR_DEPTH, FLAT = W::FLAT_RADIUS;
+  constexpr int DEPTH = W::WEAR_DEPTH, FLAT = W::FLAT_RADIUS, FLATTENED = W::VOLUME_FLATTENED;
   double **x = atom->x, **f = atom->f;
   double **torque = atom->torque;
   const double *radius = atom->radius;
@@ -541,6 +541,11 @@ void PairRuninAsperityLiggghts::eval(int eflag)
         RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
     tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
     if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
+    // a new contact of flattened summits is a reload: the model restores the state that flattened them
+    // (PairRuninAsperity::flattened_drop, the same sum)
+    if (PLASTIC_MODEL && RESHAPE && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
+      g.flattened_drop = tribo::flattened_part_of_drop(radi, state[NCOL * i + DEPTH], state[NCOL * i + FLATTENED]) +
+                         tribo::flattened_part_of_drop(radj, state[NCOL * j + DEPTH], state[NCOL * j + FLATTENED]);
     const double smaller_radius = std::min(radi, radj);
     const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
     const double fn = contact.normal_force;

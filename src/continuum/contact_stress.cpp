@@ -26,9 +26,15 @@ LineContactStress hertz_line_contact_stress(double p0, double half_width, double
   const std::vector<double> x = tribo::cell_centres(-1.5 * half_width, 1.5 * half_width, points);
   const std::vector<double> z = tribo::uniform_points(0.0, 1.5 * half_width, points);
   auto field = [&](const tribo::Material &m, double sign) {
-    tribo::StressField f = tribo::mcewen_field({p0, half_width, m.poisson_ratio, sign * mu}, x, z);
+    const tribo::SlidingHertzLine line{p0, half_width, m.poisson_ratio, sign * mu};
+    tribo::StressField f = tribo::mcewen_field(line, x, z);
+    // the closed form's maximum, not the grid's (it can sit on the surface between grid points)
+    const tribo::StressPeak peak = tribo::mcewen_peak_von_mises(line, f);
     for (double &xi : f.x) xi += centre;
-    return body_stress(m, std::move(f));
+    BodyStress body = body_stress(m, std::move(f));
+    body.peak = peak;
+    body.peak.x += centre;
+    return body;
   };
   c.a = field(a, 1.0);
   c.b = field(b, -1.0);

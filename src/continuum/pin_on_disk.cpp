@@ -214,8 +214,12 @@ ContactStress hertz_contact_stress(double p0, double a, double mu, const tribo::
   c.peak_pressure = p0;
   const std::vector<double> x = tribo::cell_centres(-1.5 * a, 1.5 * a, points);
   const std::vector<double> z = tribo::uniform_points(0.0, 1.5 * a, points);
-  c.disk = body_stress(disk, tribo::hamilton_field({p0, a, disk.poisson_ratio, mu}, x, z));
-  c.pin = body_stress(pin, tribo::hamilton_field({p0, a, pin.poisson_ratio, -mu}, x, z));
+  const tribo::SlidingHertzSphere on_disk{p0, a, disk.poisson_ratio, mu}, on_pin{p0, a, pin.poisson_ratio, -mu};
+  c.disk = body_stress(disk, tribo::hamilton_field(on_disk, x, z));
+  c.pin = body_stress(pin, tribo::hamilton_field(on_pin, x, z));
+  // the closed form's maximum, not the grid's: with friction it can sit on the contact edge between grid points
+  c.disk.peak = tribo::hamilton_peak_von_mises(on_disk, c.disk.field);
+  c.pin.peak = tribo::hamilton_peak_von_mises(on_pin, c.pin.field);
   return c;
 }
 

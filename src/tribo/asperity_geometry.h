@@ -105,6 +105,17 @@ inline WornAsperity worn_asperity(double radius, double volume_lost, double volu
   return out;
 }
 
+// The part of a summit's drop (wear depth h > 0) that plastic flattening left, when the summit has lost
+// `volume_flattened` to flattening and its cap V(h) = pi h^2 (3R - h) / 3 in all (wear and flattening together):
+// h V_flattened / V(h), at most h; 0 for h <= 0. All of h for a summit that was only flattened.
+inline double flattened_part_of_drop(double radius, double drop, double volume_flattened)
+{
+  constexpr double kPiThird = 3.14159265358979323846 / 3.0;
+  if (!(drop > 0.0) || !(volume_flattened > 0.0)) return 0.0;
+  const double cap = kPiThird * drop * drop * (3.0 * radius - drop);
+  return volume_flattened >= cap ? drop : drop * (volume_flattened / cap);
+}
+
 // Everything the force loop needs from the Sneddon contact at one overlap (FlatHertzNormal::evaluate).
 struct FlatHertzContact {
   double contact_radius = 0.0;    // a [m]

@@ -35,6 +35,9 @@ struct ContactGeometry {
   double flat_radius = 0.0;         // b, flat of a worn summit (0: intact sphere) [m]
   double summit_drop = 0.0;         // how far the summits sit below the intact spheres (wear and plastic
                                     // flattening, both bodies, >= 0): overlap + drop is the spheres' interference
+  // The part of summit_drop that plastic flattening left (flattened_part_of_drop, both bodies) [m]. Read only
+  // by the elastic-plastic model for a contact without plastic history (a reload), so hosts set it only then.
+  double flattened_drop = 0.0;
   double normal[3] = {0.0, 0.0, 0.0};    // unit normal, from the counter-body towards body i
   double normal_velocity = 0.0;     // v_n of i relative to the counter-body (< 0: approach) [m/s]
   double tangential_velocity[3] = {0.0, 0.0, 0.0};    // v_t at the contact point, rolling included [m/s]
@@ -141,9 +144,12 @@ class HertzNormalModel {
 // The interference is that of the intact spheres, omega = delta + summit drop. Where the residual
 // interference of omega_max lies below the summits' drop, the difference is returned (residual_increment):
 // the host lowers the summits by it (a flattened cap in the per-asperity truncated-sphere state), so later
-// contacts see the flat. A flat b that the contact's own history does not explain (worn, or flattened by an
-// earlier contact) reloads elastically (Sneddon's flat punch + Hertz) until it reaches the elastic-plastic
-// force at omega.
+// contacts see the flat. Reloading a plastically flattened summit retraces the EKK unloading curve (elastic
+// reloading, Kadin, Kligerman & Etsion 2006): a contact that starts without plastic history on summits that
+// plastic flattening lowered by g.flattened_drop starts on the curve of the omega_max whose residual
+// interference that is (seed_reload_history: the same state a kept history holds). A flat that no plastic
+// history explains (worn by Archard wear: a truncated sphere) reloads elastically (Sneddon's flat punch + Hertz)
+// until it reaches the elastic-plastic force at omega. doc/elastic_plastic_contact.md, "Reloading".
 class ElasticPlasticNormalModel {
  public:
   static constexpr const char *name = "elastic/plastic";
@@ -171,8 +177,18 @@ class ElasticPlasticNormalModel {
   {
     const double R = g.effective_radius, inv_R = 1.0 / R;
     const double omega = (g.overlap + g.summit_drop) * inv_R;    // R = 1 units until the end
-    const double omega_max = history[HISTORY_MAX_OVERLAP] * inv_R;
-    const double cached_residual = history[HISTORY_RESIDUAL];
+    // the plastic slots: this contact's, or, for a reload of flattened summits, the state that flattened them
+    double seeded[history_slots];
+    const double *plastic = history + HISTORY_MAX_OVERLAP;
+    if (!(history[HISTORY_MAX_OVERLAP] > 0.0) && g.flattened_drop > 0.0) {
+      seed_reload_history(g.flattened_drop, R, seeded);
+      if (advance)
+        for (int k = 0; k < history_slots; ++k) history[HISTORY_MAX_OVERLAP + k] = seeded[k];
+      else
+        plastic = seeded;
+    }
+    const double omega_max = plastic[0] * inv_R;
+    const double cached_residual = plastic[HISTORY_RESIDUAL - HISTORY_MAX_OVERLAP];
     NormalContact out;
     out.plastic_model = true;
     out.stick_critical_load = stick_critical_load_ * R * R;
@@ -180,33 +196,8 @@ class ElasticPlasticNormalModel {
     double residual = cached_residual, exponent = 0.0;
 
     if (loading) {
-      const double x = omega * inv_omega_c_;
-      out.range_ratio = x * (1.0 / JacksonGreen::kCheckedRange);
-      if (plastic_table_.covers(x)) {
-        // the fully plastic Jackson-Green branch and what loading derives from it, tabulated
-        const PlasticLoadingPoint p = plastic_table_.evaluate(x);
-        residual = p.residual_ratio * omega;
-        exponent = p.exponent;
-        out.force = p.force;
-        out.contact_radius = p.contact_radius;
-        out.stiffness = p.stiffness;
-        out.groove_ploughing = p.groove_ploughing;
-      } else {
-        // the Jackson-Green curve (Hertz and the bridge to the fit; the fit itself beyond the table)
-        double log_x;    // ln(omega / omega_c) for omega > omega_c (the fit's own)
-        const ContactPoint p = unit_.evaluate(omega, log_x);
-        if (x > 1.0) {
-          residual = ElasticPlasticUnloading::residual_ratio_of_log(log_x) * omega;
-          exponent = ElasticPlasticUnloading::unloading_exponent_of_log(log_x);
-        } else {
-          residual = 0.0;
-          exponent = 1.5;
-        }
-        out.force = p.force;
-        out.contact_radius = p.contact_radius;
-        out.stiffness = p.stiffness;
-        if (residual > 0.0) out.groove_ploughing = groove_ploughing_force(p.force, p.contact_radius, 1.0, residual);
-      }
+      out.range_ratio = omega * inv_omega_c_ * (1.0 / JacksonGreen::kCheckedRange);
+      load(omega, out, residual, exponent);
     } else if (!(cached_residual > 0.0)) {
       // an elastic history: unloading is the (Hertz) loading curve itself
       const ContactPoint p = unit_.evaluate(omega);
@@ -216,15 +207,15 @@ class ElasticPlasticNormalModel {
     } else {
       // EKK unloading / elastic reloading below omega_max, P = P_max s^n and a = a_max s^(n-1), from the
       // cached curve; 0 once the contact has opened (the groove stays)
-      out.groove_ploughing = history[HISTORY_GROOVE];
+      out.groove_ploughing = plastic[HISTORY_GROOVE - HISTORY_MAX_OVERLAP];
       if (omega > cached_residual) {
         const double gap = omega - cached_residual;
         const double s = gap / (omega_max - cached_residual);
-        const double n = history[HISTORY_EXPONENT];
+        const double n = plastic[HISTORY_EXPONENT - HISTORY_MAX_OVERLAP];
         const double s_n = std::exp(n * std::log(s));
-        out.force = history[HISTORY_MAX_FORCE] * s_n;
+        out.force = plastic[HISTORY_MAX_FORCE - HISTORY_MAX_OVERLAP] * s_n;
         out.stiffness = n * out.force / gap;
-        out.contact_radius = history[HISTORY_MAX_RADIUS] * s_n / s;
+        out.contact_radius = plastic[HISTORY_MAX_RADIUS - HISTORY_MAX_OVERLAP] * s_n / s;
       }
     }
     out.force *= R * R;
@@ -260,12 +251,36 @@ class ElasticPlasticNormalModel {
     }
     return out;
   }
+  // The plastic history slots (HISTORY_MAX_OVERLAP on, history_slots values) that loading to the omega_max
+  // whose EKK residual interference is `flattened_drop` leaves, for R* = R: what a contact that had made that
+  // flat would hold (the same loading evaluation). The residual is flattened_drop itself.
+  void seed_reload_history(double flattened_drop, double R, double *slots) const
+  {
+    const double residual = flattened_drop / R;
+    const double omega_max =
+        ElasticPlasticUnloading::max_interference_of_residual(residual * inv_omega_c_) * unit_.critical_interference();
+    NormalContact peak;
+    double ignored_residual, exponent;
+    load(omega_max, peak, ignored_residual, exponent);
+    slots[0] = omega_max * R;
+    slots[HISTORY_RESIDUAL - HISTORY_MAX_OVERLAP] = residual;
+    slots[HISTORY_MAX_FORCE - HISTORY_MAX_OVERLAP] = peak.force;
+    slots[HISTORY_MAX_RADIUS - HISTORY_MAX_OVERLAP] = peak.contact_radius;
+    slots[HISTORY_EXPONENT - HISTORY_MAX_OVERLAP] = exponent;
+    slots[HISTORY_GROOVE - HISTORY_MAX_OVERLAP] = peak.groove_ploughing;
+  }
   double elastic_energy(const ContactGeometry &g, const double *history) const
   {
     // the energy an unloading would give back: the integral of the current (un)loading curve from its zero
     const double R = g.effective_radius;
     const double omega = (g.overlap + g.summit_drop) / R;
-    const double omega_max = std::max(history[HISTORY_MAX_OVERLAP] / R, omega);
+    double stored = history[HISTORY_MAX_OVERLAP];
+    if (!(stored > 0.0) && g.flattened_drop > 0.0) {    // a reload, as evaluate() sees it
+      double seeded[history_slots];
+      seed_reload_history(g.flattened_drop, R, seeded);
+      stored = seeded[0];
+    }
+    const double omega_max = std::max(stored / R, omega);
     const ElasticPlasticUnloading unloading(unit_, omega_max);
     if (!(omega > unloading.residual_interference())) return 0.0;
     // P = P_max s^n with s = (omega - omega_res) / (omega_max - omega_res): integral P_max s^(n+1) span / (n+1)
@@ -291,6 +306,37 @@ class ElasticPlasticNormalModel {
 
  private:
   static constexpr double kPi = 3.14159265358979323846;
+  // The loading curve at omega (R = 1 units): force, contact radius, stiffness and groove into out, and what
+  // unloading from omega would follow (residual interference, EKK exponent).
+  void load(double omega, NormalContact &out, double &residual, double &exponent) const
+  {
+    const double x = omega * inv_omega_c_;
+    if (plastic_table_.covers(x)) {
+      // the fully plastic Jackson-Green branch and what loading derives from it, tabulated
+      const PlasticLoadingPoint p = plastic_table_.evaluate(x);
+      residual = p.residual_ratio * omega;
+      exponent = p.exponent;
+      out.force = p.force;
+      out.contact_radius = p.contact_radius;
+      out.stiffness = p.stiffness;
+      out.groove_ploughing = p.groove_ploughing;
+    } else {
+      // the Jackson-Green curve (Hertz and the bridge to the fit; the fit itself beyond the table)
+      double log_x;    // ln(omega / omega_c) for omega > omega_c (the fit's own)
+      const ContactPoint p = unit_.evaluate(omega, log_x);
+      if (x > 1.0) {
+        residual = ElasticPlasticUnloading::residual_ratio_of_log(log_x) * omega;
+        exponent = ElasticPlasticUnloading::unloading_exponent_of_log(log_x);
+      } else {
+        residual = 0.0;
+        exponent = 1.5;
+      }
+      out.force = p.force;
+      out.contact_radius = p.contact_radius;
+      out.stiffness = p.stiffness;
+      if (residual > 0.0) out.groove_ploughing = groove_ploughing_force(p.force, p.contact_radius, 1.0, residual);
+    }
+  }
   double e_eff_;
   JacksonGreen unit_;    // the loading curve of a unit-radius sphere
   PlasticLoadingTable plastic_table_;    // its fully plastic branch, tabulated for the force loops

@@ -95,6 +95,39 @@ double JacksonGreen::hardness_geometric(double omega) const
   return kHardnessLimit * c_.yield_strength * (1.0 - std::exp(-0.82 * std::pow(q, -0.7)));
 }
 
+double ElasticPlasticUnloading::max_interference_of_residual(double d)
+{
+  if (!(d > 0.0)) return 1.0;
+  if (!std::isfinite(d)) return d;
+  // f(u) = ln(r(x) x) - ln d with u = ln x, r = (1 - x^-0.28)(1 - x^-0.69): increasing in u, concave for large
+  // u; bracketed Newton (bisection where a step leaves the bracket).
+  const double target = std::log(d);
+  auto f = [&](double u, double &slope) {
+    const double e1 = std::exp(-0.28 * u), e2 = std::exp(-0.69 * u);
+    const double g1 = -std::expm1(-0.28 * u), g2 = -std::expm1(-0.69 * u);
+    slope = 1.0 + 0.28 * e1 / g1 + 0.69 * e2 / g2;
+    return std::log(g1) + std::log(g2) + u - target;
+  };
+  double lo = 0.0, hi = std::max(1.0, target + 2.0);
+  double slope;
+  while (f(hi, slope) < 0.0) hi *= 2.0;
+  double u = std::max(target, 0.5 * hi);
+  if (!(u > lo && u < hi)) u = 0.5 * (lo + hi);
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double value = f(u, slope);
+    if (value == 0.0) break;
+    (value < 0.0 ? lo : hi) = u;
+    double next = u - value / slope;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - u) <= 1e-15 * std::max(1.0, std::fabs(u)) || hi - lo <= 1e-16 * std::max(1.0, hi)) {
+      u = next;
+      break;
+    }
+    u = next;
+  }
+  return std::exp(u);
+}
+
 double ElasticPlasticUnloading::max_mean_pressure() const
 {
   if (!(radius_max_ > 0.0)) return 0.0;

@@ -146,6 +146,9 @@ class ElasticPlasticUnloading {
     return (-std::expm1(-0.28 * log_x)) * (-std::expm1(-0.69 * log_x));
   }
   static double unloading_exponent_of_log(double log_x) { return 1.5 * std::exp(-0.0331 * log_x); }
+  // The inverse of x -> residual_ratio(x) x: the omega*_max whose residual interference is
+  // omega_res / omega_c = normalised_residual (> 0; 1 for <= 0). Newton on ln x, to round-off.
+  static double max_interference_of_residual(double normalised_residual);
 
   ContactPoint evaluate(double omega) const;    // header-inline
   double force(double omega) const { return evaluate(omega).force; }

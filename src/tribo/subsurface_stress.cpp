@@ -646,6 +646,79 @@ StressField mcewen_field(const SlidingHertzLine &c, const std::vector<double> &x
   return f;
 }
 
+namespace {
+
+// Compass search for the largest von Mises stress of vm(x, z) from each start (x, z), z >= 0 and x in
+// [x_lo, x_hi], steps from `step` down to `tolerance`: a cusp (the contact edge) or a smooth maximum alike.
+template <class F>
+StressPeak compass_peak(const F &vm, const std::vector<StressPeak> &starts, double x_lo, double x_hi, double step,
+                        double tolerance)
+{
+  StressPeak best;
+  for (StressPeak p : starts) {
+    p.von_mises = vm(p.x, p.z);
+    double h = step;
+    while (h > tolerance) {
+      bool moved = false;
+      const double trial[4][2] = {{p.x + h, p.z}, {p.x - h, p.z}, {p.x, p.z + h}, {p.x, std::max(p.z - h, 0.0)}};
+      for (const auto &t : trial) {
+        if (t[0] < x_lo || t[0] > x_hi || (t[0] == p.x && t[1] == p.z)) continue;
+        const double v = vm(t[0], t[1]);
+        if (v > p.von_mises) p = {v, t[0], t[1]}, moved = true;
+      }
+      if (!moved) h *= 0.5;
+    }
+    if (p.von_mises > best.von_mises) best = p;
+  }
+  return best;
+}
+
+// The starts of the peak search on a grid: its largest point, its largest surface point, the contact edges.
+std::vector<StressPeak> peak_starts(const StressField &grid, double half_width)
+{
+  std::vector<StressPeak> starts{grid.peak_von_mises(), {0.0, -half_width, 0.0}, {0.0, half_width, 0.0}};
+  std::size_t surface = 0;
+  for (std::size_t k = 1; k < grid.z.size(); ++k)
+    if (grid.z[k] < grid.z[surface]) surface = k;
+  StressPeak top;
+  for (std::size_t i = 0; i < grid.x.size(); ++i) {
+    const double v = grid.stress[i + grid.x.size() * surface].von_mises();
+    if (v > top.von_mises) top = {v, grid.x[i], grid.z[surface]};
+  }
+  starts.push_back(top);
+  return starts;
+}
+
+template <class F> StressPeak refined_peak(const F &vm, const StressField &grid, double half_width)
+{
+  const auto [lo, hi] = std::minmax_element(grid.x.begin(), grid.x.end());
+  double step = half_width;
+  if (grid.x.size() > 1) step = (*hi - *lo) / static_cast<double>(grid.x.size() - 1);
+  const StressPeak found = compass_peak(vm, peak_starts(grid, half_width), std::min(*lo, -half_width),
+                                        std::max(*hi, half_width), step, 1e-9 * half_width);
+  const StressPeak on_grid = grid.peak_von_mises();
+  return found.von_mises > on_grid.von_mises ? found : on_grid;
+}
+
+}  // namespace
+
+StressPeak hamilton_peak_von_mises(const SlidingHertzSphere &c, const StressField &grid, double y)
+{
+  c.validate();
+  require_grid(grid.x, "x");
+  require_grid(grid.z, "depth");
+  return refined_peak([&](double x, double z) { return hamilton_stress(c, x, y, z).von_mises(); }, grid,
+                      c.contact_radius);
+}
+
+StressPeak mcewen_peak_von_mises(const SlidingHertzLine &c, const StressField &grid)
+{
+  c.validate();
+  require_grid(grid.x, "x");
+  require_grid(grid.z, "depth");
+  return refined_peak([&](double x, double z) { return mcewen_stress(c, x, z).von_mises(); }, grid, c.half_width);
+}
+
 StressField axisymmetric_section(const std::vector<double> &ring_pressure, double ring_width, double mu, double nu,
                                  double half_size, int n, const std::vector<double> &z)
 {

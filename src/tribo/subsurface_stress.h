@@ -143,6 +143,15 @@ std::vector<double> cell_centres(double lo, double hi, int n);
 StressField hamilton_field(const SlidingHertzSphere &contact, const std::vector<double> &x,
                            const std::vector<double> &z, double y = 0.0);
 StressField mcewen_field(const SlidingHertzLine &contact, const std::vector<double> &x, const std::vector<double> &z);
+
+// The largest von Mises stress of the closed form on the section, not only at the grid's points: with friction
+// the maximum can be a cusp on the surface at the trailing edge of the contact (x = -a for mu > 0, z = 0), which
+// a grid misses by several per cent. Candidates: the grid's largest point, its largest surface point and both
+// contact edges on the surface (x = +-a, z = 0, evaluated exactly); each is refined by a compass search in
+// (x, z) (z >= 0, x within the grid) down to 1e-9 a. `grid` is the closed form's field on that section
+// (hamilton_field / mcewen_field with this contact); the result is >= grid.peak_von_mises().
+StressPeak hamilton_peak_von_mises(const SlidingHertzSphere &contact, const StressField &grid, double y = 0.0);
+StressPeak mcewen_peak_von_mises(const SlidingHertzLine &contact, const StressField &grid);
 // Tier 2 on a section. line_traction_field: one pass per strip edge (O(edges x points)).
 StressField line_traction_field(const LineTraction &traction, double poisson_ratio, const std::vector<double> &x,
                                 const std::vector<double> &z);

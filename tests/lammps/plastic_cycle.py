@@ -9,7 +9,12 @@ against the published closed forms coded here independently of the C++ kernels (
 The asperity keeps its largest interference under the flat (fix runin/wall), so its summit, lowered by
 omega_res, is explained by its own history and no elastic flat-punch reload applies.
 
-  plastic_cycle.py --lmp LMP --workdir DIR [--normal hertz]
+--host pair runs the same summit as two asperities of radius 2R (R* = R) in pair runin/asperity (deck
+in.pair_plastic_cycle): they separate at the end of the unloading, so the reload is a new contact without
+history on flattened summits. It must follow the same curves to 1e-9, and the same force-interference curve as
+the wall's run row by row (one reload physics for both hosts; doc/elastic_plastic_contact.md, "Reloading").
+
+  plastic_cycle.py --lmp LMP --workdir DIR [--normal hertz] [--host wall|pair]
 """
 import argparse
 import math
@@ -20,6 +25,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps, thermo_blocks  # noqa: E402
 
 DECK = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.wall_plastic_cycle")
+PAIR_DECK = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.pair_plastic_cycle")
 # the deck's values: R, E*, S_y and nu of the yielding steel asperity, first depth, reload factor, steps per leg
 R, E_STAR, S_Y, NU = 2.0e-5, 1.092e11, 350.0e6, 0.29
 DEPTH, RELOAD, NSTEPS = 1.3e-8, 1.5, 400
@@ -75,11 +81,35 @@ def main():
     parser.add_argument("--lmp", required=True)
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--normal", default="elastic/plastic", choices=("elastic/plastic", "hertz"))
+    parser.add_argument("--host", default="wall", choices=("wall", "pair"))
+    parser.add_argument("--omega-max", type=float, default=None,
+                        help="first loading to this omega* = omega_max / omega_c (default: the decks' depth)")
     args = parser.parse_args()
     fresh_dir(args.workdir)
-    log = run_lammps(args, DECK, {"normal": args.normal})
+    global DEPTH
+    if args.omega_max is not None:
+        DEPTH = args.omega_max * critical()[1]
+    depth = {"depth": repr(DEPTH)}
+    log = run_lammps(args, DECK, {"normal": args.normal, **depth}, log="log.wall")
     rows = thermo_blocks(log)[0]
     _, omega_c, _ = critical()
+    if args.host == "pair":
+        wall = rows
+        rows = []
+        for row in thermo_blocks(run_lammps(args, PAIR_DECK, depth, log="log.pair"))[0]:
+            # the wall's columns: force, wall position (omega = R - position), summit drop, flat
+            rows.append({"Step": row["Step"], "f_wall[3]": row["v_fz2"], "f_wall[4]": R - row["v_omega"],
+                         "v_drop": row["v_drop"], "v_flat": None})
+        if len(rows) != len(wall):
+            fail(f"pair run has {len(rows)} rows, the wall's {len(wall)}")
+        scale = jackson_green(DEPTH)
+        worst = 0.0
+        for p, w in zip(rows, wall):
+            check(f"pair vs wall interference at step {p['Step']:.0f}", R - p["f_wall[4]"], R - w["f_wall[4]"],
+                  scale=DEPTH)
+            check(f"pair vs wall force at step {p['Step']:.0f}", p["f_wall[3]"], w["f_wall[3]"], scale=scale)
+            worst = max(worst, abs(p["f_wall[3]"] - w["f_wall[3]"]) / scale)
+        print(f"pair and wall: {len(rows)} rows, largest force difference {worst:.3e} F(omega_max)")
 
     if args.normal == "hertz":
         for row in rows:
@@ -113,7 +143,8 @@ def main():
         if drop == 0.0:    # first row after the deepest point: the summit keeps the EKK residual
             drop = residual(omega_max)
             check("summit drop after loading vs EKK residual interference", row["v_drop"], drop)
-            check("flat radius of the flattened summit", row["v_flat"], math.sqrt(2.0 * R * drop - drop * drop))
+            if row["v_flat"] is not None:
+                check("flat radius of the flattened summit", row["v_flat"], math.sqrt(2.0 * R * drop - drop * drop))
             print(f"loading to omega_max = {omega_max:.4e} m = {omega_max / omega_c:.2f} omega_c: "
                   f"F_max {jackson_green(omega_max):.5e} N, residual {drop:.4e} m "
                   f"({drop / omega_max:.4f} omega_max)")

@@ -89,6 +89,26 @@ TEST(WornAsperity, WearFlattensAndTransferRefills)
   EXPECT_EQ(grown.flat_radius, 0.0);
 }
 
+// The part of a summit's drop that plastic flattening left: all of it for a summit that was only flattened
+// (the drop recovered from the flattened volume), the volume share for a summit also worn, none without
+// flattening or drop.
+TEST(WornAsperity, FlattenedPartOfTheDrop)
+{
+  const double R = 2e-5, pi = 3.14159265358979323846;
+  const TruncatedSphere sphere(R);
+  for (double h : {1e-10, 3e-8, 1e-6, 0.5 * R}) {
+    const double flattened = pi * h * h * (3.0 * R - h) / 3.0;
+    const double drop = sphere.cap_height(flattened);
+    EXPECT_NEAR(flattened_part_of_drop(R, drop, flattened), drop, 1e-14 * drop) << h;
+    // worn by as much again: the flattened share of the total cap
+    const double total = sphere.cap_height(2.0 * flattened);
+    EXPECT_NEAR(flattened_part_of_drop(R, total, flattened), 0.5 * total, 1e-12 * total) << h;
+  }
+  EXPECT_EQ(flattened_part_of_drop(R, 0.0, 1e-20), 0.0);
+  EXPECT_EQ(flattened_part_of_drop(R, 1e-8, 0.0), 0.0);
+  EXPECT_EQ(flattened_part_of_drop(R, -1e-9, 1e-20), 0.0);
+}
+
 TEST(FlatHertzNormal, ZeroFlatIsHertz)
 {
   const double E = 4.8e10, R = 5e-7;

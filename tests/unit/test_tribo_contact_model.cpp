@@ -149,6 +149,75 @@ TEST(ContactModelElasticPlastic, CachedHistoryPathEqualsTheKernel)
   EXPECT_EQ(checked, 600);
 }
 
+// Reloading a summit that plastic flattening lowered is one physics for every host: fix runin/wall keeps the
+// plastic history of its asperity (omega_max and the EKK curve), pair runin/asperity starts a new contact of the
+// same summits without it and passes the flattened drop. Loaded to omega* = 95, unloaded until it opens (the
+// summits sink to the EKK residual interference), then reloaded to 120 omega_c: both give the same force and
+// contact radius to 1e-9, on the EKK unloading curve below omega_max and the JG curve beyond. The seeded
+// omega_max is the one that made the flat (EKK residual inverted, 1e-12). A worn flat (no flattened drop) still
+// reloads by Sneddon's flat punch + Hertz.
+TEST(ContactModelElasticPlastic, ReloadOfAFlattenedSummitIsTheSameWithOrWithoutKeptHistory)
+{
+  const auto choice = choice_of("elastic/plastic", "coulomb");
+  const tribo::ContactParameters p = steel();
+  const tribo::ContactModel model(choice, tribo::contact_coefficients(choice, p), {});
+  const double R = 2e-5;
+  const tribo::JacksonGreen curve(p.effective_modulus, R, p.yield_strength, p.poisson_ratio);
+  const double omega_c = curve.critical_interference();
+  double kept[tribo::CONTACT_HISTORY_SIZE] = {0.0};
+  double drop = 0.0, omega_max = 0.0;
+  auto geometry = [&](double omega) {
+    tribo::ContactGeometry g;
+    g.overlap = omega - drop;
+    g.summit_drop = drop;
+    g.flat_radius = drop > 0.0 ? std::sqrt(2.0 * R * drop - drop * drop) : 0.0;
+    g.effective_radius = R;
+    g.effective_mass = 1.0;
+    g.normal[2] = 1.0;
+    return g;
+  };
+  // load to 95 omega_c and unload to the residual: the summit sinks by the residual increments
+  for (int k = 1; k <= 400; ++k) {
+    const double omega = (k <= 200 ? 95.0 * k / 200.0 : 95.0 * (400 - k) / 200.0) * omega_c;
+    if (omega <= drop) break;
+    const tribo::ContactResult r = model.evaluate<1, 0, 0>(geometry(omega), kept, 1e-9, true);
+    drop += r.normal.residual_increment;
+    omega_max = std::max(omega_max, omega);
+  }
+  const double residual = tribo::ElasticPlasticUnloading::residual_ratio(95.0) * 95.0 * omega_c;
+  ASSERT_NEAR(drop, residual, 1e-12 * residual);
+  ASSERT_NEAR(kept[tribo::HISTORY_MAX_OVERLAP], 95.0 * omega_c, 1e-12 * omega_c);
+  double fresh[tribo::CONTACT_HISTORY_SIZE] = {0.0};    // the pair: the summits separated, the history is gone
+  const double scale = curve.force(95.0 * omega_c);
+  int ekk = 0, plastic = 0;
+  for (int k = 1; k <= 300; ++k) {
+    const double omega = drop + (120.0 * omega_c - drop) * k / 300.0;
+    tribo::ContactGeometry wall = geometry(omega), pair = geometry(omega);
+    wall.flattened_drop = 0.0;    // the wall's history explains the drop (a host sets it only without history)
+    if (!(fresh[tribo::HISTORY_MAX_OVERLAP] > 0.0)) pair.flattened_drop = drop;
+    const tribo::ContactResult a = model.evaluate<1, 0, 0>(wall, kept, 1e-9, true);
+    const tribo::ContactResult b = model.evaluate<1, 0, 0>(pair, fresh, 1e-9, true);
+    if (k == 1) EXPECT_NEAR(fresh[tribo::HISTORY_MAX_OVERLAP], 95.0 * omega_c, 1e-12 * 95.0 * omega_c);
+    EXPECT_NEAR(b.normal.force, a.normal.force, 1e-9 * std::max(a.normal.force, 1e-3 * scale)) << omega / omega_c;
+    EXPECT_NEAR(b.normal.contact_radius, a.normal.contact_radius, 1e-9 * std::max(a.normal.contact_radius, 1e-3 * R))
+        << omega / omega_c;
+    EXPECT_NEAR(b.normal.residual_increment, a.normal.residual_increment, 1e-9 * residual) << omega / omega_c;
+    drop += a.normal.residual_increment;
+    (omega <= omega_max ? ekk : plastic) += 1;
+    if (omega <= omega_max) {
+      const double want = tribo::ElasticPlasticUnloading(curve, omega_max).force(omega);
+      EXPECT_NEAR(b.normal.force, want, 1e-9 * scale) << omega / omega_c;
+    }
+  }
+  EXPECT_GT(ekk, 100);
+  EXPECT_GT(plastic, 50);
+  // the inverse of the residual ratio, over the range of the fits and beyond
+  for (double x : {1.001, 1.5, 1.9, 10.0, 95.0, 110.0, 1000.0, 1e5}) {
+    const double d = tribo::ElasticPlasticUnloading::residual_ratio(x) * x;
+    EXPECT_NEAR(tribo::ElasticPlasticUnloading::max_interference_of_residual(d), x, 1e-12 * x) << x;
+  }
+}
+
 // A worn flat reloaded elastically (Sneddon) touches the counterface over pi a^2 at any load; its adhesion area
 // is that of its plastic micro-contacts, F / (2.84 S_y), up to pi a^2. An intact sphere keeps pi a^2 (JG).
 TEST(ContactModelElasticPlastic, WornFlatCarriesItsLoadOnPlasticMicroContacts)

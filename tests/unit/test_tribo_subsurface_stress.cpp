@@ -204,6 +204,83 @@ TEST(SubsurfaceStress, HamiltonSlidingMaximumMovesToTheTrailingEdge)
   EXPECT_LT(surface_max(0.25), subsurface_max(0.25).von_mises);
 }
 
+// Brute-force maximum of vm(x, z) on the section [-1.5, 1.5] x [0, 1.5] (units of a or b): a 0.01 mesh, then a
+// 0.0002 mesh over +-0.02 around its best point.
+StressPeak dense_maximum(const std::function<double(double, double)> &vm)
+{
+  StressPeak best;
+  for (int i = 0; i <= 300; ++i)
+    for (int k = 0; k <= 150; ++k) {
+      const double x = -1.5 + 0.01 * i, z = 0.01 * k, v = vm(x, z);
+      if (v > best.von_mises) best = {v, x, z};
+    }
+  const StressPeak coarse = best;
+  for (int i = -100; i <= 100; ++i)
+    for (int k = -100; k <= 100; ++k) {
+      const double x = coarse.x + 0.0002 * i, z = coarse.z + 0.0002 * k;
+      if (z < 0.0) continue;
+      const double v = vm(x, z);
+      if (v > best.von_mises) best = {v, x, z};
+    }
+  return best;
+}
+
+// The reported peak is the closed form's maximum, not the grid's: for mu = 0.3-0.7 the von Mises maximum is a
+// cusp on the surface at the trailing edge (x = -a, z = 0), between the points of the pin's 64 x 64 grid. There
+// the surface stresses are finite and follow from Hamilton's equations at r = a, z = 0 (S = A = 0, M = N = 0,
+// phi = pi/2; Hamilton & Goodman 1966 for s_xx): s_xx = p0 [(1 - 2nu)/3 + (4 + nu) pi mu / 8],
+// s_yy = p0 [-(1 - 2nu)/3 + 3 nu pi mu / 8], the rest zero. Reference: the larger of that closed form and a
+// brute-force search of the closed form (0.01 a mesh, then 0.0002 a around its best point); the peak must be
+// within 1e-4 of it (1 % was asked), and never below the grid's. At nu = 0.3 the edge holds the maximum for
+// mu = 0.5 and 0.7 (the grid alone: 3.5 % and 0.75 % low); at 0.3 it lies below the surface, at 0.9 on the
+// surface inside the contact (x = -0.34 a).
+TEST(SubsurfaceStress, HamiltonPeakIncludesTheTrailingEdgeCusp)
+{
+  const double nu = 0.3;
+  const std::vector<double> x = cell_centres(-1.5, 1.5, 64), z = uniform_points(0.0, 1.5, 64);
+  for (double mu : {0.0, 0.3, 0.5, 0.7, 0.9}) {
+    const SlidingHertzSphere c{1.0, 1.0, nu, mu};
+    const double sxx = (1.0 - 2.0 * nu) / 3.0 + (4.0 + nu) * kPi * mu / 8.0;
+    const double syy = -(1.0 - 2.0 * nu) / 3.0 + 3.0 * nu * kPi * mu / 8.0;
+    const double edge = std::sqrt(sxx * sxx + syy * syy - sxx * syy);
+    EXPECT_NEAR(hamilton_stress(c, -1.0, 0.0, 0.0).von_mises(), edge, 1e-6) << "mu " << mu;
+    const double dense =
+        dense_maximum([&](double px, double pz) { return hamilton_stress(c, px, 0.0, pz).von_mises(); }).von_mises;
+    const double reference = std::max(edge, dense);
+    const StressField field = hamilton_field(c, x, z);
+    const StressPeak grid = field.peak_von_mises(), peak = hamilton_peak_von_mises(c, field);
+    std::cout << "Hamilton nu = 0.3, mu = " << mu << ": trailing edge " << edge << " p0, dense search " << dense
+              << " p0; grid peak " << grid.von_mises << " p0 (" << (grid.von_mises / reference - 1.0) * 100.0
+              << " %), refined " << peak.von_mises << " p0 at (" << peak.x << ", " << peak.z << ") a ("
+              << (peak.von_mises / reference - 1.0) * 100.0 << " %)\n";
+    EXPECT_NEAR(peak.von_mises / reference, 1.0, 1e-4) << "mu " << mu;
+    EXPECT_GE(peak.von_mises, grid.von_mises);
+    if (mu == 0.5 || mu == 0.7) {    // the trailing-edge cusp
+      EXPECT_GE(edge, dense);
+      EXPECT_NEAR(peak.x, -1.0, 1e-6) << "mu " << mu;
+      EXPECT_NEAR(peak.z, 0.0, 1e-12) << "mu " << mu;
+    }
+  }
+}
+
+// The same for McEwen's line contact: the refined peak against a brute-force search of the closed form.
+TEST(SubsurfaceStress, McEwenPeakIsTheClosedFormMaximum)
+{
+  const double nu = 0.3;
+  const std::vector<double> x = cell_centres(-1.5, 1.5, 48), z = uniform_points(0.0, 1.5, 48);
+  for (double mu : {0.0, 0.3, 0.5, 0.7, 0.9}) {
+    const SlidingHertzLine c{1.0, 1.0, nu, mu};
+    const double dense = dense_maximum([&](double px, double pz) { return mcewen_stress(c, px, pz).von_mises(); }).von_mises;
+    const StressField field = mcewen_field(c, x, z);
+    const StressPeak grid = field.peak_von_mises(), peak = mcewen_peak_von_mises(c, field);
+    std::cout << "McEwen nu = 0.3, mu = " << mu << ": dense search " << dense << " p0; grid peak " << grid.von_mises
+              << " p0 (" << (grid.von_mises / dense - 1.0) * 100.0 << " %), refined " << peak.von_mises << " p0 at ("
+              << peak.x << ", " << peak.z << ") b (" << (peak.von_mises / dense - 1.0) * 100.0 << " %)\n";
+    EXPECT_NEAR(peak.von_mises / dense, 1.0, 1e-4) << "mu " << mu;
+    EXPECT_GE(peak.von_mises, grid.von_mises);
+  }
+}
+
 // Verification item 3: the influence-function tier on the Hertz pressure against Hamilton, within 2 % of p0,
 // for every component on a section through the contact and for the peak von Mises stress and its place. The
 // exception is the surface within one patch of the contact edge, where the 64 piecewise-constant patches cannot
