@@ -408,6 +408,9 @@ HydroJournalResult solve_journal_bearing(const HydroJournalBearing &b, const tri
   const int nx = s.nx, ny = s.ny;
   const double dth = 2.0 * kPi / nx;
   double fx = 0.0, fy = 0.0, ax = 0.0, ay = 0.0, asperity_normal = 0.0, shear = 0.0, cav_area = 0.0;
+  std::vector<double> p_asperity(nx, 0.0);   // the gap depends on theta only
+  if (contact)
+    for (int i = 0; i < nx; ++i) p_asperity[i] = contact->pressure(s.h[s.index(i, 0)]);
   for (int j = 0; j < ny; ++j) {
     const double wy = (j == 0 || j == ny - 1) ? 0.5 : 1.0;
     for (int i = 0; i < nx; ++i) {
@@ -422,7 +425,7 @@ HydroJournalResult solve_journal_bearing(const HydroJournalBearing &b, const tri
       shear += face_shear(s, sol, i, j, fill_row) * area;
       if (sol.fill[s.index(i, fill_row)] < 1.0) cav_area += area;
       if (contact) {
-        const double pa = contact->pressure(s.h[k]);
+        const double pa = p_asperity[i];
         ax += pa * std::cos(th) * area;
         ay += pa * std::sin(th) * area;
         asperity_normal += pa * area;
@@ -440,6 +443,12 @@ HydroJournalResult solve_journal_bearing(const HydroJournalBearing &b, const tri
   r.friction_force = shear + b.boundary_friction * asperity_normal;
   r.friction_torque = r.friction_force * b.radius;
   const double total = std::hypot(fx + ax, fy + ay);
+  r.total_load = total;
+  double film_normal = 0.0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      film_normal += ((j == 0 || j == ny - 1) ? 0.5 : 1.0) * s.dx * s.dy * sol.pressure[s.index(i, j)];
+  r.asperity_share = asperity_normal > 0.0 ? asperity_normal / (asperity_normal + film_normal) : 0.0;
   r.friction_coefficient = total > 0.0 ? r.friction_force / total : 0.0;
   r.cavitated_fraction = cav_area / (2.0 * kPi * b.radius * b.length);
 

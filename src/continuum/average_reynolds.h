@@ -120,7 +120,9 @@ struct HydroJournalResult {
   double cavitated_fraction = 0.0;   // area share with theta < 1
   double rupture_angle = 0.0;     // rad, first cavitated node at mid-length after the groove
   double reformation_angle = 0.0; // rad, last cavitated node at mid-length before the groove
-  double asperity_load = 0.0;     // N, Greenwood-Tripp (magnitude), when a contact is given
+  double asperity_load = 0.0;     // N, Greenwood-Tripp resultant (magnitude), when a contact is given
+  double total_load = 0.0;        // N, resultant of film and asperity pressure
+  double asperity_share = 0.0;    // asperity normal force / (film + asperity normal force), integrated |p|
   double peak_pressure = 0.0;     // Pa
 };
 

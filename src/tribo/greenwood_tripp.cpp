@@ -1,10 +1,10 @@
 #include "tribo/greenwood_tripp.h"
 
 #include "tribo/contact.h"
-#include "tribo/greenwood_williamson.h"   // gaussian_tail_moment
 
 #include <boost/math/tools/roots.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -20,6 +20,32 @@ void require_positive(double value, const char *name)
     throw InvalidCoefficient(std::string(name) + " must be > 0 and finite, got " + std::to_string(value));
 }
 
+// F_n(H) = int_0^T 2 t^(2n+1) phi(H + t^2) dt (s - H = t^2 makes the integrand smooth at the lower end),
+// composite 8-point Gauss-Legendre on 24 panels up to s = max(H, 0) + 12 (phi(12) / phi(0) < 1e-31).
+// Relative accuracy ~1e-13 against an independent exp-sinh quadrature for -3 <= H <= 8 (unit test); about
+// 8x cheaper than gaussian_tail_moment, which matters for a pressure evaluated at every grid node.
+double tail_moment(double n, double H)
+{
+  static constexpr double nodes[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                      0.9602898564975363};
+  static constexpr double weights[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                        0.1012285362903763};
+  constexpr int panels = 24;
+  const double t_max = std::sqrt(std::max(H, 0.0) + 12.0 - H);
+  const double w = t_max / panels;
+  double sum = 0.0;
+  for (int p = 0; p < panels; ++p) {
+    const double centre = (p + 0.5) * w;
+    for (int k = 0; k < 4; ++k)
+      for (const double sign : {-1.0, 1.0}) {
+        const double x = centre + sign * 0.5 * w * nodes[k];
+        const double s = H + x * x;
+        sum += weights[k] * 2.0 * std::pow(x, 2.0 * n + 1.0) * std::exp(-0.5 * s * s);
+      }
+  }
+  return 0.5 * w * sum / std::sqrt(2.0 * kPi);
+}
+
 }    // namespace
 
 double greenwood_tripp_f(double n, double H)
@@ -32,7 +58,7 @@ double greenwood_tripp_f(double n, double H)
   if (n == 1.0) return phi - H * q;
   // F_2 = (1 + H^2) Q - H phi cancels for large H; there the quadrature is the accurate one
   if (n == 2.0 && H < 3.0) return (1.0 + H * H) * q - H * phi;
-  return gaussian_tail_moment(n, H, 1.0);
+  return tail_moment(n, H);
 }
 
 GreenwoodTripp::GreenwoodTripp(double summit_density, double summit_radius, double sigma,
@@ -70,20 +96,20 @@ const char *to_string(LoadShareStatus status)
 }
 
 LoadShare solve_load_share(double load, const std::function<double(double)> &film_load,
-                           const GreenwoodTripp &contact, double nominal_area, double h_min, double h_max,
-                           double rel_tol, int max_iterations)
+                           const std::function<double(double)> &asperity_load, double sigma, double h_min,
+                           double h_max, double rel_tol, int max_iterations)
 {
   require_positive(load, "load");
-  require_positive(nominal_area, "nominal_area");
+  require_positive(sigma, "sigma");
   if (!(h_max > h_min) || !std::isfinite(h_min) || !std::isfinite(h_max))
     throw InvalidCoefficient("h_min, h_max: the film bracket needs h_min < h_max");
   LoadShare out;
-  auto excess = [&](double h) { return film_load(h) + contact.load(h, nominal_area) - load; };
+  auto excess = [&](double h) { return film_load(h) + asperity_load(h) - load; };
   auto fill = [&](double h) {
     out.h = h;
-    out.film_parameter = h / contact.sigma();
+    out.film_parameter = h / sigma;
     out.film_load = film_load(h);
-    out.asperity_load = contact.load(h, nominal_area);
+    out.asperity_load = asperity_load(h);
     out.asperity_fraction = out.asperity_load / load;
   };
   const double f_lo = excess(h_min), f_hi = excess(h_max);
@@ -99,12 +125,24 @@ LoadShare solve_load_share(double load, const std::function<double(double)> &fil
   }
   std::uintmax_t iterations = static_cast<std::uintmax_t>(max_iterations);
   const double abs_tol = rel_tol * load;
-  auto tol = [&](double a, double b) { return std::abs(excess(0.5 * (a + b))) <= abs_tol || std::abs(b - a) <= 1e-15 * std::abs(b); };
+  auto tol = [&](double a, double b) {
+    return std::abs(excess(0.5 * (a + b))) <= abs_tol || std::abs(b - a) <= 1e-15 * std::abs(b);
+  };
   const auto r = boost::math::tools::toms748_solve(excess, h_min, h_max, f_lo, f_hi, tol, iterations);
   fill(0.5 * (r.first + r.second));
   out.iterations = static_cast<int>(iterations);
   out.status = std::abs(excess(out.h)) <= abs_tol ? LoadShareStatus::Converged : LoadShareStatus::NotConverged;
   return out;
+}
+
+LoadShare solve_load_share(double load, const std::function<double(double)> &film_load,
+                           const GreenwoodTripp &contact, double nominal_area, double h_min, double h_max,
+                           double rel_tol, int max_iterations)
+{
+  require_positive(nominal_area, "nominal_area");
+  return solve_load_share(
+      load, film_load, [&](double h) { return contact.load(h, nominal_area); }, contact.sigma(), h_min, h_max,
+      rel_tol, max_iterations);
 }
 
 }    // namespace runin::tribo

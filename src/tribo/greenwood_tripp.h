@@ -4,8 +4,8 @@
 //   p_a(h) = K E* F_5/2(H),   K = (16 sqrt 2 / 15) pi (eta beta sigma)^2 sqrt(sigma / beta)
 //   A_a / A = pi^2 (eta beta sigma)^2 F_2(H)
 // F_n(H) = (2 pi)^-1/2 int_H^inf (s - H)^n exp(-s^2 / 2) ds. F_0, F_1, F_2 in closed form (erfc, exp);
-// F_3/2, F_5/2 by the Gauss-Legendre quadrature in t = sqrt(s - H) of gaussian_tail_moment (relative
-// accuracy ~1e-12 for |H| <= 50). A load-sharing solve finds the film parameter at which the film and the
+// F_3/2, F_5/2 by composite Gauss-Legendre quadrature in t = sqrt(s - H) (relative accuracy ~1e-13,
+// checked against an independent quadrature in the unit test). A load-sharing solve finds the film parameter at which the film and the
 // asperities together carry a nominal load (Johnson, Greenwood & Poon 1972).
 #pragma once
 
@@ -55,5 +55,11 @@ struct LoadShare {
 LoadShare solve_load_share(double load, const std::function<double(double)> &film_load,
                            const GreenwoodTripp &contact, double nominal_area, double h_min, double h_max,
                            double rel_tol = 1e-10, int max_iterations = 200);
+
+// General form for a non-uniform gap (a journal bearing): h is the film's control gap (e.g. h_min),
+// asperity_load(h) the asperity load integrated over the surface; film_parameter = h / sigma.
+LoadShare solve_load_share(double load, const std::function<double(double)> &film_load,
+                           const std::function<double(double)> &asperity_load, double sigma, double h_min,
+                           double h_max, double rel_tol = 1e-10, int max_iterations = 200);
 
 }    // namespace runin::tribo

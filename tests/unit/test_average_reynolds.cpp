@@ -3,6 +3,7 @@
 // doc/mixed_lubrication.md; `ctest --test-dir build -R Reynolds -V` reproduces them.
 #include "continuum/average_reynolds.h"
 #include "tribo/contact.h"
+#include "tribo/greenwood_tripp.h"
 
 #include <gtest/gtest.h>
 
@@ -356,6 +357,47 @@ TEST(Reynolds, FlowFactorsReduceToClassicalWhenSmooth)
   ASSERT_TRUE(rough.film.ok());
   EXPECT_NE(rough.load, smooth.load);
   EXPECT_GT(rough.friction_force, smooth.friction_force);   // phi_f > 1
+}
+
+// Mixed lubrication: a rough journal (combined sigma 1 um, Greenwood-Tripp asperities) under a nominal load;
+// the load-sharing solve finds h_min = c (1 - eps) at which film and asperities carry it together.
+TEST(Reynolds, MixedJournalLoadShare)
+{
+  const double sigma = 1e-6;
+  const runin::tribo::GreenwoodTripp gt(2e9, 2e-5, sigma, 1.1e11);   // eta beta sigma = 0.04
+  HydroJournalBearing b = bearing(1.0, 0.5, 72, 13);
+  b.omega = 2.0;   // slow: the film alone cannot carry the load at a few sigma
+  b.roughness.sigma_moving = b.roughness.sigma_fixed = sigma / std::sqrt(2.0);
+  b.boundary_friction = 0.1;
+  double cached_h = -1.0;
+  HydroJournalResult cached;
+  auto at = [&](double h_min) {   // film and asperity loads of one solve
+    if (h_min != cached_h) {
+      HydroJournalBearing bb = b;
+      bb.eccentricity_ratio = 1.0 - h_min / b.clearance;
+      cached = solve_journal_bearing(bb, &gt);
+      cached_h = h_min;
+    }
+    return cached;
+  };
+  double last_fraction = -1.0, last_h = 1.0;
+  for (const double load : {2e3, 5e3, 1e4}) {
+    const auto share = runin::tribo::solve_load_share(
+        load, [&](double h) { const auto r = at(h); return r.total_load - r.asperity_load; },
+        [&](double h) { return at(h).asperity_load; }, sigma, 0.3 * sigma, 0.5 * b.clearance, 1e-8);
+    ASSERT_TRUE(share.ok()) << runin::tribo::to_string(share.status);
+    const HydroJournalResult r = at(share.h);
+    ASSERT_TRUE(r.film.ok());
+    std::printf("mixed journal W=%.0f N: h_min/sigma %.3f, asperity share %.3f, friction coefficient %.4f, "
+                "attitude %.2f deg\n", load, share.film_parameter, r.asperity_share, r.friction_coefficient,
+                r.attitude_angle * 180 / kPi);
+    EXPECT_NEAR(r.total_load, load, 1e-6 * load);
+    EXPECT_GT(r.asperity_share, last_fraction);   // more of a heavier load on the asperities
+    EXPECT_LT(share.h, last_h);
+    last_fraction = r.asperity_share;
+    last_h = share.h;
+  }
+  EXPECT_GT(last_fraction, 0.0);
 }
 
 TEST(Reynolds, BadInputNamesTheField)
