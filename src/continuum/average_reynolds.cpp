@@ -327,12 +327,14 @@ double shear_stress(const ReynoldsSystem &s, double h, double fill, double dpdx)
 // upwind one the Couette flux carries, so in a cavitated zone theta h_face is the transported content; on a
 // fixed boundary row (the bearing ends) it is the adjacent row's (fill_row): the prescribed boundary fill
 // only feeds inflow and would otherwise put a full-film strip of width dy/2 into a cavitated zone (O(dy)).
-double face_shear(const ReynoldsSystem &s, const ReynoldsSolution &sol, int i, int j, int fill_row)
+double face_shear(const ReynoldsSystem &s, const ReynoldsSolution &sol, int i, int j, int fill_row,
+                  bool full_film = false)
 {
   const int a = s.index(i, j), b = s.index((i + 1) % s.nx, j);
   const double h = 0.5 * (s.h[a] + s.h[b]);
   const int up = s.u_moving >= 0.0 ? i : (i + 1) % s.nx;
-  return shear_stress(s, h, sol.fill[s.index(up, fill_row)], (sol.pressure[b] - sol.pressure[a]) / s.dx);
+  const double fill = full_film ? 1.0 : sol.fill[s.index(up, fill_row)];
+  return shear_stress(s, h, fill, (sol.pressure[b] - sol.pressure[a]) / s.dx);
 }
 
 }    // namespace
@@ -422,7 +424,7 @@ HydroJournalResult solve_journal_bearing(const HydroJournalBearing &b, const tri
       fy += p * std::sin(th) * area;
       r.peak_pressure = std::max(r.peak_pressure, p);
       const int fill_row = std::clamp(j, 1, ny - 2);
-      shear += face_shear(s, sol, i, j, fill_row) * area;
+      shear += face_shear(s, sol, i, j, fill_row, b.full_film_shear_in_cavitation) * area;
       if (sol.fill[s.index(i, fill_row)] < 1.0) cav_area += area;
       if (contact) {
         const double pa = p_asperity[i];

@@ -99,6 +99,9 @@ struct HydroJournalBearing {
   int n_theta = 180, n_axial = 21;  // grid nodes (n_axial includes both ends)
   FilmRoughness roughness;
   double boundary_friction = 0.0;   // asperity friction coefficient (with a GreenwoodTripp contact)
+  // Couette shear in the cavitated zone: false: carried by the filled share theta (striated film);
+  // true: as if the film were full (Raimondi & Boyd's friction variable)
+  bool full_film_shear_in_cavitation = false;
 
   void validate() const;   // throws tribo::InvalidCoefficient naming the field
   ReynoldsSystem system() const;

@@ -190,24 +190,33 @@ TEST(Reynolds, OneDimensionalFilmMatchesSwiftStieber)
 }
 
 // Raimondi & Boyd (1958), full (360 deg) bearing, L/D = 1, Reynolds rupture condition, film starting at the
-// largest gap: Sommerfeld number S = (R/c)^2 mu N / P and attitude angle phi (deg).
+// largest gap: Sommerfeld number S = (R/c)^2 mu N / P, attitude angle phi (deg), friction variable (R/c) f
+// (their convention: full-film shear over the cavitated zone too) and side-flow ratio Q_s / Q.
 TEST(Reynolds, FiniteBearingMatchesRaimondiBoyd)
 {
   struct Row {
-    double eps, s, phi_deg;
+    double eps, s, phi_deg, rcf, qs_q;
   };
-  const Row table[] = {{0.2, 0.631, 74.02}, {0.4, 0.264, 63.10}, {0.6, 0.121, 50.58}, {0.8, 0.0446, 36.24}};
+  const Row table[] = {{0.2, 0.631, 74.02, 12.8, 0.280},
+                       {0.4, 0.264, 63.10, 5.79, 0.497},
+                       {0.6, 0.121, 50.58, 3.22, 0.680},
+                       {0.8, 0.0446, 36.24, 1.70, 0.842}};
   for (const Row &row : table) {
-    const HydroJournalBearing b = bearing(1.0, row.eps, 180, 41);
+    HydroJournalBearing b = bearing(1.0, row.eps, 180, 41);
+    b.full_film_shear_in_cavitation = true;
     const HydroJournalResult r = solve_journal_bearing(b);
     ASSERT_TRUE(r.film.ok());
     const double phi = r.attitude_angle * 180.0 / kPi;
+    const double rcf = b.radius / b.clearance * r.friction_coefficient, qs_q = r.side_leakage / r.inlet_flow;
     std::printf("Raimondi-Boyd L/D=1 eps=%.1f: S %.4f (table %.4f, err %.2f %%), attitude %.2f deg (table %.2f, "
-                "err %.2f %%)\n",
+                "err %.2f %%), (R/c)f %.3f (table %.2f, err %.2f %%), Qs/Q %.3f (table %.3f, err %.2f %%)\n",
                 row.eps, r.sommerfeld, row.s, 100.0 * rel(r.sommerfeld, row.s), phi, row.phi_deg,
-                100.0 * rel(phi, row.phi_deg));
+                100.0 * rel(phi, row.phi_deg), rcf, row.rcf, 100.0 * rel(rcf, row.rcf), qs_q, row.qs_q,
+                100.0 * rel(qs_q, row.qs_q));
     EXPECT_LT(rel(r.sommerfeld, row.s), 0.03) << "eps=" << row.eps;
     EXPECT_LT(rel(phi, row.phi_deg), 0.03) << "eps=" << row.eps;
+    EXPECT_LT(rel(rcf, row.rcf), 0.03) << "eps=" << row.eps;
+    EXPECT_LT(rel(qs_q, row.qs_q), 0.03) << "eps=" << row.eps;
   }
 }
 
@@ -227,22 +236,30 @@ TEST(Reynolds, LightlyLoadedBearingFollowsPetroff)
   }
 }
 
-// Inflow from the groove = return flow into it + side leakage (every cell balances its face fluxes).
+// Inflow from the groove = return flow into it + side leakage (every cell balances its face fluxes);
+// smooth, and rough with every flow factor active (unequal roughness: shear flow; gamma = 1/3).
 TEST(Reynolds, CavitatingFilmConservesMass)
 {
-  for (const double eps : {0.3, 0.6, 0.9}) {
-    HydroJournalBearing b = bearing(1.0, eps, 180, 31);
-    b.groove_angle = 30.0 * kPi / 180.0;
-    const HydroJournalResult r = solve_journal_bearing(b);
-    ASSERT_TRUE(r.film.ok());
-    const double imbalance = std::abs(r.inlet_flow - r.outlet_flow - r.side_leakage) / r.inlet_flow;
-    std::printf("mass eps=%.1f: in %.6e out %.6e side %.6e m^3/s, imbalance %.2e, cavitated %.3f\n", eps,
-                r.inlet_flow, r.outlet_flow, r.side_leakage, imbalance, r.cavitated_fraction);
-    EXPECT_LT(imbalance, 1e-6);
-    EXPECT_GT(r.cavitated_fraction, 0.1);
-    EXPECT_GT(r.side_leakage, 0.0);
-    EXPECT_LT(r.outlet_flow, r.inlet_flow);
-  }
+  for (const bool rough : {false, true})
+    for (const double eps : {0.3, 0.6, 0.9}) {
+      HydroJournalBearing b = bearing(1.0, eps, 180, 31);
+      b.groove_angle = 30.0 * kPi / 180.0;
+      if (rough) {
+        b.roughness.sigma_moving = 2e-6;
+        b.roughness.sigma_fixed = 0.5e-6;
+        b.roughness.gamma = 1.0 / 3.0;
+      }
+      const HydroJournalResult r = solve_journal_bearing(b);
+      ASSERT_TRUE(r.film.ok());
+      const double imbalance = std::abs(r.inlet_flow - r.outlet_flow - r.side_leakage) / r.inlet_flow;
+      std::printf("mass %s eps=%.1f: in %.6e out %.6e side %.6e m^3/s, imbalance %.2e, cavitated %.3f\n",
+                  rough ? "rough" : "smooth", eps, r.inlet_flow, r.outlet_flow, r.side_leakage, imbalance,
+                  r.cavitated_fraction);
+      EXPECT_LT(imbalance, 1e-6);
+      EXPECT_GT(r.cavitated_fraction, 0.1);
+      EXPECT_GT(r.side_leakage, 0.0);
+      EXPECT_LT(r.outlet_flow, r.inlet_flow);
+    }
 }
 
 // The rupture boundary (mid-length) converges with the grid toward the finest grid's.
