@@ -360,6 +360,49 @@ TEST(Reynolds, RingFaceCavitatesInTheDivergingPart)
   EXPECT_GT(r.load, 0.0);
 }
 
+// Starved inlet. A flooded K = 2 pad draws in U h*/2 with h* = 2 h_in h_out / (h_in + h_out) = 2/3 h_in, so it
+// is starved below an inlet fill of 2/3. At fill 0.6 the oil layer is 2.4 um; the film forms at the meniscus
+// x_m where the pad [x_m, b] draws exactly that: 2 h_m h_out / (h_m + h_out) = 2.4 um, h_m = 3 um, x_m = b/2.
+TEST(Reynolds, RingFaceStarvedInletCarriesLess)
+{
+  auto pad = [](int n, double fill) {
+    RingFace ring;
+    ring.width = 2e-3;
+    ring.viscosity = 0.01;
+    ring.speed = 5.0;
+    ring.min_gap = 2e-6;
+    ring.inlet_fill = fill;
+    ring.profile.resize(n);
+    for (int i = 0; i < n; ++i) ring.profile[i] = 2e-6 * (1.0 - double(i) / (n - 1));   // K = 2
+    return ring;
+  };
+  const int n = 201;
+  const RingFaceResult flooded = solve_ring_face(pad(n, 1.0));
+  const RingFace ring = pad(n, 0.6);
+  const RingFaceResult starved = solve_ring_face(ring);
+  const RingFaceResult fine = solve_ring_face(pad(2 * n - 1, 0.6));
+  ASSERT_TRUE(flooded.film.ok());
+  ASSERT_TRUE(starved.film.ok());
+  ASSERT_TRUE(fine.film.ok());
+  // the pad [b/2, b]: K' = 1.5, length b/2
+  const double half = 0.5 * ring.width, kk = 1.5;
+  const double w_ref = 6.0 * ring.viscosity * ring.speed * half * half / (4e-12 * (kk - 1.0) * (kk - 1.0)) *
+                       (std::log(kk) - 2.0 * (kk - 1.0) / (kk + 1.0));
+  const double w_extra = 2.0 * fine.load - starved.load;   // the meniscus is placed to one cell: first order
+  std::printf("inclined pad: flooded load %.6g N/m, starved (inlet fill 0.6) %.6g N/m (%d nodes), %.6g (%d), "
+              "extrapolated %.6g, closed form %.6g (err %.4f %%)\n",
+              flooded.load, starved.load, n, fine.load, 2 * n - 1, w_extra, w_ref, 100.0 * rel(w_extra, w_ref));
+  EXPECT_LT(rel(starved.load, w_ref), 0.03);
+  EXPECT_LT(rel(w_extra, w_ref), 1e-3);
+  EXPECT_LT(starved.load, 0.25 * flooded.load);
+  EXPECT_LT(starved.film.fill[1], 1.0);
+  EXPECT_NEAR(starved.inlet_flow, starved.outlet_flow, 1e-9 * starved.inlet_flow);
+  EXPECT_NEAR(starved.inlet_flow, 0.6 * 0.5 * ring.speed * 0.5 * (4e-6 + (4e-6 - 2e-6 / (n - 1))), 1e-15);
+  // full film from the meniscus at x = b/2 on
+  EXPECT_LT(starved.film.fill[n / 2 - 5], 1.0);
+  EXPECT_DOUBLE_EQ(starved.film.fill[n / 2 + 5], 1.0);
+}
+
 // Rough film: flow factors lower the load at small h/sigma; sigma = 0 is the classical equation.
 TEST(Reynolds, FlowFactorsReduceToClassicalWhenSmooth)
 {
@@ -450,4 +493,35 @@ TEST(Reynolds, BadInputNamesTheField)
   b.roughness.sigma_moving = 1e-7;
   b.roughness.gamma = 0.0;
   EXPECT_NE(message(b).find("gamma"), std::string::npos);
+
+  auto ring_message = [](RingFace r) {
+    try {
+      solve_ring_face(r);
+    } catch (const InvalidCoefficient &e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  RingFace ring;
+  ring.width = 2e-3;
+  ring.viscosity = 0.01;
+  ring.speed = 1.0;
+  ring.min_gap = 1e-6;
+  ring.profile.assign(11, 0.0);
+  EXPECT_EQ(ring_message(ring), "no exception");
+  RingFace r = ring;
+  r.min_gap = 0.0;   // the ring touches the liner
+  EXPECT_NE(ring_message(r).find("min_gap"), std::string::npos);
+  r = ring;
+  r.viscosity = 0.0;
+  EXPECT_NE(ring_message(r).find("viscosity"), std::string::npos);
+  r = ring;
+  r.width = -1.0;
+  EXPECT_NE(ring_message(r).find("width"), std::string::npos);
+  r = ring;
+  r.inlet_fill = 1.5;
+  EXPECT_NE(ring_message(r).find("inlet_fill"), std::string::npos);
+  r = ring;
+  r.roughness.sigma_moving = -1e-7;
+  EXPECT_NE(ring_message(r).find("sigma_moving"), std::string::npos);
 }
