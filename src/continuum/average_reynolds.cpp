@@ -187,7 +187,7 @@ ReynoldsSolution ReynoldsSolver::solve(const ReynoldsSystem &s, const std::optio
   std::vector<NodeState> state(n, NodeState::Full);
   for (int k = 0; k < n; ++k) {
     if (s.fixed[k]) state[k] = NodeState::Fixed;
-    else if (initial && (*initial)[k] < 0.0) state[k] = NodeState::Cavitated;
+    else if (initial && k < static_cast<int>(initial->size()) && (*initial)[k] < 0.0) state[k] = NodeState::Cavitated;
   }
   std::vector<double> rate(n, 0.0), cont(n, 0.0);
   for (int k = 0; k < n; ++k) {

@@ -68,12 +68,14 @@ class ReynoldsSolver {
  public:
   explicit ReynoldsSolver(int max_iterations = 200) : max_iterations_(max_iterations) {}
 
+  // initial: a start pattern, one value per node (< 0: start cavitated), e.g. the previous step's
+  // pressure - (1 - fill); default: full film everywhere.
   ReynoldsSolution solve(const ReynoldsSystem &system,
                          const std::optional<std::vector<double>> &initial = std::nullopt) const;
   ReynoldsStatus info() const { return status_; }
 
-  // Volume flux (m^3/s) through the face between node (i, j) and (i + 1, j) (periodic wrap) in +x,
-  // and between (i, j) and (i, j + 1) in +y.
+  // Volume flux (m^3/s; m^2/s per unit width when ny = 1) through the face between node (i, j) and
+  // (i + 1, j) in +x (i = nx - 1 wraps to 0: periodic systems only), and between (i, j) and (i, j + 1) in +y.
   static double flux_x(const ReynoldsSystem &s, const ReynoldsSolution &sol, int i, int j);
   static double flux_y(const ReynoldsSystem &s, const ReynoldsSolution &sol, int i, int j);
 
