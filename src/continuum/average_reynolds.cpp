@@ -38,7 +38,7 @@ struct FaceCoefficients {
 FaceCoefficients face_coefficients(const ReynoldsSystem &s, double h)
 {
   const FilmRoughness &r = s.roughness;
-  const double sigma = r.sigma();
+  const double sigma = r.averaged_sigma();
   const double u_m = 0.5 * s.u_moving, u_d = 0.5 * s.u_moving;
   const double hp = std::max(h, 0.0);
   const double h3 = hp * hp * hp / (12.0 * s.viscosity);
@@ -59,7 +59,7 @@ FaceCoefficients face_coefficients(const ReynoldsSystem &s, double h)
 // Couette content of a cell and its time derivative factor.
 double content(const ReynoldsSystem &s, double h)
 {
-  const double sigma = s.roughness.sigma();
+  const double sigma = s.roughness.averaged_sigma();
   if (sigma > 0.0 && s.roughness.contact_factor) return tribo::mean_gap(h, sigma);
   return std::max(h, 0.0);
 }
@@ -67,7 +67,7 @@ double content(const ReynoldsSystem &s, double h)
 double content_rate(const ReynoldsSystem &s, int k)
 {
   if (s.dhdt.empty()) return 0.0;
-  const double sigma = s.roughness.sigma();
+  const double sigma = s.roughness.averaged_sigma();
   const double dc = sigma > 0.0 && s.roughness.contact_factor ? tribo::contact_factor(s.h[k] / sigma) : 1.0;
   return dc * s.dhdt[k];
 }
@@ -126,6 +126,8 @@ double face_flux(const Face &f, const std::vector<double> &p, const std::vector<
 }    // namespace
 
 double FilmRoughness::sigma() const { return std::hypot(sigma_moving, sigma_fixed); }
+
+double FilmRoughness::averaged_sigma() const { return flow_factors ? sigma() : 0.0; }
 
 void FilmRoughness::validate() const
 {
@@ -311,7 +313,7 @@ namespace {
 double shear_stress(const ReynoldsSystem &s, double h, double fill, double dpdx)
 {
   const FilmRoughness &r = s.roughness;
-  const double sigma = r.sigma();
+  const double sigma = r.averaged_sigma();
   double f = 1.0, fp = 1.0;
   if (sigma > 0.0) {
     const double H = h / sigma;

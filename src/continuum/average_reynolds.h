@@ -25,8 +25,10 @@ struct FilmRoughness {
   double sigma_fixed = 0.0;    // m, rms of the stationary surface (surface 2)
   double gamma = 1.0;          // Peklenik number, both surfaces (Patir & Cheng's fits: [1/9, 9])
   bool contact_factor = true;  // Couette content h_T (mean gap) instead of h
+  bool flow_factors = true;    // false: classical Reynolds equation (sigma only for the asperity contact)
 
   double sigma() const;        // combined rms
+  double averaged_sigma() const;   // sigma if flow_factors, else 0: the roughness the film equation sees
   void validate() const;       // throws tribo::InvalidCoefficient naming the field
 };
 

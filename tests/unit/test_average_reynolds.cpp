@@ -451,6 +451,10 @@ TEST(Reynolds, FlowFactorsReduceToClassicalWhenSmooth)
   ASSERT_TRUE(rough.film.ok());
   EXPECT_NE(rough.load, smooth.load);
   EXPECT_GT(rough.friction_force, smooth.friction_force);   // phi_f > 1
+  b.roughness.flow_factors = false;   // flow factors switched off: the classical equation, bit for bit
+  const HydroJournalResult off = solve_journal_bearing(b);
+  EXPECT_EQ(off.load, smooth.load);
+  EXPECT_EQ(off.friction_force, smooth.friction_force);
 }
 
 // Mixed lubrication: a rough journal (combined sigma 1 um, Greenwood-Tripp asperities) under a nominal load;
