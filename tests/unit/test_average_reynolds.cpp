@@ -32,7 +32,7 @@ HydroJournalBearing bearing(double l_over_d, double eps, int n_theta, int n_axia
   return b;
 }
 
-// Infinitely short bearing (Ocvirk & DuBois 1953), half-Sommerfeld (pi) film:
+// Infinitely short bearing (Ocvirk 1952, NACA TN 2808), half-Sommerfeld (pi) film:
 //   W_r = mu U L^3 eps^2 / (c^2 (1 - eps^2)^2),  W_t = pi mu U L^3 eps / (4 c^2 (1 - eps^2)^1.5)
 void ocvirk(const HydroJournalBearing &b, double &w_r, double &w_t)
 {
@@ -189,9 +189,12 @@ TEST(Reynolds, OneDimensionalFilmMatchesSwiftStieber)
   }
 }
 
-// Raimondi & Boyd (1958), full (360 deg) bearing, L/D = 1, Reynolds rupture condition, film starting at the
-// largest gap: Sommerfeld number S = (R/c)^2 mu N / P, attitude angle phi (deg), friction variable (R/c) f
-// (their convention: full-film shear over the cavitated zone too) and side-flow ratio Q_s / Q.
+// Raimondi & Boyd (1958), "A solution for the finite journal bearing and its application to analysis and
+// design", ASLE Trans. 1; their table for the full (360 deg) bearing, l/d = 1, as reproduced in Shigley's
+// Mechanical Engineering Design ("dimensionless performance parameters for full journal bearings with side
+// flow"). Reynolds rupture condition, film starting at the largest gap: Sommerfeld number S = (R/c)^2 mu N / P,
+// attitude angle phi (deg), friction variable (R/c) f (their convention: full-film shear over the cavitated
+// zone too) and side-flow ratio Q_s / Q.
 TEST(Reynolds, FiniteBearingMatchesRaimondiBoyd)
 {
   struct Row {
