@@ -13,16 +13,16 @@ namespace {
 
 constexpr std::array<double, 7> kGamma = {1.0 / 9.0, 1.0 / 6.0, 1.0 / 3.0, 1.0, 3.0, 6.0, 9.0};
 
-// Patir & Cheng (1978) table 1: phi_x fit coefficients C, r.
+// Patir & Cheng (1978): phi_x fit coefficients C, r.
 constexpr std::array<double, 7> kPxC = {1.48, 1.38, 1.18, 0.90, 0.225, 0.520, 0.870};
 constexpr std::array<double, 7> kPxR = {0.42, 0.42, 0.42, 0.56, 1.5, 1.5, 1.5};
-// Patir & Cheng (1979) table 1: Phi_s fit coefficients A1, a1, a2, a3, A2.
+// Patir & Cheng (1979): Phi_s fit coefficients A1, a1, a2, a3, A2.
 constexpr std::array<double, 7> kSA1 = {2.046, 1.962, 1.858, 1.899, 1.560, 1.290, 1.011};
 constexpr std::array<double, 7> kSa1 = {1.12, 1.08, 1.01, 0.98, 0.85, 0.62, 0.54};
 constexpr std::array<double, 7> kSa2 = {0.78, 0.77, 0.76, 0.92, 1.13, 1.09, 1.07};
 constexpr std::array<double, 7> kSa3 = {0.03, 0.03, 0.03, 0.05, 0.08, 0.08, 0.08};
 constexpr std::array<double, 7> kSA2 = {1.856, 1.754, 1.561, 1.126, 0.556, 0.388, 0.295};
-// Patir & Cheng (1979) table 2: phi_fp (D, s) and phi_fs (A3, a4, a5, a6).
+// Patir & Cheng (1979): phi_fp (D, s) and phi_fs (A3, a4, a5, a6).
 constexpr std::array<double, 7> kFD = {1.51, 1.51, 1.47, 1.40, 0.98, 0.97, 0.73};
 constexpr std::array<double, 7> kFs = {0.52, 0.54, 0.58, 0.66, 0.79, 0.91, 0.91};
 constexpr std::array<double, 7> kFA3 = {14.1, 13.4, 12.3, 11.1, 9.8, 10.1, 8.7};
