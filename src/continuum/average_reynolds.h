@@ -120,7 +120,7 @@ struct HydroJournalResult {
   double sommerfeld = 0.0;        // (R/c)^2 mu N / P, N in rev/s, P = W / (L D)
   double friction_force = 0.0;    // N, on the journal surface (film shear + asperity friction)
   double friction_torque = 0.0;   // N m
-  double friction_coefficient = 0.0;   // friction_force / (load + asperity load)
+  double friction_coefficient = 0.0;   // friction_force / total_load
   double inlet_flow = 0.0;        // m^3/s, leaving the groove downstream
   double outlet_flow = 0.0;       // m^3/s, returning into the groove from upstream
   double side_leakage = 0.0;      // m^3/s, out of both ends
