@@ -389,8 +389,9 @@ int run_homogenise(const Options &o) {
   const double top = *std::max_element(c.acceleration.begin(), c.acceleration.end());
   if (top > 1.0 && deck_variable(deck_text, "accel_invariant") != "yes")
     throw InputError(fmt::format("{}: key 'grid.acceleration': {:g} > 1, but the deck {} is not acceleration-"
-                                 "invariant (it does not declare `variable accel_invariant index yes`); use acceleration = 1, or a "
-                                 "deck that is (--deck inputs/in.rve_wall, or deck = \"in.rve_wall\" in the case)",
+                                 "invariant (it does not declare `variable accel_invariant index yes`); use "
+                                 "acceleration = 1, or a deck that is (--deck inputs/in.rve_wall, or the case's "
+                                 "deck key)",
                                  c.path, top, deck.string()));
   const fs::path cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
   const CodeIdentity code{runin_version(), lmp, sha256_hex(file_bytes(lmp))};
