@@ -44,7 +44,7 @@ class CaseReader {
     for (const auto &[key, node] : root_) {
       const std::string name(key.str());
       if (!schema_.at("").count(name)) fail(name, "unknown key");
-      if (name == "title") continue;
+      if (name == "title" || !schema_.count(name)) continue;  // a top-level key, not a section
       const auto *table = node.as_table();
       if (!table) fail(name, "expected a table, got " + type_name(node));
       for (const auto &[sub, ignored] : *table) {

@@ -359,18 +359,22 @@ std::string portable_command_line(const std::string &command_line) {
 
 int run_homogenise(const Options &o) {
   const auto start = Clock::now();
-  const HomogeniseCase c = read_homogenise_case(o.case_path);
+  const HomogeniseCase c = read_homogenise_case(o.case_path, !o.deck.empty());
   if (o.np < 0) throw InputError("--np: must be positive");
-  // default: the rough-on-rough cell of the pipeline (the rough-on-flat in.rve_wall's friction does not run in)
-  const fs::path deck = fs::absolute(o.deck.empty() ? fs::path(RUNIN_SOURCE_DIR) / "inputs" / "in.rve_rough"
-                                                    : fs::path(o.deck));
+  // --deck, else the case's `deck`, else the rough-on-rough cell of the pipeline (the rough-on-flat in.rve_wall's
+  // friction does not run in)
+  const fs::path deck = fs::absolute(!o.deck.empty()          ? fs::path(o.deck)
+                                     : !c.deck_file.empty() ? fs::path(c.deck_file)
+                                                            : fs::path(RUNIN_SOURCE_DIR) / "inputs" / "in.rve_rough");
   std::error_code error;
   if (!fs::is_regular_file(deck, error)) throw InputError("--deck: not a file: " + deck.string());
   std::string lmp = o.lmp;
   if (lmp.empty()) {
     const fs::path beside = fs::read_symlink("/proc/self/exe", error).parent_path() / "lmp_runin";
     lmp = !error && access(beside.c_str(), X_OK) == 0 ? beside.string() : find_executable("lmp_runin");
-    if (lmp.empty()) throw std::runtime_error("cannot find lmp_runin beside runin or on PATH (use --lmp)");
+    if (lmp.empty())
+      throw InputError("--lmp: lmp_runin is neither beside runin nor on PATH; give --lmp PATH (LAMMPS with the "
+                       "RunIn styles)");
   } else {
     const std::string found = find_executable(lmp);
     if (found.empty()) throw InputError("--lmp: not an executable: " + lmp);
@@ -381,17 +385,31 @@ int run_homogenise(const Options &o) {
   if (!c.heights_file.empty() && deck_text.find("height_source") == std::string::npos)
     throw InputError(c.path + ": key 'surface.heights': the deck " + deck.string() +
                      " does not read a summit list (it has no height_source variable; inputs/in.rve_wall does)");
+  // accelerated wear is valid only in a cell whose law in h does not depend on it; the deck says so
+  const double top = *std::max_element(c.acceleration.begin(), c.acceleration.end());
+  if (top > 1.0 && deck_variable(deck_text, "accel_invariant") != "yes")
+    throw InputError(fmt::format("{}: key 'grid.acceleration': {:g} > 1, but the deck {} is not acceleration-"
+                                 "invariant (it does not declare `variable accel_invariant index yes`); use "
+                                 "acceleration = 1, or a deck that is (--deck inputs/in.rve_wall, or the case's "
+                                 "deck key)",
+                                 c.path, top, deck.string()));
   const fs::path cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
-  fs::create_directories(cache_dir, error);
-  if (error || !fs::is_directory(cache_dir))
-    throw std::runtime_error("cannot create the cache directory " + cache_dir.string() +
-                             (error ? ": " + error.message() : std::string()));
-
   const CodeIdentity code{runin_version(), lmp, sha256_hex(file_bytes(lmp))};
   const std::vector<Sample> samples = plan_samples(c, deck_text, code, cache_dir);
   std::vector<const Sample *> todo;
   for (const auto &s : samples)
     if (!s.complete()) todo.push_back(&s);
+  // the MPI launcher, before any sample starts (a fully cached rerun needs none)
+  if (!todo.empty() && find_executable(mpirun_program()).empty())
+    throw InputError(std::getenv("RUNIN_MPIRUN") && *std::getenv("RUNIN_MPIRUN")
+                         ? "RUNIN_MPIRUN: not an executable: " + mpirun_program() +
+                               "; set it to the MPI launcher (mpirun or mpiexec) or unset it"
+                         : "RUNIN_MPIRUN: mpirun is not on PATH; install an MPI (Open MPI, MPICH) or set RUNIN_MPIRUN "
+                           "to its launcher (e.g. mpiexec)");
+  fs::create_directories(cache_dir, error);
+  if (error || !fs::is_directory(cache_dir))
+    throw std::runtime_error("cannot create the cache directory " + cache_dir.string() +
+                             (error ? ": " + error.message() : std::string()));
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int np = static_cast<int>(std::min<std::size_t>(o.np > 0 ? o.np : cores, std::max<std::size_t>(1, todo.size())));
   fmt::print("runin homogenise: {}: {} pressures x {} seeds = {} samples of {} summits; {} cached in {}\n",
@@ -576,8 +594,8 @@ Subcommand add_homogenise_command(CLI::App &app) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--lmp", o->lmp, "LAMMPS executable with the RunIn styles (default: lmp_runin beside runin)");
   cmd->add_option("--deck", o->deck,
-                  "cell deck (default: inputs/in.rve_rough of the RunIn source tree, the rough-on-rough cell; "
-                  "inputs/in.rve_wall is the rough-on-flat one)");
+                  "cell deck (default: the case's `deck`, else inputs/in.rve_rough of the RunIn source tree, the "
+                  "rough-on-rough cell; inputs/in.rve_wall is the rough-on-flat one)");
   return {cmd, [o] {
             // the command line as run, for the provenance: /proc/self/cmdline (NUL-separated)
             std::ifstream in("/proc/self/cmdline", std::ios::binary);

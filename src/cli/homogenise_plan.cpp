@@ -19,7 +19,7 @@ namespace {
 
 const Schema &schema() {
   static const Schema s = {
-      {"", {"title", "material", "surface", "sliding", "grid"}},
+      {"", {"title", "deck", "material", "surface", "sliding", "grid"}},
       {"material", {"file", "rough", "counterface"}},
       {"surface", {"R", "sigma", "spacing", "nside", "heights"}},
       {"sliding", {"speed"}},
@@ -85,7 +85,7 @@ void check_summit_list(const CaseReader &reader, const fs::path &file, Homogenis
 
 long derived_seed(long j) { return 4711 + 7919 * j; }
 
-HomogeniseCase read_homogenise_case(const std::string &path) {
+HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   const toml::table root = parse_toml(path);
   CaseReader reader(path, root, schema());
   reader.reject_unknown_keys();
@@ -164,7 +164,24 @@ HomogeniseCase read_homogenise_case(const std::string &path) {
   c.nslide = reader.positive_integer("grid.nslide", c.nslide, 1000000000L);
   c.nout = reader.positive_integer("grid.nout", c.nout, 1000000000L);
   if (c.nout > c.nslide) reader.fail("grid.nout", fmt::format("must be at most grid.nslide = {}", c.nslide));
+
+  // the cell deck the case was written for (relative: beside the case file, as material.file); not looked up
+  // when --deck overrides it
+  const std::string deck = reader.text("deck", "");
+  if (reader.has("deck") && deck.empty()) reader.fail("deck", "must not be empty");
+  if (!deck.empty() && !deck_given)
+    c.deck_file = fs::absolute(find_case_file(reader, "deck", deck)).lexically_normal().string();
   return c;
+}
+
+std::string deck_variable(const std::string &deck_text, const std::string &name) {
+  std::istringstream in(deck_text);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string command, variable, style, value;
+    if (words >> command >> variable >> style >> value && command == "variable" && variable == name) return value;
+  }
+  return {};
 }
 
 std::string sha256_hex(const std::string &bytes) {

@@ -18,6 +18,7 @@ namespace runin::cli {
 
 struct HomogeniseCase {
   std::string path, title;
+  std::string deck_file;  // resolved `deck` key (beside the case file first); empty: runin's default (--deck wins)
   // [material]
   std::string material_file;  // resolved
   std::string rough, counterface;
@@ -40,10 +41,15 @@ struct HomogeniseCase {
 
 // Reads and validates CASE (TOML, or JSON when it ends in .json); unknown keys, missing required keys and impossible
 // values are InputError "<file>: key '<key>': <problem>" (exit 2).
-HomogeniseCase read_homogenise_case(const std::string &path);
+// deck_given: --deck overrides the case's `deck`, which is then checked as text but not looked up.
+HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given = false);
 
 // The j-th seed of every pressure (the same seeds at every pressure: common random numbers across the grid).
 long derived_seed(long j);
+
+// The value of `variable NAME <style> VALUE` in a deck's text (the first such line, comments stripped); empty if
+// the deck has none. How a deck declares what it supports (height_source, accel_invariant).
+std::string deck_variable(const std::string &deck_text, const std::string &name);
 
 std::string sha256_hex(const std::string &bytes);
 std::string file_bytes(const std::filesystem::path &path);  // throws std::runtime_error naming the file

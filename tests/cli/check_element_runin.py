@@ -6,7 +6,7 @@
 Runs inputs/{pin_on_disk,journal_bearing,piston_ring}_state_law.toml (the pipeline's cases) on the two shipped
 rough-on-rough steel laws: inputs/state_law_steel_rough.json (sigma = 0.2 um per body) and
 inputs/state_law_steel_rough_sigma04.json (0.4 um, the rougher initial surface); both built at physical wear by
-`runin homogenise inputs/homogenise_rough_{pipeline,sigma04}.toml --deck inputs/in.rve_rough` (doc/rve_cell.md).
+`runin homogenise inputs/homogenise_rough_{pipeline,sigma04}.toml` (doc/rve_cell.md).
 No friction is put in: the laws' mu_body comes from adhesion over the real area and the summits' ploughing.
 Asserted for every element (ring A for the pack):
   - friction falls from its peak: the last mu <= 0.75 x the peak (measured 0.55-0.62);
