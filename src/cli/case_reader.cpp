@@ -113,6 +113,9 @@ toml::table parse_json_case(const std::string &text, const std::string &path) {
 toml::table parse_toml(const std::string &path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a directory, not a case file");
+  if (!std::filesystem::exists(path, error))
+    throw InputError(path + ": no such case file (a relative path is taken from the current directory, " +
+                     std::filesystem::current_path(error).string() + ")");
   if (std::filesystem::path(path).extension() == ".json") {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open the case file");

@@ -348,7 +348,7 @@ int main(int argc, char **argv) {
   fit_cmd->add_option("--input", fit.input, "fix ave/time output file")->required();
   fit_cmd->add_option("--distance-column", fit.distance_column, "column with the sliding distance, e.g. v_slide")
       ->required();
-  fit_cmd->add_option("--mu-column", fit.mu_column, "column with the friction coefficient, e.g. c_fric[3]")
+  fit_cmd->add_option("--mu-column", fit.mu_column, "column with the friction coefficient, e.g. c_fric[16] (mu_body of compute runin/friction)")
       ->required();
   fit_cmd->add_option("--output", fit.output, "law file to write (JSON)")->required();
   fit_cmd->add_option("--distance-unit", fit.distance_unit, "unit of the distance column: m, mm, um, nm, angstrom")
