@@ -107,9 +107,11 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       } catch (const coupling::InputFormatError &e) {
         reader.fail("friction.law", e.what());
       }
-      state->policy = reader.choice("friction.out_of_range", {"error", "clamp"}, std::string("error")) == "clamp"
-                          ? coupling::OutOfRange::Clamp
-                          : coupling::OutOfRange::Error;
+      const std::string policy =
+          reader.choice("friction.out_of_range", {"error", "clamp", "archard"}, std::string("error"));
+      state->policy = policy == "clamp"     ? coupling::OutOfRange::Clamp
+                      : policy == "archard" ? coupling::OutOfRange::Archard
+                                            : coupling::OutOfRange::Error;
       if (reader.has("friction.mu_static")) state->mu_static = reader.non_negative("friction.mu_static");
       return SlidingFriction::state_law(std::move(state), alpha);
     }

@@ -56,7 +56,7 @@ SlidingFriction SlidingFriction::state_law(std::shared_ptr<StateLawFriction> sta
   require(state && state->law, "state law missing");
   SlidingFriction f(0.0, [held = state](double) { return held->held_kinetic; }, alpha,
                     "state law " + state->path + " per contact node (mu_eff pressure-weighted, out_of_range = " +
-                        (state->policy == coupling::OutOfRange::Clamp ? "clamp" : "error") + "), + " +
+                        coupling::to_string(state->policy) + "), + " +
                         format(alpha) + " V");
   f.state_law_ = std::move(state);
   return f;

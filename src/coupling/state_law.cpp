@@ -190,6 +190,20 @@ nlohmann::json StateLaw::to_json() const {
   return out;
 }
 
+const char *to_string(OutOfRange policy) {
+  switch (policy) {
+    case OutOfRange::Error: return "error";
+    case OutOfRange::Clamp: return "clamp";
+    case OutOfRange::Archard: return "archard";
+  }
+  return "?";
+}
+
+bool StateLaw::proportional_to_pressure(StateField field) {
+  return field == StateField::WearRate || field == StateField::CounterfaceWearRate ||
+         field == StateField::AreaFraction;
+}
+
 StateLaw::PressureSlice StateLaw::slice(double pressure, OutOfRange policy) const {
   if (!std::isfinite(pressure) || !(pressure > 0.0))
     throw std::out_of_range("state law: pressure " + format_number(pressure) + " Pa is not positive and finite");
@@ -200,6 +214,8 @@ StateLaw::PressureSlice StateLaw::slice(double pressure, OutOfRange policy) cons
       throw std::out_of_range("state law: pressure " + format_number(pressure) + " Pa outside the law's range [" +
                               format_number(pressure_.front()) + ", " + format_number(pressure_.back()) + "] Pa");
     slice.clamped = pressure < pressure_.front() ? -1 : 1;
+    if (policy == OutOfRange::Archard)
+      slice.proportional_scale = pressure / (slice.clamped < 0 ? pressure_.front() : pressure_.back());
     lp = std::clamp(lp, log_pressure_.front(), log_pressure_.back());
   }
   const auto np = log_pressure_.size();
@@ -226,6 +242,7 @@ StateLaw::Cell StateLaw::locate(const PressureSlice &slice, double worn_depth, R
   Cell cell;
   cell.ip = slice.ip;
   cell.wp = slice.wp;
+  cell.proportional_scale = slice.proportional_scale;
   double h = std::max(worn_depth, 0.0);
   if (h > depth_.back()) {
     if (use) ++use->beyond_depth;
@@ -254,18 +271,20 @@ double StateLaw::value(StateField field, double pressure, double worn_depth, Ban
                        RangeUse *use) const {
   const auto &t = table(field);
   const auto &grid = band == Band::Mean || t.low.empty() ? t.mean : band == Band::Low ? t.low : t.high;
-  return interpolate(grid, locate(pressure, worn_depth, policy, use));
+  const Cell c = locate(pressure, worn_depth, policy, use);
+  return interpolate(grid, c) * (proportional_to_pressure(field) ? c.proportional_scale : 1.0);
 }
 
 double StateLaw::value(StateField field, const PressureSlice &slice, double worn_depth, RangeUse *use) const {
-  return interpolate(table(field).mean, locate(slice, worn_depth, use));
+  const Cell c = locate(slice, worn_depth, use);
+  return interpolate(table(field).mean, c) * (proportional_to_pressure(field) ? c.proportional_scale : 1.0);
 }
 
 void StateLaw::wear_rates(const PressureSlice &slice, double worn_depth, RangeUse *use, double &wear_rate,
                           double &counterface_wear_rate) const {
   const Cell c = locate(slice, worn_depth, use);
-  wear_rate = interpolate(table(StateField::WearRate).mean, c);
-  counterface_wear_rate = interpolate(table(StateField::CounterfaceWearRate).mean, c);
+  wear_rate = interpolate(table(StateField::WearRate).mean, c) * c.proportional_scale;
+  counterface_wear_rate = interpolate(table(StateField::CounterfaceWearRate).mean, c) * c.proportional_scale;
 }
 
 StateLawValues StateLaw::values(double pressure, double worn_depth, OutOfRange policy, RangeUse *use) const {
@@ -274,9 +293,9 @@ StateLawValues StateLaw::values(double pressure, double worn_depth, OutOfRange p
   v.mu_body = interpolate(table(StateField::MuBody).mean, c);
   v.rq = interpolate(table(StateField::Rq).mean, c);
   v.rsk = interpolate(table(StateField::Rsk).mean, c);
-  v.area_fraction = interpolate(table(StateField::AreaFraction).mean, c);
-  v.wear_rate = interpolate(table(StateField::WearRate).mean, c);
-  v.counterface_wear_rate = interpolate(table(StateField::CounterfaceWearRate).mean, c);
+  v.area_fraction = interpolate(table(StateField::AreaFraction).mean, c) * c.proportional_scale;
+  v.wear_rate = interpolate(table(StateField::WearRate).mean, c) * c.proportional_scale;
+  v.counterface_wear_rate = interpolate(table(StateField::CounterfaceWearRate).mean, c) * c.proportional_scale;
   return v;
 }
 

@@ -5,7 +5,10 @@
 // Interpolation: linear in h; between pressures a power law, ln(value) linear in ln p, where both neighbours are
 // positive (else linear in ln p). Along h the last grid value holds beyond the grid (the cell ran to
 // its steady state there); a pressure outside the grid is an error, or, with OutOfRange::Clamp, the nearest
-// grid pressure, counted in a RangeUse so the caller can report how often it happened.
+// grid pressure, counted in a RangeUse so the caller can report how often it happened. OutOfRange::Archard
+// is Clamp for friction and surface state, but keeps the wear rates and the real-area fraction exact in p:
+// they are scaled by p / p_edge from the nearest grid pressure p_edge (Archard: dh/ds = k p / H at any p;
+// a plastic real area is proportional to the load).
 #pragma once
 
 #include <array>
@@ -31,7 +34,8 @@ inline constexpr std::size_t state_field_count = 7;
 const char *to_string(StateField field);  // the JSON key: "mu_body", "rq", ...
 
 enum class Band { Mean, Low, High };  // Low/High: the seed band (see doc/state_law.md)
-enum class OutOfRange { Error, Clamp };
+enum class OutOfRange { Error, Clamp, Archard };
+const char *to_string(OutOfRange policy);  // "error", "clamp", "archard"
 
 // How often a lookup left the pressure grid (clamped) or the worn-depth grid (held at the last row).
 struct RangeUse {
@@ -68,6 +72,8 @@ class StateLaw {
   const StateFieldTable &table(StateField field) const { return fields_[static_cast<std::size_t>(field)]; }
   const nlohmann::json &metadata() const { return metadata_; }  // material, surface, samples, provenance
   bool has_band() const;
+  // The fields OutOfRange::Archard scales with p outside the grid: the wear rates and the real-area fraction.
+  static bool proportional_to_pressure(StateField field);
   // The two bodies' materials the law was homogenised for (metadata material.rough and material.counterface, as
   // `runin homogenise` writes them from its material file); nullopt when the law names none (a synthetic law).
   std::optional<std::pair<std::string, std::string>> materials() const;
@@ -85,7 +91,8 @@ class StateLaw {
   struct PressureSlice {
     std::size_t ip = 0;
     double wp = 0.0;    // weight of the upper grid pressure
-    int clamped = 0;    // -1: below the grid, +1: above (OutOfRange::Clamp), 0: inside
+    int clamped = 0;    // -1: below the grid, +1: above (OutOfRange::Clamp/Archard), 0: inside
+    double proportional_scale = 1.0;   // Archard: p / p_edge for wear rates and area fraction, else 1
   };
   PressureSlice slice(double pressure, OutOfRange policy = OutOfRange::Error) const;
   double value(StateField field, const PressureSlice &slice, double worn_depth, RangeUse *use = nullptr) const;
@@ -97,6 +104,7 @@ class StateLaw {
   struct Cell {
     std::size_t ip = 0, ih = 0;
     double wp = 0.0, wh = 0.0;  // weights of the upper neighbours
+    double proportional_scale = 1.0;
   };
   Cell locate(double pressure, double worn_depth, OutOfRange policy, RangeUse *use) const;
   Cell locate(const PressureSlice &slice, double worn_depth, RangeUse *use) const;

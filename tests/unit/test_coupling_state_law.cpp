@@ -89,6 +89,38 @@ TEST(StateLaw, PressureOutsideIsAnErrorOrACountedClamp) {
   EXPECT_EQ(use.above_pressure, 1);
 }
 
+// Archard policy: friction and surface state as Clamp, wear rates and real area proportional to p outside the grid,
+// through every read path (value, values, slice + wear_rates), counted like a clamp.
+TEST(StateLaw, ArchardPolicyKeepsWearProportionalToPressureOutsideTheGrid) {
+  const auto law = make_law();
+  const double h = 5e-8;
+  for (double p : {1e3, 5e5, 2e8, 1e9}) {
+    const double edge = p < 1e6 ? 1e6 : 1e8;
+    RangeUse use;
+    const auto v = law.values(p, h, OutOfRange::Archard, &use);
+    EXPECT_NEAR(v.mu_body, mu_exact(edge, h), 1e-14) << p;
+    EXPECT_NEAR(v.rsk, rsk_exact(edge, h), 1e-12) << p;
+    EXPECT_NEAR(v.rq, mu_exact(edge, h) * 2, 1e-13) << p;
+    EXPECT_NEAR(v.wear_rate / p, mu_exact(edge, h) * 5 / edge, 1e-12 * mu_exact(edge, h) * 5 / edge) << p;
+    EXPECT_NEAR(v.counterface_wear_rate / p, mu_exact(edge, h) * 6 / edge, 1e-12 * mu_exact(edge, h) * 6 / edge);
+    EXPECT_NEAR(v.area_fraction / p, mu_exact(edge, h) * 4 / edge, 1e-12 * mu_exact(edge, h) * 4 / edge);
+    const auto slice = law.slice(p, OutOfRange::Archard);
+    double w = 0.0, wc = 0.0;
+    law.wear_rates(slice, h, &use, w, wc);
+    EXPECT_DOUBLE_EQ(w, v.wear_rate);
+    EXPECT_DOUBLE_EQ(wc, v.counterface_wear_rate);
+    EXPECT_DOUBLE_EQ(law.value(StateField::WearRate, slice, h), v.wear_rate);
+    EXPECT_DOUBLE_EQ(law.value(StateField::WearRate, p, h, Band::Mean, OutOfRange::Archard), v.wear_rate);
+    EXPECT_DOUBLE_EQ(law.value(StateField::MuBody, slice, h), v.mu_body);
+    EXPECT_EQ(use.lookups, 2);
+    EXPECT_EQ(p < 1e6 ? use.below_pressure : use.above_pressure, 2);
+  }
+  // inside the grid the policy changes nothing
+  const auto inside = law.values(4e6, h, OutOfRange::Archard);
+  EXPECT_DOUBLE_EQ(inside.wear_rate, law.values(4e6, h).wear_rate);
+  EXPECT_STREQ(to_string(OutOfRange::Archard), "archard");
+}
+
 TEST(StateLaw, JsonRoundTripKeepsTablesAndMetadata) {
   const auto law = make_law();
   const auto back = StateLaw::from_json(law.to_json(), "law.json");
