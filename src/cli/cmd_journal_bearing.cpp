@@ -403,12 +403,8 @@ int run(const Options &o, const PlotRunner &plot) {
                  "(counterface_wear_rate)\n",
                  h ? "upper" : "lower", last.half[h].h_mean, last.half[h].h_max, 1e9 * last.half[h].counterface_volume);
     fmt::print("  law lookups       {}\n", continuum::describe(*r.range_use, *law->law));
-    if (r.range_use->below_pressure + r.range_use->above_pressure > 0)
-      warnings.push_back(fmt::format(
-          "WARNING: {} of {} state-law lookups were outside the law's pressure range and clamped to it ({} below "
-          "{:.4g} Pa, {} above {:.4g} Pa; friction.out_of_range = \"clamp\")",
-          r.range_use->below_pressure + r.range_use->above_pressure, r.range_use->lookups, r.range_use->below_pressure,
-          law->law->pressure().front(), r.range_use->above_pressure, law->law->pressure().back()));
+    if (auto w = continuum::out_of_range_warning(*r.range_use, *law->law, law->policy); !w.empty())
+      warnings.push_back(std::move(w));
   }
   for (const auto &report : stress) print_line_stress(report, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);

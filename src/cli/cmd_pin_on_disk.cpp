@@ -622,14 +622,11 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
     fmt::print("    frictionless: disk peak von Mises {:.4g} Pa at depth {:.3g} m, pin {:.4g} Pa at depth {:.3g} m\n",
                f0.disk.peak.von_mises, f0.disk.peak.z, f0.pin.peak.von_mises, f0.pin.peak.z);
   }
-  if (curve.range_use && curve.range_use->below_pressure + curve.range_use->above_pressure > 0)
-    warnings.push_back(fmt::format("WARNING: {} of {} state-law lookups were outside the law's pressure range and "
-                                   "clamped to it ({} below {:.4g} Pa, {} above {:.4g} Pa; friction.out_of_range = "
-                                   "\"clamp\")",
-                                   curve.range_use->below_pressure + curve.range_use->above_pressure,
-                                   curve.range_use->lookups, curve.range_use->below_pressure,
-                                   c.friction->state_law()->law->pressure().front(), curve.range_use->above_pressure,
-                                   c.friction->state_law()->law->pressure().back()));
+  if (curve.range_use)
+    if (auto w = continuum::out_of_range_warning(*curve.range_use, *c.friction->state_law()->law,
+                                                  c.friction->state_law()->policy);
+        !w.empty())
+      warnings.push_back(std::move(w));
   if (curve.disk && curve.disk->approach_ratio > kGrooveTolerance)
     warnings.push_back(fmt::format("WARNING: the disk's track depth reaches {:.3g} x the elastic approach (t = {:g} s, "
                                    "> {:g}): the worn groove, left out of the contact solve, would change the "

@@ -797,12 +797,8 @@ int run(const Options &o, const PlotRunner &plot) {
                  rows.back().h_max);
     }
     fmt::print("  law lookups       {}\n", continuum::describe(coupled->use, *law->law));
-    if (coupled->use.below_pressure + coupled->use.above_pressure > 0)
-      warnings.push_back(fmt::format(
-          "WARNING: {} of {} state-law lookups were outside the law's pressure range and clamped to it ({} below "
-          "{:.4g} Pa, {} above {:.4g} Pa; friction.out_of_range = \"clamp\")",
-          coupled->use.below_pressure + coupled->use.above_pressure, coupled->use.lookups, coupled->use.below_pressure,
-          law->law->pressure().front(), coupled->use.above_pressure, law->law->pressure().back()));
+    if (auto w = continuum::out_of_range_warning(coupled->use, *law->law, law->policy); !w.empty())
+      warnings.push_back(std::move(w));
   }
   for (const auto &report : stress) print_line_stress(report, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);

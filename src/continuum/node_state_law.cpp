@@ -137,4 +137,21 @@ std::string describe(const coupling::RangeUse &use, const coupling::StateLaw &la
   return out.str();
 }
 
+std::string out_of_range_warning(const coupling::RangeUse &use, const coupling::StateLaw &law,
+                                 coupling::OutOfRange policy) {
+  const long outside = use.below_pressure + use.above_pressure;
+  if (outside == 0) return {};
+  std::ostringstream out;
+  out.precision(4);
+  out << "WARNING: " << outside << " of " << use.lookups << " state-law lookups were outside the law's pressure range ("
+      << use.below_pressure << " below " << law.pressure().front() << " Pa, " << use.above_pressure << " above "
+      << law.pressure().back() << " Pa; friction.out_of_range = \"" << coupling::to_string(policy) << "\"): ";
+  if (policy == coupling::OutOfRange::Archard)
+    out << "friction and surface state taken at the nearest grid pressure, wear rates proportional to p";
+  else
+    out << "clamped to the nearest grid pressure, wear rates included, which breaks Archard's law there "
+           "(\"archard\" keeps them proportional to p)";
+  return out.str();
+}
+
 }  // namespace runin::continuum

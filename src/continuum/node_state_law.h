@@ -71,5 +71,9 @@ class NodeStateLaw {
 
 // One line for a summary: "N lookups, M clamped below p_min, K above p_max, L beyond the last worn depth".
 std::string describe(const coupling::RangeUse &use, const coupling::StateLaw &law);
+// The summary's WARNING when lookups left the pressure grid (empty if none): how many, and what the policy did
+// with them (Clamp: wear rates held at the grid edge, which breaks Archard's law there; Archard: proportional to p).
+std::string out_of_range_warning(const coupling::RangeUse &use, const coupling::StateLaw &law,
+                                 coupling::OutOfRange policy);
 
 }  // namespace runin::continuum

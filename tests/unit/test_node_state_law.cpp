@@ -127,6 +127,27 @@ TEST(NodeStateLaw, ClampsAreCountedAndUseTheNearestGridPressure) {
   EXPECT_NE(text.find("clamped below"), std::string::npos);
 }
 
+// Below the grid the Archard policy wears a node at its own pressure: rate (p / p_min) x the edge's rate, so
+// h = h0 (1 - exp(-(p / p_min) c(p_min) s)); friction stays the edge's. The summary's WARNING names the policy.
+TEST(NodeStateLaw, ArchardPolicyWearsBelowTheGridInProportionToPressure) {
+  NodeStateLaw nodes(make_law(), OutOfRange::Archard, 2);
+  EXPECT_NEAR(nodes.mu_effective({5e5, 1e7}, {1.0, 0.0}), mu_exact(1e6, 0.0), 1e-12);
+  nodes.advance({2.5e5, 1e7}, 1e-4);
+  EXPECT_NEAR(nodes.state()[0], kH0 * (1.0 - std::exp(-0.25 * c_of(1e6) * 1e-4)), 1e-6 * kH0);
+  EXPECT_NEAR(nodes.counterface()[0], kQ * nodes.state()[0], 1e-6 * kQ * kH0);
+  const std::string warning = runin::continuum::out_of_range_warning(nodes.use(), nodes.law(), nodes.policy());
+  EXPECT_NE(warning.find("\"archard\""), std::string::npos) << warning;
+  EXPECT_NE(warning.find("wear rates proportional to p"), std::string::npos) << warning;
+  NodeStateLaw inside(make_law(), OutOfRange::Archard, 1);
+  inside.mu_effective({1e7}, {1.0});
+  EXPECT_TRUE(runin::continuum::out_of_range_warning(inside.use(), inside.law(), inside.policy()).empty());
+  NodeStateLaw clamped(make_law(), OutOfRange::Clamp, 1);
+  clamped.mu_effective({5e5}, {1.0});
+  EXPECT_NE(runin::continuum::out_of_range_warning(clamped.use(), clamped.law(), clamped.policy())
+                .find("breaks Archard's law"),
+            std::string::npos);
+}
+
 TEST(NodeStateLaw, PeakMuAndStableContactStep) {
   NodeStateLaw nodes(make_law(), OutOfRange::Error, 2);
   const std::vector<double> p = {1e7, 1e8}, area = {1.0, 1.0};
