@@ -114,8 +114,8 @@ Curve run_case(const JournalBearingCase &c, const continuum::SlidingFriction &fr
     throw std::runtime_error(fmt::format("state law at t = {:g} s: {}{}",
                                          curve.samples.empty() ? 0.0 : curve.samples.back().t, e.what(),
                                          law->policy == coupling::OutOfRange::Error
-                                             ? " (friction.out_of_range = \"clamp\" holds the nearest grid pressure "
-                                               "and counts it)"
+                                             ? " (friction.out_of_range = \"archard\" takes friction at the nearest grid pressure, "
+                                               "keeps wear proportional to p and counts it)"
                                              : ""));
   }
   if (!curve.report.ok())

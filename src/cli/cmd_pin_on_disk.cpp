@@ -227,8 +227,8 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
     return std::runtime_error(fmt::format("state law at t = {:g} s: {}{}", t_now, e.what(),
                                           law->policy == coupling::OutOfRange::Error &&
                                                   dynamic_cast<const std::out_of_range *>(&e)
-                                              ? " (friction.out_of_range = \"clamp\" holds the nearest grid "
-                                                "pressure and counts it)"
+                                              ? " (friction.out_of_range = \"archard\" takes friction at the nearest grid pressure, keeps "
+ "wear proportional to p and counts it)"
                                               : ""));
   };
   try {

@@ -413,8 +413,8 @@ StateLawPack run_pack_state_law(const PistonRingCase &c, std::vector<continuum::
     auto where = [&](const std::exception &e) {
       return std::runtime_error(fmt::format("{}state law at t = {:g} s: {}{}", which, t_now, e.what(),
                                             law->policy == coupling::OutOfRange::Error
-                                                ? " (friction.out_of_range = \"clamp\" holds the nearest grid "
-                                                  "pressure and counts it)"
+                                                ? " (friction.out_of_range = \"archard\" takes friction at the nearest grid pressure, keeps "
+ "wear proportional to p and counts it)"
                                                 : ""));
     };
     {
