@@ -1,4 +1,4 @@
-// Issue 11 ("Speed"): the thesis cases with per-node state laws (friction.model = "state_law", the shipped
+// Speed: the thesis cases with per-node state laws (friction.model = "state_law", the shipped
 // inputs/state_law_steel.json, AISI 1020 on AISI 1020) next to the same set-up with the element's ordinary
 // friction. Integration only: the contact grids, the ODE and the operator-splitting loop are timed; the case
 // file and the law JSON are read once, before any timing; nothing is written.

@@ -1,4 +1,4 @@
-// Wall time of the subsurface stress field (src/tribo/subsurface_stress.h), issue 14 item 5:
+// Wall time of the subsurface stress field (src/tribo/subsurface_stress.h):
 // "the stress field for a 512-node contact on a 64 x 64 subsurface grid takes < 50 ms".
 //   build/bench/subsurface_stress --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // Cases (Hertz pressure, q = mu p, nu = 0.3, every component of the tensor at every grid point):

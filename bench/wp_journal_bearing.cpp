@@ -6,7 +6,7 @@
 //   build-bench/bench/wp_journal_bearing [OUT.csv]   (default BUILD/bench/out/wp_journal_bearing.csv; PNG beside it)
 // Wall time: timed by Google Benchmark (median of 5 repetitions, wall time; Euler h = 1e-6 and wear: 3), one core.
 // Bearing halves: 2 (the thesis's two loaded halves, two contacts), RUNIN_BENCH_HALVES=1 for the single
-// contact (the model before issue 14). The wear benchmark wears one contact either way.
+// contact (the earlier one-contact model). The wear benchmark wears one contact either way.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -244,7 +244,7 @@ int main(int argc, char **argv) {
     state.counters["updates"] = static_cast<double>(updates);
   }), 5);
 
-  // Issue 14: the thesis case as RunIn models it now (inputs/piston_ring.toml): two rings in grooves
+  // The thesis case as RunIn models it now (inputs/piston_ring.toml): two rings in grooves
   // A and B with the land stiffness from the land and ring geometry (2.36e9 and 2.16e9 N/m), tensions
   // 0.2 and 0.15 MPa, next to the former one-ring model (k = 1e7 N/m); CVODE BDF rtol 1e-8 / atol
   // 1e-12 as the CLI, mu0 = 0.95, mu_k = 0.7 mu0. And the long wear pass above on the half-plane ring

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Micro and continuum run-in side by side (issue 11): the state law (runin homogenise) and the machine elements
+"""Micro and continuum run-in side by side: the state law (runin homogenise) and the machine elements
 that ran on it (runin pin-on-disk / journal-bearing / piston-ring with friction.model = "state_law").
 
 usage: plot_homogenised.py LAW_JSON PNG CSV [--element LABEL CSV PRESSURE_PA] ...

@@ -89,7 +89,7 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       return SlidingFriction::static_kinetic(mu_static, mu_kinetic, alpha);
     }
     if (model == "state_law") {
-      // The homogenised path (issue 11): per-node mu(p, h) and dh/ds from a runin-state-law file. Relative
+      // The homogenised path: per-node mu(p, h) and dh/ds from a runin-state-law file. Relative
       // paths: to the case file's directory, else to the RunIn source tree.
       auto state = std::make_shared<continuum::StateLawFriction>();
       // --law FILE (relative to the working directory) overrides friction.law

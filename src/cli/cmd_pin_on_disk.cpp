@@ -171,7 +171,7 @@ Curve run_case(const PinOnDiskCase &c, bool with_frames) {
   return curve;
 }
 
-// friction.model = "state_law" (issue 11, doc/state_law_continuum.md): two-way coupling by operator splitting at
+// friction.model = "state_law" (doc/state_law_continuum.md): two-way coupling by operator splitting at
 // the output interval. CVODE integrates one interval with mu_eff held; after it, the node states h_i and the
 // pin's worn profile advance by the distance slid (the same dh_i: the law's wear_rate is the pin's only wear
 // law), the disk by the law's counterface_wear_rate, the contact pressure is re-solved, mu_eff recomputed and

@@ -131,7 +131,7 @@ class PinWear {
   std::string message_;
 };
 
-// Archard wear of the disk's track under the pin (issue 14 item 5). Each body wears by its own k_i/H_i
+// Archard wear of the disk's track under the pin. Each body wears by its own k_i/H_i
 // (with equal k the split of the pair's volume is tribo::wear_share): the disk loses
 //   V_d = (k_d/H_d) int W ds          (plain form; / 3H_d for ArchardForm::thesis)
 // spread over the band the pin has swept: the track length L = min(s, 2 pi r) (one pass covers s; after a

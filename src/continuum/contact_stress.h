@@ -1,4 +1,4 @@
-// Subsurface stress below the contacts of the three elements (issue 14 item 5, doc/subsurface_stress.md): the
+// Subsurface stress below the contacts of the three elements (doc/subsurface_stress.md): the
 // per-body von Mises peak against the yield strength, shared by the pin-on-disk (axisymmetric, in
 // pin_on_disk.h) and the line contacts of the journal bearing (arc x = R theta along the bore) and the piston
 // ring (axial coordinate along the ring face).

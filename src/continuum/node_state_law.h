@@ -1,4 +1,4 @@
-// Per-node run-in state of a continuum contact driven by a homogenised state law (issue 11, doc/state_law_continuum.md).
+// Per-node run-in state of a continuum contact driven by a homogenised state law (doc/state_law_continuum.md).
 //
 // Each contact node i (a ring of the pin face, a node of a bearing half, a face cell of a piston ring) carries
 // its own surface state h_i, the mean worn depth of the rough body there, and reads the law at its own nominal

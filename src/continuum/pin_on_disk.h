@@ -124,7 +124,7 @@ struct PinOnDiskSummary {
 // "not steady" if that is in the last 10 % of the run.
 PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples);
 
-// Subsurface stress below the pin contact (issue 14 item 5, doc/subsurface_stress.md): the von Mises field of
+// Subsurface stress below the pin contact (doc/subsurface_stress.md): the von Mises field of
 // each body on the section y = 0 through the contact (x along the sliding direction, 64 x 64 points to
 // 1.5 contact radii wide and deep), from the pressure p and the friction shear q = mu p. The disk carries
 // q in the sliding direction, the pin the opposite shear (mu -> -mu); each body uses its own Poisson ratio.

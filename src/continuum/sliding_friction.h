@@ -22,7 +22,7 @@
 
 namespace runin::continuum {
 
-// The homogenised state law on the contact nodes (issue 11, doc/state_law_continuum.md). The machine element
+// The homogenised state law on the contact nodes (doc/state_law_continuum.md). The machine element
 // owns the per-node states (NodeStateLaw) and, by operator splitting at the output interval, sets the held
 // coefficients the ODE sees: kinetic mu_eff (+ alpha V) and the static limit. Shared by all copies of the
 // SlidingFriction made from it.

@@ -1,4 +1,4 @@
-// A homogenised run-in state law (issue 11): tables over nominal pressure p and the surface state h (mean worn
+// A homogenised run-in state law: tables over nominal pressure p and the surface state h (mean worn
 // depth of the rough body: its worn volume over the nominal area), built by `runin homogenise` from
 // rough-on-flat cell runs and read by the continuum contact nodes. Format: doc/state_law.md.
 //

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Doc constants that drifted from the code once (issue 13): the steady-state band of doc/pin_on_disk.md is
+"""Doc constants that drifted from the code once: the steady-state band of doc/pin_on_disk.md is
 PinOnDiskSummary::steady_tolerance, and its table's steady time is what `runin pin-on-disk` prints for the
 shipped case.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Emergent run-in in the three machine elements on laws built from the rough-on-rough cell (issue 11).
+"""Emergent run-in in the three machine elements on laws built from the rough-on-rough cell.
 
   check_element_runin.py --runin RUNIN --workdir DIR
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hardening of the runin CLI (issue 13's findings), each a case that crashed, hung or gave an unclear error:
+"""Hardening of the runin CLI (the hardening pass's findings), each a case that crashed, hung or gave an unclear error:
 hostile case and law files give exit 2 and one line naming the file and key; SIGTERM/SIGINT mid-run and a
 dead process's staging directory leave nothing behind.
 
@@ -73,7 +73,7 @@ soft = write("soft.toml", re.sub(r"(?m)^(ring_cells = .*)$", r"\1\nfoundation_mo
 expect_refused("a foundation modulus of 1e-300", ["piston-ring", soft, "--output-dir", "o", "--no-plot"],
                r"key 'wear.foundation_modulus': must be at least 1e6 Pa/m, got 1e-300")
 
-# Ring pack (issue 14): overlapping grooves, non-positive stiffness or dimensions, inconsistent arrays.
+# Ring pack: overlapping grooves, non-positive stiffness or dimensions, inconsistent arrays.
 def pack_case(name, key, value, text=None):
     text = piston if text is None else text
     if re.search(r"(?m)^" + key + r" = ", text):

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`runin homogenise` with a summit list (surface.heights) on the cell inputs/in.rve_wall (issue 11).
+"""`runin homogenise` with a summit list (surface.heights) on the cell inputs/in.rve_wall.
 
   check_homogenise_heights.py --runin RUNIN --lmp LMP --workdir DIR
 

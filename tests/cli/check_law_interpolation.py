@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Interpolation of the state law between pressures against a direct cell run (issue 11 verification).
+"""Interpolation of the state law between pressures against a direct cell run (state-law verification).
 
   check_law_interpolation.py --runin RUNIN --lmp LMP --reader READER --workdir DIR
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Run-in distance against pressure in a machine element on a law from the cell (issue 11, "emergent run-in").
+"""Run-in distance against pressure in a machine element on a law from the cell ("emergent run-in").
 
   check_runin_scaling.py --runin RUNIN --workdir DIR [--law LAW.json --pressures P1 P2 P3]
 

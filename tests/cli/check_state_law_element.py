@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks a line-contact machine element run on a state law (issue 11, doc/state_law_continuum.md).
+"""Checks a line-contact machine element run on a state law (doc/state_law_continuum.md).
 
 CSV: the columns <prefix>mu_eff, <prefix>h_max_m and <prefix><counter column> exist for every --prefix (default: none);
 h_max never decreases; the counter body's worn volume is --ratio times the rough body's (<prefix><wear column>,

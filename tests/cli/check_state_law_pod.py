@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks a pin-on-disk run on a state law (issue 11, doc/state_law_continuum.md).
+"""Checks a pin-on-disk run on a state law (doc/state_law_continuum.md).
 
 --flat P: flat punch at the uniform nominal pressure P: mu_eff(s) and h(s) reproduce the law integrated directly
           along s (dh/ds = wear_rate(P, h), RK4 on the law's own interpolation: linear in h, power law in p) within 1 %.

@@ -11,7 +11,7 @@ acceleration: the cell at one pressure with wear acceleration A and A x factor (
 Asserted:
   - expressed in the mean worn depth h, mu_body(h) and Rq(h) of the two runs agree within 3 % (RMS of the
     relative difference over h in [depth / 10, depth]): the acceleration changes the distance the cell
-    slides, not the state law (issue 11);
+    slides, not the state law;
   - the worn volume is Archard's with the accelerated k: (h + h_cf) A = A_acc k p A s (1/H_rough + 1/H_flat),
     to 3.5e-4 x A_acc above (measured +1.07e-3 at A_acc = 4 and +1.07e-2 at 40: an excess that grows with
     the wear per step; doc/homogenise.md) and never below by more than 1e-3;

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The rough-on-rough cell inputs/in.rve_rough and the pipeline's law built on it (issue 11 verification).
+"""The rough-on-rough cell inputs/in.rve_rough and the pipeline's law built on it (state-law verification).
 
   rve_rough_checks.py interpolation --lmp LMP --workdir DIR
   rve_rough_checks.py cell-size     --lmp LMP --workdir DIR

@@ -193,7 +193,7 @@ TEST(PinWear, ThesisArchardFormWearsAThirdOfThePlainForm) {
   EXPECT_NEAR(thesis.wear_volume() / (1e-4 * kLoad * 5e-3 / 3e9), 1.0, 1e-10);
 }
 
-// The disk's track (issue 14 item 5): its own Archard k_d/H_d, spread over the swept band.
+// The disk's track: its own Archard k_d/H_d, spread over the swept band.
 TEST(DiskTrackWear, VolumeIsTheClosedFormForAConstantLoad) {
   constexpr double k_d = 1e-4, hardness = 0.245e9, track_radius = 0.102, width = 1.9e-4;
   const double circumference = 2.0 * M_PI * track_radius;

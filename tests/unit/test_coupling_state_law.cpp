@@ -1,4 +1,4 @@
-// State law tables (issue 11): interpolation (linear in h, power law in p where positive, linear in ln p
+// State law tables: interpolation (linear in h, power law in p where positive, linear in ln p
 // otherwise), the range policies, JSON round trip and the checks on a malformed file.
 #include <gtest/gtest.h>
 

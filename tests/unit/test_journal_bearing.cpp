@@ -92,7 +92,7 @@ TEST(JournalBearing, BreakAwayWhenTheCouplingTorqueReachesTheStaticLimit) {
 
 TEST(JournalBearing, ShaftTorsionalStiffnessIsGJOverL) {
   // By hand: G = 200e9 / (2 x 1.29) = 7.7519e10 Pa, J = pi 0.025^4 / 32 = 3.83495e-8 m^4,
-  // G J / L = 2972.83 N m^2 / 0.2 m = 14864.15 N m/rad (issue 14: "about 1.5e4 N m/rad for 25 x 200 mm").
+  // G J / L = 2972.83 N m^2 / 0.2 m = 14864.15 N m/rad ("about 1.5e4 N m/rad for 25 x 200 mm").
   EXPECT_NEAR(shaft_torsional_stiffness(25e-3, 0.2, 200e9, 0.29), 14864.15, 0.01);
   // k ~ d^4 / L
   EXPECT_NEAR(shaft_torsional_stiffness(50e-3, 0.4, 200e9, 0.29), 8.0 * 14864.15, 0.08);

@@ -1,4 +1,4 @@
-// Per-node state law of the continuum contacts (issue 11 item 4): pressure-weighted friction, the per-node wear
+// Per-node state law of the continuum contacts: pressure-weighted friction, the per-node wear
 // integration against a closed form, the range policy and its counters. Synthetic laws only.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Pin-on-disk with a per-node state law (issue 11): the operator splitting at the output interval (mu_eff held
+// Pin-on-disk with a per-node state law: the operator splitting at the output interval (mu_eff held
 // over an interval, node states advanced by the distance slid in it, CVODE restarted) converges to the
 // monolithic solution at first order in the interval.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes synthetic_law.json: a runin-state-law v1 file from closed forms (issue 11 continuum tests).
+"""Writes synthetic_law.json: a runin-state-law v1 file from closed forms (the continuum's state-law tests).
 
 mu_body(p, h)   = 0.15 + (0.35 + 0.05 log10(p / 1e7)) exp(-h / hc)      run-in from a pressure-dependent peak
 wear_rate(p, h) = (k/H) p (0.2 + 0.8 exp(-h / hc))                      Archard-like, decaying with h
