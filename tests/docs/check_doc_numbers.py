@@ -21,8 +21,9 @@ regex `quote` whose one group is the number as the doc prints it (it must match 
   plus math's functions.
 The doc's number must equal the value to the digits it prints (|doc - value| <= half a unit of its last digit);
 `atol` / `rtol` widen that where the doc rounds further on purpose (say why in `why`).
---hygiene: no README or doc page may point outside the repository (`forbidden` patterns), and the repository
-root holds no generated files (`root_data` globs), tracked or not.
+--hygiene: no README or doc page may point outside the repository, no file refers to the issue tracker
+(`forbidden` patterns, each with its files and `except` globs), the repository root holds no generated files
+(`root_data` globs), tracked or not, and the doc index (`index.file`) links every page (`index.pages`).
 """
 import argparse
 import csv as csvmod
@@ -215,8 +216,11 @@ def hygiene(manifest):
     problems = []
     rules = manifest["hygiene"]
     for rule in rules["forbidden"]:
+        excepted = {os.path.join(SOURCE_DIR, e) for e in rule.get("except", [])}
         for pattern in rule["files"]:
             for path in sorted(glob.glob(os.path.join(SOURCE_DIR, pattern))):
+                if path in excepted or not os.path.isfile(path):
+                    continue
                 for number, line in enumerate(open(path, errors="replace"), 1):
                     if re.search(rule["pattern"], line):
                         problems.append(f"{os.path.relpath(path, SOURCE_DIR)}:{number}: {rule['why']}: {line.strip()[:120]}")
@@ -225,9 +229,18 @@ def hygiene(manifest):
             if os.path.isfile(path):
                 problems.append(f"{os.path.relpath(path, SOURCE_DIR)}: a generated file at the repository root "
                                 "(whatever wrote it should write into its output directory)")
+    index = rules.get("index")
+    if index:
+        text = open(os.path.join(SOURCE_DIR, index["file"])).read()
+        for pattern in index["pages"]:
+            for path in sorted(glob.glob(os.path.join(SOURCE_DIR, pattern))):
+                name = os.path.basename(path)
+                if os.path.relpath(path, SOURCE_DIR) != index["file"] and f"]({name})" not in text:
+                    problems.append(f"{index['file']}: no link to {os.path.relpath(path, SOURCE_DIR)}")
     if problems:
         raise Failed("\n  ".join([f"{len(problems)} problem(s):"] + problems))
-    print("PASS docs.hygiene: no doc points outside the repository; no generated files at the root")
+    print("PASS docs.hygiene: no doc points outside the repository, no issue-tracker references, no generated "
+          "files at the root, the doc index links every page")
 
 
 def main():
