@@ -16,10 +16,8 @@ import os
 import shutil
 import subprocess
 import sys
-
-
-def fail(message):
-    sys.exit(f"check_case_paths: {message}")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 
 def run(runin, case, out, cwd, expect):

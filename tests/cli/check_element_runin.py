@@ -28,6 +28,8 @@ import tomllib
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
 from state_law import StateLaw  # noqa: E402  (the C++ reader's interpolation rule)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 LAWS = {"smooth": os.path.join(SOURCE, "inputs", "state_law_steel_rough.json"),
         "rough": os.path.join(SOURCE, "inputs", "state_law_steel_rough_sigma04.json")}
@@ -41,11 +43,6 @@ ARCHARD_COLUMNS = {"pin-on-disk": ("wear_volume_m3", None),
 ARCHARD_TOLERANCE = 0.01
 FALL = 0.75
 RQ_FALL = 0.9
-
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
 
 
 def run(runin, element, case, law, out):

@@ -26,6 +26,8 @@ import shutil
 import subprocess
 import sys
 import time
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 CASE = """title = "homogenise test fixture"
 [material]
@@ -49,10 +51,6 @@ nout = 10
 """
 SEED_1 = 4711 + 7919  # the second derived seed (homogenise_plan.cpp: derived_seed)
 K, H = 7.0e-3, 1.19e9  # the fixture's Archard k and hardness
-
-
-def fail(message):
-    sys.exit(f"check_homogenise: {message}")
 
 
 def homogenise(args, case, law, cache, deck, expect):

@@ -20,12 +20,9 @@ import sys
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tests", "lammps"))
 from run_deck import mpi_env  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 LIST = os.path.join(SOURCE, "tests", "data", "cli", "homogenise_heights_36.txt")
-
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
 
 
 def run(a, case, law):

@@ -21,14 +21,11 @@ sys.path.insert(0, os.path.join(SOURCE, "tests", "lammps"))
 from run_deck import mpi_env  # noqa: E402  (Open MPI as root, oversubscription, one thread per rank)
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
 from state_law import sample_at_depth, sample_rows  # noqa: E402  (homogenise's reduction of a sample)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 P1, P2, PMID = 3.0e6, 7.3e6, (3.0e6 * 7.3e6) ** 0.5
 DEPTH, SEED, NSIDE, DEPTH_POINTS = 3.0e-8, 4711, 32, 16
 LIMIT = 0.03
-
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
 
 
 def run(command, cwd):

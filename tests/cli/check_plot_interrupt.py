@@ -19,15 +19,13 @@ import time
 
 WRAPPER = """#!/usr/bin/python3
 import os, sys, time
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 with open({marker!r}, "w") as f:
     f.write(str(os.getpid()))
 time.sleep(3)
 os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv[1:])
 """
-
-
-def fail(message):
-    sys.exit(f"check_plot_interrupt: {message}")
 
 
 def alive(pid):

@@ -21,15 +21,12 @@ import sys
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
 from state_law import StateLaw  # noqa: E402  (the C++ reader's interpolation rule)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 LAW = os.path.join(SOURCE, "inputs", "state_law_steel.json")
 RADIUS = 1.5e-3
 PRESSURES = (632455.5320336759, 2.0e6, 6324555.320336758)
 DROP = 0.8
-
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
 
 
 def main():

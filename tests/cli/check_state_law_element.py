@@ -9,11 +9,9 @@ the law's counterface/body rate ratio, integrated by the same quadrature); mu_ef
 import argparse
 import csv
 import sys
-
-
-def fail(msg):
-    print("check_state_law_element: " + msg)
-    sys.exit(1)
+import os
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 
 ap = argparse.ArgumentParser()

@@ -20,11 +20,8 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from state_law import StateLaw  # noqa: E402  (the C++ reader's interpolation rule)
-
-
-def fail(msg):
-    print("check_state_law_pod: " + msg)
-    sys.exit(1)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 
 def main():

@@ -14,13 +14,11 @@ import os
 import shutil
 import subprocess
 import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 NUMBERS = ["peak_friction_force_N", "peak_time_s", "breakaway_time_s", "steady_time_s", "steady_mu", "wear_volume_m3"]
 PREFIX = {"pin-on-disk": "pin_on_disk", "journal-bearing": "journal_bearing", "piston-ring": "piston_ring"}
-
-
-def fail(message):
-    sys.exit(f"check_sweep: {message}")
 
 
 def run(command):

@@ -12,12 +12,10 @@ import os
 import shutil
 import subprocess
 import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 HERE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-
-
-def fail(message):
-    sys.exit(f"check_sweep_micro: {message}")
 
 
 def main():

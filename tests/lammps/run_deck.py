@@ -14,20 +14,12 @@ import argparse
 import math
 import os
 import re
-import shutil
 import subprocess
 import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail, fresh_dir, mpi_env  # noqa: E402,F401  (re-exported to the LAMMPS checks)
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-
-
-def mpi_env():
-    env = dict(os.environ)
-    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-    env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
-    env.setdefault("OMP_NUM_THREADS", "1")
-    return env
 
 
 # Warnings a LAMMPS host prints on its own for a correct deck, by name; any other WARNING in a run that
@@ -63,11 +55,6 @@ def run_lammps(args, deck, variables=None, log="log.lammps", np=1):
     if np > 1 and f"with {np} MPI tasks" not in text:
         fail(f"{os.path.basename(deck)}: the run did not use {np} MPI ranks")
     return text
-
-
-def fresh_dir(path):
-    shutil.rmtree(path, ignore_errors=True)
-    os.makedirs(path)
 
 
 # Worn-asperity geometry for the checks, independent of the C++ kernels (bisection for the cap height).
@@ -111,11 +98,6 @@ def thermo_blocks(log_text):
             except ValueError:
                 pass
     return blocks
-
-
-def fail(message):
-    print("FAIL: " + message)
-    sys.exit(1)
 
 
 def subdomain_crossings(dump_text, log_text, skin):

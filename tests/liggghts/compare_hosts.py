@@ -24,6 +24,8 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lammps"))
 from run_deck import mpi_env  # noqa: E402  (the LAMMPS tier's MPI environment: run as root, oversubscribe)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TOLERANCE = 1e-10
@@ -43,11 +45,6 @@ SCENES = {
                    {"nload": 300, "nslide": 1500, "nhold": 200, "nresume": 500, "thermo_every": 100},
                    (("thermo_modify   format float %.10g", "thermo_modify   format float %.17g"),)),
 }
-
-
-def fail(message):
-    print(f"FAIL: {message}")
-    sys.exit(1)
 
 
 def run(command, workdir, log, np, mpiexec, variables, extra=()):
