@@ -18,6 +18,7 @@
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/journal_bearing.h"
+#include "coupling/scale_separation.h"
 #ifdef RUNIN_HAVE_VTK
 #include "coupling/vtk_export.h"
 #endif
@@ -405,6 +406,14 @@ int run(const Options &o, const PlotRunner &plot) {
     fmt::print("  law lookups       {}\n", continuum::describe(*r.range_use, *law->law));
     if (auto w = continuum::out_of_range_warning(*r.range_use, *law->law, law->policy); !w.empty())
       warnings.push_back(std::move(w));
+    if (const auto cell = coupling::cell_scale(*law->law)) {
+      // narrowest: the unworn contact; a node spans the bearing's length
+      const coupling::ScaleSeparation sep{*cell, 2.0 * p.bore.shaft_radius * s.initial_half_angle,
+                                          p.bore.shaft_radius * 2.0 * p.bore.arc_half_angle / p.bore.nodes *
+                                              p.bore.axial_width};
+      fmt::print("  scale separation  {}\n", coupling::describe(sep));
+      if (auto w = coupling::scale_separation_warning(sep); !w.empty()) warnings.push_back(std::move(w));
+    }
   }
   for (const auto &report : stress) print_line_stress(report, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);

@@ -15,6 +15,7 @@
 #include "continuum/axisymmetric_contact.h"
 #include "continuum/node_state_law.h"
 #include "continuum/pin_on_disk.h"
+#include "coupling/scale_separation.h"
 #ifdef RUNIN_HAVE_VTK
 #include "coupling/vtk_export.h"
 #endif
@@ -68,6 +69,7 @@ struct Curve {
   double ring_width = 0.0;
   std::optional<DiskTrack> disk;  // with wear.disk_k
   std::optional<coupling::RangeUse> range_use;  // friction.model = "state_law"
+  double smallest_node_area = 0.0;  // m^2, smallest loaded ring of the pin face at the start (state law)
 };
 
 Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames);
@@ -216,6 +218,9 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
   for (double a : area) flat_area += a;
   const std::vector<double> uniform(n, load / flat_area);
   auto pressure = [&]() -> const std::vector<double> & { return pin ? pin->contact().pressure : uniform; };
+  for (int i = 0; i < n; ++i)
+    if (pressure()[i] > 0.0 && (curve.smallest_node_area == 0.0 || area[i] < curve.smallest_node_area))
+      curve.smallest_node_area = area[i];
   auto contact_radius = [&] { return pin ? pin->contact().contact_radius : k.flat_radius; };
 
   continuum::NodeStateLaw nodes(law->law, law->policy, n);
@@ -536,6 +541,7 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
   fmt::print("  static limit      {:.6g} N m (mu_static = {:.6g})\n", c.friction->static_coefficient() *
                                                                           p.normal_load * p.track_radius,
              c.friction->static_coefficient());
+  std::string scale_warning;  // state law: the contact narrower than 3 homogenisation cells
   fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
   fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
   fmt::print("  steady state      {} (friction force and speed within {:g} % of final values from then on)\n",
@@ -572,6 +578,11 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
                  "{:.4g} m\n",
                  d.volume, d.depth, d.width, d.length);
       fmt::print("  law lookups       {}\n", continuum::describe(*curve.range_use, *law->law));
+      if (const auto cell = coupling::cell_scale(*law->law)) {
+        const coupling::ScaleSeparation sep{*cell, 2.0 * first.contact_radius, curve.smallest_node_area};
+        fmt::print("  scale separation  {}\n", coupling::describe(sep));
+        scale_warning = coupling::scale_separation_warning(sep);
+      }
     } else if (curve.disk) {
       const auto &d = *curve.disk;
       const auto &w = *c.contact->disk_wear;
@@ -591,6 +602,7 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
     }
   }
   std::vector<std::string> warnings;
+  if (!scale_warning.empty()) warnings.push_back(scale_warning);
   for (std::size_t i = 0; i < stress.size(); ++i) {
     const auto &f = stress[i].stress;
     fmt::print("  subsurface stress {} (t = {:g} s): {}, p0 = {:.4g} Pa, a = {:.4g} m, mu = {:.3g}\n",

@@ -18,6 +18,7 @@
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/piston_ring.h"
+#include "coupling/scale_separation.h"
 #include "continuum/ring_liner_wear.h"
 #ifdef RUNIN_HAVE_VTK
 #include "coupling/vtk_export.h"
@@ -799,6 +800,18 @@ int run(const Options &o, const PlotRunner &plot) {
     fmt::print("  law lookups       {}\n", continuum::describe(coupled->use, *law->law));
     if (auto w = continuum::out_of_range_warning(coupled->use, *law->law, law->policy); !w.empty())
       warnings.push_back(std::move(w));
+    if (const auto cell = coupling::cell_scale(*law->law)) {
+      // narrowest: the unworn crowned face's contact; a face cell spans the bore's circumference
+      double width = passes.front().rows.front().width, node = 0.0;
+      for (std::size_t k = 0; k < c.rings.size(); ++k) {
+        width = std::min(width, passes[k].rows.front().width);
+        const double area = wear[k].ring_cell_width() * std::acos(-1.0) * c.rings[k].wear_settings.bore;
+        node = k == 0 ? area : std::min(node, area);
+      }
+      const coupling::ScaleSeparation sep{*cell, width, node};
+      fmt::print("  scale separation  {}\n", coupling::describe(sep));
+      if (auto w = coupling::scale_separation_warning(sep); !w.empty()) warnings.push_back(std::move(w));
+    }
   }
   for (const auto &report : stress) print_line_stress(report, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);

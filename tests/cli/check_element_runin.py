@@ -16,11 +16,15 @@ Asserted for every element (ring A for the pack):
     must be higher by more than the smoother law's seed band at h = 0 (measured 0.0008);
   - Archard's invariant: the rough body's worn volume over K * integral of its normal load ds, K = the law's
     wear_rate / p at its lowest grid point, within 1 % of 1 (measured 0.9996 for the bearing and ring A:
-    out_of_range = "archard" keeps node wear proportional to p below the grid; "clamp" gave 4.54 and 1.41).
+    out_of_range = "archard" keeps node wear proportional to p below the grid; "clamp" gave 4.54 and 1.41);
+  - scale separation as the summary reports it (check_scale_separation).
 """
 import argparse
 import csv
+import json
+import math
 import os
+import re
 import subprocess
 import sys
 import tomllib
@@ -50,6 +54,35 @@ def run(runin, element, case, law, out):
                              "--output-dir", out, "--no-plot"], capture_output=True, text=True)
     if result.returncode != 0:
         fail(f"{element} on {law}: {result.stderr.strip()}")
+    return result.stdout
+
+
+def check_scale_separation(element, case, stdout, law_path):
+    """The summary's scale-separation line against the law's cell: the 3 mm flat pin is 3.125 cells of 0.96 mm
+    wide and its centre ring (radius a / rings) holds eta pi (a / rings)^2 summits; the bearing's and the ring's
+    unworn contacts are narrower than one cell, which the summary must say in a WARNING."""
+    match = re.search(r"scale separation  contact (\S+) mm wide = (\S+) cells of (\S+) mm \((holds|fails)[^)]*\); "
+                      r"smallest loaded node (\S+) summits", stdout)
+    if not match:
+        fail(f"{element}: no scale-separation line in the summary")
+    width, cells, cell, verdict, summits = match.groups()
+    with open(law_path) as f:
+        surface = json.load(f)["surface"]
+    cell_size = surface["nside"] * surface["spacing"]
+    eta = surface["summits"] / cell_size ** 2
+    if abs(float(cell) * 1e-3 / cell_size - 1.0) > 1e-3 or abs(float(cells) / (float(width) / float(cell)) - 1) > 2e-3:
+        fail(f"{element}: cell {cell} mm, {cells} cells for {width} mm: not the law's cell {cell_size * 1e3} mm")
+    if element == "pin-on-disk":
+        with open(os.path.join(SOURCE, "inputs", case), "rb") as f:
+            contact = tomllib.load(f)["contact"]
+        a, rings = float(contact["flat_radius"]), int(contact["rings"])
+        expected = eta * math.pi * (a / rings) ** 2
+        if verdict != "holds" or abs(float(width) * 1e-3 / (2 * a) - 1) > 1e-3 or abs(float(summits) / expected - 1) > 1e-3:
+            fail(f"{element}: scale separation {width} mm, {verdict}, {summits} summits; expected 2a = {2e3 * a} mm, "
+                 f"holds, {expected:.4g} summits in the centre ring")
+    elif verdict != "fails" or "WARNING: no scale separation" not in stdout:
+        fail(f"{element}: a contact of {width} mm = {cells} cells must be reported as failing scale separation")
+    print(f"  scale separation: {width} mm = {cells} cells of {cell} mm ({verdict}), smallest node {summits} summits")
 
 
 def summary(path, law, h_column):
@@ -98,7 +131,8 @@ def main():
         got = {}
         for name, path in LAWS.items():
             out = os.path.join(a.workdir, f"{element}_{name}")
-            run(a.runin, element, case, path, out)
+            stdout = run(a.runin, element, case, path, out)
+            check_scale_separation(element, case, stdout, path)
             got[name] = summary(os.path.join(out, csv_name), laws[name], h_column)
             s = got[name]
             print(f"{element}, {name} law: mu peak {s['peak']:.4f} -> {s['end']:.4f} (t90 {s['t90']:.4g} s), "

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "coupling/ave_time_reader.h"
+#include "coupling/scale_separation.h"
 #include "coupling/state_law.h"
 
 using namespace runin::coupling;
@@ -189,4 +190,26 @@ TEST(StateLaw, MalformedFilesGiveOneLineNamingTheKey) {
   doc = good;
   doc["fields"]["area_fraction"]["mean"][0][0] = "x";
   expect_error(doc, "area_fraction.mean");
+}
+
+// The homogenisation cell from the law's surface metadata, and the scale-separation criterion against it.
+TEST(ScaleSeparation, CellFromTheLawsSurfaceAndTheThreeCellCriterion) {
+  const auto base = make_law(false);
+  EXPECT_FALSE(cell_scale(base).has_value());  // a synthetic law names no cell
+  auto json = base.to_json();
+  json["surface"] = {{"nside", 48}, {"spacing", 2e-5}, {"summits", 2304}, {"R", 1e-4}};
+  const auto law = StateLaw::from_json(json, "law.json");
+  const auto cell = cell_scale(law);
+  ASSERT_TRUE(cell.has_value());
+  EXPECT_DOUBLE_EQ(cell->cell_size, 48 * 2e-5);
+  EXPECT_NEAR(cell->summit_density, 1.0 / (2e-5 * 2e-5), 1e-6 / (2e-5 * 2e-5));
+  const ScaleSeparation narrow{*cell, 0.35e-3, 58.6e-6 * 25e-3};
+  EXPECT_FALSE(narrow.holds());
+  EXPECT_NEAR(narrow.cells_across(), 0.35e-3 / 0.96e-3, 1e-12);
+  EXPECT_NEAR(narrow.summits_per_node(), 58.6e-6 * 25e-3 / 4e-10, 1e-6);
+  EXPECT_NE(scale_separation_warning(narrow).find("no scale separation"), std::string::npos);
+  const ScaleSeparation wide{*cell, 3 * 0.96e-3, 1e-6};
+  EXPECT_TRUE(wide.holds());
+  EXPECT_TRUE(scale_separation_warning(wide).empty());
+  EXPECT_NE(describe(wide).find("holds"), std::string::npos);
 }
