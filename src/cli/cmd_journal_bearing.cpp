@@ -15,6 +15,7 @@
 #include "cli/case_file.h"
 #include "cli/journal_bearing_case.h"
 #include "cli/line_stress_report.h"
+#include "cli/lubricated_bearing.h"
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/journal_bearing.h"
@@ -33,6 +34,7 @@ struct Options {
   std::string case_path, output_dir;
   std::optional<std::string> law_path;
   bool no_plot = false;
+  bool stribeck = false;  // lubricated cases only
   long max_wear_updates = 20000;  // each re-solves the contact: ~1 ms on 512 nodes, so ~20 s
 };
 
@@ -271,6 +273,10 @@ std::vector<LineStressReport> subsurface_stress(const JournalBearingCase &c, con
 }
 
 int run(const Options &o, const PlotRunner &plot) {
+  // A [lubrication] table selects the mixed-lubrication run-in (doc/lubricated_journal_bearing.md).
+  if (is_lubricated_case(o.case_path))
+    return run_lubricated_bearing({o.case_path, o.output_dir, o.law_path, o.no_plot, o.stribeck}, plot);
+  if (o.stribeck) throw InputError("--stribeck: needs a lubricated case (a [lubrication] table in " + o.case_path + ")");
   const JournalBearingCase c = read_journal_bearing_case(o.case_path, o.law_path);
   const Curve main_curve = run_case(c, *c.friction, true, o.max_wear_updates);
   std::vector<Curve> sweep;
@@ -453,6 +459,8 @@ Subcommand add_journal_bearing_command(CLI::App &app, PlotRunner plot) {
   cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required()
       ->check(output_directory());
   cmd->add_flag("--no-plot", options->no_plot, "write CSV and VTK only");
+  cmd->add_flag("--stribeck", options->stribeck,
+                "lubricated case: also run the Stribeck sweep (as a [stribeck] table does), write stribeck.csv");
   cmd->add_option("--max-wear-updates", options->max_wear_updates,
                   "stop with an error instead of running more wear updates (contact re-solves) than this")
       ->check(CLI::PositiveNumber)
