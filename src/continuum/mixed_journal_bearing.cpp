@@ -578,6 +578,8 @@ MixedRunReport run_in(const MixedJournalBearingSystem &sys, const MixedRunSettin
     if (t >= next_out * (1.0 - 1e-12)) {
       ++out_index;
       emit();
+    } else if (settings.sample_wear_limited_steps) {
+      emit();   // a wear-limited step: the run-in transient, resolved step by step
     }
   }
   rep.final_state = st;

@@ -145,6 +145,7 @@ struct MixedRunSettings {
   double depth_step_fraction = 0.5;
   long max_steps = 200000;
   double rel_tol = 1e-8;             // force balance
+  bool sample_wear_limited_steps = true;   // also a sample after every step shorter than the output interval
 };
 
 struct MixedSample {
