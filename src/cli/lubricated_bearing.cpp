@@ -220,9 +220,10 @@ int run_lubricated_bearing(const LubricatedOptions &o, const PlotRunner &plot) {
       [&](const continuum::MixedFrame &f) { frames.push_back(f); });
   if (!report.ok()) {
     if (report.status == continuum::MixedRunStatus::EquilibriumFailed && samples.empty() &&
-        report.message.rfind(continuum::to_string(continuum::MixedStatus::GapCloses), 0) == 0)
+        report.equilibrium_status == continuum::MixedStatus::GapCloses)
       throw InputError(c.path + ": key 'bearing.load': the film and asperities cannot carry it before the gap closes "
-                       "(eccentricity would reach 1): " + report.message + "; lower the load or raise the speed or viscosity");
+                       "(eccentricity would reach 1): " + report.equilibrium_message +
+                       "; lower the load or raise the speed or viscosity");
     throw std::runtime_error(std::string("lubricated journal bearing: ") + continuum::to_string(report.status) + ": " +
                              report.message);
   }

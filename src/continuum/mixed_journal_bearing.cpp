@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -333,10 +334,11 @@ MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &st
     if (failed) return give_up(failure, failure.status, failure.message);
     if (share.status == tribo::LoadShareStatus::NotBracketed) {
       // also with the resultant turned freely: the largest load the surfaces carry before they touch is below W
-      return give_up(at(share.h), MixedStatus::GapCloses,
-                     "film and asperities carry only " + std::to_string(share.film_load + share.asperity_load) +
-                         " N of the load " + std::to_string(W) + " N along the load line when the gap closes "
-                         "(eccentricity " + std::to_string(1.0 - share.h / c) + ")");
+      std::ostringstream m;
+      m.precision(6);
+      m << "film and asperities carry only " << share.film_load + share.asperity_load << " N of W = " << W
+        << " N before the gap closes (eccentricity " << 1.0 - share.h / c << ")";
+      return give_up(at(share.h), MixedStatus::GapCloses, m.str());
     }
     x[0] = 1.0 - share.h / c;
     x[1] = 0.0;
@@ -504,7 +506,11 @@ MixedRunReport run_in(const MixedJournalBearingSystem &sys, const MixedRunSettin
     for (int k = 0; k < 3; ++k) {
       eq = sys.equilibrium(st, p.speed_at(0.0), k ? &eq : nullptr, settings.rel_tol);
       rep.film_solves += eq.film_solves;
-      if (!eq.ok()) return fail(MixedRunStatus::EquilibriumFailed, std::string(to_string(eq.status)) + ": " + eq.message);
+      if (!eq.ok()) {
+        rep.equilibrium_status = eq.status;
+        rep.equilibrium_message = eq.message;
+        return fail(MixedRunStatus::EquilibriumFailed, std::string(to_string(eq.status)) + ": " + eq.message);
+      }
       st.asperity_pressure = eq.asperity_pressure;
     }
   } catch (const std::out_of_range &e) {
@@ -569,8 +575,11 @@ MixedRunReport run_in(const MixedJournalBearingSystem &sys, const MixedRunSettin
     try {
       MixedEquilibrium next = sys.equilibrium(st, u1, &eq, settings.rel_tol);
       rep.film_solves += next.film_solves;
-      if (!next.ok())
+      if (!next.ok()) {
+        rep.equilibrium_status = next.status;
+        rep.equilibrium_message = next.message;
         return fail(MixedRunStatus::EquilibriumFailed, std::string(to_string(next.status)) + ": " + next.message);
+      }
       eq = std::move(next);
     } catch (const std::out_of_range &e) {
       return fail(MixedRunStatus::LawOutOfRange, e.what());

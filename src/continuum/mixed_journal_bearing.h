@@ -173,6 +173,8 @@ const char *to_string(MixedRunStatus status);
 struct MixedRunReport {
   MixedRunStatus status = MixedRunStatus::Finished;
   std::string message;
+  MixedStatus equilibrium_status = MixedStatus::Converged;   // EquilibriumFailed: the failed balance's status
+  std::string equilibrium_message;                           // and its message
   long steps = 0, film_solves = 0;
   coupling::RangeUse range_use;
   double rate_volume_integral = 0.0;   // m^3: sum over steps of bore_volume rate x ds (the bookkeeping check)
