@@ -219,8 +219,10 @@ MixedEquilibrium MixedJournalBearingSystem::evaluate(const MixedWearState &state
     const double g = b.clearance * (1.0 + eccentricity * std::cos(a - b.line_of_centres)) + b.gap_addition[i];
     e.gap[i] = g;
     if (g < e.h_min) e.h_min = g, i_min = i;
-    const tribo::GreenwoodTripp gt(p_.summit_density, p_.summit_radius, e.sigma[i], p_.effective_modulus);
-    const double pa = e.sigma[i] > 0.0 ? gt.pressure(g) : 0.0;
+    const double pa =
+        e.sigma[i] > 0.0
+            ? tribo::GreenwoodTripp(p_.summit_density, p_.summit_radius, e.sigma[i], p_.effective_modulus).pressure(g)
+            : 0.0;
     e.asperity_pressure[i] = pa;
     if (pa > 0.0) {
       ax += pa * ca * area;

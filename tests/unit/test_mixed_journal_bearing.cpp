@@ -242,3 +242,38 @@ TEST(MixedJournalBearing, BadInputAndGapClosing)
     }
   }
 }
+
+// A speed table: the quasi-static film follows U(t) (linear between the points, held after them), the sliding
+// distance is the integral of U, and a step ends at every corner of the table.
+TEST(MixedJournalBearing, SpeedTableIsFollowedAndIntegrated)
+{
+  MixedJournalBearingParameters p = bearing(48, 7);
+  p.speed_time = {0.0, 20.0, 40.0};
+  p.speed_value = {0.15, 0.6, 0.3};
+  const MixedJournalBearingSystem sys(p);
+  MixedRunSettings rs;
+  rs.t_end = 60.0;
+  rs.output_interval = 7.0;   // not a divisor of the corners: the steps must stop at 20 s and 40 s themselves
+  std::vector<MixedSample> s;
+  const MixedRunReport rep = run_in(sys, rs, [&](const MixedSample &x) { s.push_back(x); });
+  ASSERT_TRUE(rep.ok()) << rep.message;
+  const auto distance = [](double t) {   // integral of the table
+    if (t <= 20.0) return 0.15 * t + 0.5 * (0.45 / 20.0) * t * t;
+    if (t <= 40.0) return 7.5 + 0.6 * (t - 20.0) - 0.5 * (0.3 / 20.0) * (t - 20.0) * (t - 20.0);
+    return 7.5 + 9.0 + 0.3 * (t - 40.0);
+  };
+  for (const auto &x : s) {
+    EXPECT_NEAR(x.speed, p.speed_at(x.t), 1e-15);
+    EXPECT_NEAR(x.distance, distance(x.t), 1e-9 * distance(rs.t_end)) << "t = " << x.t;
+  }
+  EXPECT_NEAR(s.back().t, rs.t_end, 1e-9);
+  // faster means a thicker film: lambda at 20 s (0.6 m/s) above that at 60 s (0.3 m/s) above the start (0.15 m/s)
+  const auto at = [&](double t) {
+    const MixedSample *best = &s.front();
+    for (const auto &x : s)
+      if (std::abs(x.t - t) < std::abs(best->t - t)) best = &x;
+    return *best;
+  };
+  EXPECT_GT(at(21.0).lambda, s.back().lambda);
+  EXPECT_GT(s.back().lambda, s.front().lambda);
+}
