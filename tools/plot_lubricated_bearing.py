@@ -55,6 +55,7 @@ def runin(args):
     ax.legend(fontsize=8)
     for ax in list(axes.flat) + [ax2]:
         ax.set_xscale("symlog", linthresh=linthresh)
+        ax.set_xlim(0.0, t[-1])
     fig.savefig(args.png, dpi=110, format="png")
 
 
