@@ -311,7 +311,7 @@ MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &st
   };
 
   double x[2], J[4];
-  bool have_jacobian = false;
+  bool have_jacobian = false, fresh_jacobian = false;
   MixedEquilibrium cur;
   if (guess && guess->jacobian_valid) {
     x[0] = guess->eccentricity;
@@ -359,6 +359,7 @@ MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &st
     J[0] = (r1[0] - r[0]) / de, J[2] = (r1[1] - r[1]) / de;
     J[1] = (r2[0] - r[0]) / da, J[3] = (r2[1] - r[1]) / da;
     have_jacobian = true;
+    fresh_jacobian = true;
   };
   for (int iter = 0; iter < 60; ++iter) {
     if (failed) return give_up(failure, failure.status, failure.message);
@@ -393,12 +394,13 @@ MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &st
       }
     }
     if (!accepted) {
-      if (iter > 0) {   // a stale (Broyden) Jacobian: rebuild it once before giving up
+      if (!fresh_jacobian) {   // a stale (Broyden or warm-start) Jacobian: rebuild it before giving up
         have_jacobian = false;
         continue;
       }
       return give_up(cur, MixedStatus::NotConverged, "balance Newton: no descent along the Newton direction");
     }
+    fresh_jacobian = false;
     // Broyden update of the Jacobian
     const double sx0 = lambda * dx0, sx1 = lambda * dx1;
     const double y0 = rt[0] - r[0], y1 = rt[1] - r[1];

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Runs the lubricated mode of `runin journal-bearing` on a case and checks its outputs against its summary.
 
-usage: check_lubricated_bearing.py RUNIN CASE OUTDIR [--stribeck] [--png] [--frames N]
+usage: check_lubricated_bearing.py RUNIN CASE OUTDIR [--stribeck [--stribeck-flag]] [--png] [--frames N]
 
 Checks: exit 0; lubricated.csv (and stribeck.csv, PNGs, the VTK series of N frames with the film fields) exist;
 the summary's numbers (initial lambda, peak film and asperity pressure, end state, Stribeck minimum) are those
@@ -44,9 +44,11 @@ def main():
     parser.add_argument("--stribeck", action="store_true")
     parser.add_argument("--png", action="store_true")
     parser.add_argument("--frames", type=int, default=0)
+    parser.add_argument("--stribeck-flag", action="store_true", help="pass --stribeck to runin (no [stribeck] table)")
     a = parser.parse_args()
     shutil.rmtree(a.outdir, ignore_errors=True)
-    cmd = [a.runin, "journal-bearing", a.case, "--output-dir", a.outdir] + ([] if a.png else ["--no-plot"])
+    cmd = [a.runin, "journal-bearing", a.case, "--output-dir", a.outdir] + ([] if a.png else ["--no-plot"]) + (
+        ["--stribeck"] if a.stribeck_flag else [])
     run = subprocess.run(cmd, capture_output=True, text=True)
     print(run.stdout)
     print(run.stderr, file=sys.stderr)
