@@ -452,11 +452,14 @@ int run(const Options &o, const PlotRunner &plot) {
 
 Subcommand add_journal_bearing_command(CLI::App &app, PlotRunner plot) {
   auto options = std::make_shared<Options>();
-  auto *cmd = app.add_subcommand("journal-bearing", "Dry journal bearing run-in: contact, friction torque, wear (thesis ch. 5)");
+  auto *cmd = app.add_subcommand(
+      "journal-bearing",
+      "Journal bearing run-in: dry (contact, friction torque, wear; thesis ch. 5), or lubricated with a [lubrication] "
+      "table (mixed lubrication on a state law, Stribeck sweep)");
   cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
   cmd->add_option("--law", options->law_path,
                   "law file: from fit-law (friction.model = \"law_file\"), or from homogenise (\"state_law\", overrides friction.law)");
-  cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required()
+  cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv (lubricated: lubricated.csv), plots and vtk/")->required()
       ->check(output_directory());
   cmd->add_flag("--no-plot", options->no_plot, "write CSV and VTK only");
   cmd->add_flag("--stribeck", options->stribeck,
