@@ -332,7 +332,7 @@ MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &st
     const double sigma_ref = std::max(1e-12, node_sigma(state).front());
     const auto share = tribo::solve_load_share(
         W, [&](double h) { return at(h).film_load; },
-        [&](double h) { return std::hypot(at(h).asperity_load, 0.0); }, sigma_ref, c * (1.0 - eps_top), c, 1e-6);
+        [&](double h) { return at(h).asperity_load; }, sigma_ref, c * (1.0 - eps_top), c, 1e-6);
     if (failed) return give_up(failure, failure.status, failure.message);
     if (share.status == tribo::LoadShareStatus::NotBracketed) {
       // also with the resultant turned freely: the largest load the surfaces carry before they touch is below W
