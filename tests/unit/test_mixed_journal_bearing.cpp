@@ -277,3 +277,14 @@ TEST(MixedJournalBearing, SpeedTableIsFollowedAndIntegrated)
   EXPECT_GT(at(21.0).lambda, s.back().lambda);
   EXPECT_GT(s.back().lambda, s.front().lambda);
 }
+
+// The warm-started balance Newton rebuilds a stale Jacobian before it gives up: on the coarse 48 x 7 grid the
+// sweep down from 150 m/s stopped at 36.6 m/s ("no descent along the Newton direction") before that.
+TEST(MixedJournalBearing, StribeckSweepRecoversFromAStaleJacobian)
+{
+  const MixedJournalBearingSystem sys(bearing(48, 7));
+  const StribeckResult r = stribeck_sweep(sys, sys.initial_state(), 1.5e-4, 150.0, 50);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_EQ(r.points.size(), 50u);
+  EXPECT_LT(r.points.back().eccentricity, 0.05);
+}
