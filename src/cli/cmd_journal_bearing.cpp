@@ -15,6 +15,7 @@
 #include "cli/case_file.h"
 #include "cli/journal_bearing_case.h"
 #include "cli/line_stress_report.h"
+#include "cli/lubricated_bearing.h"
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/journal_bearing.h"
@@ -34,6 +35,7 @@ struct Options {
   std::string case_path, output_dir;
   std::optional<std::string> law_path;
   bool no_plot = false;
+  bool stribeck = false;  // lubricated cases only
   long max_wear_updates = 20000;  // each re-solves the contact: ~1 ms on 512 nodes, so ~20 s
 };
 
@@ -272,6 +274,10 @@ std::vector<LineStressReport> subsurface_stress(const JournalBearingCase &c, con
 }
 
 int run(const Options &o, const PlotRunner &plot) {
+  // A [lubrication] table selects the mixed-lubrication run-in (doc/lubricated_journal_bearing.md).
+  if (is_lubricated_case(o.case_path))
+    return run_lubricated_bearing({o.case_path, o.output_dir, o.law_path, o.no_plot, o.stribeck}, plot);
+  if (o.stribeck) throw InputError("--stribeck: needs a lubricated case (a [lubrication] table in " + o.case_path + ")");
   const JournalBearingCase c = read_journal_bearing_case(o.case_path, o.law_path);
   const Curve main_curve = run_case(c, *c.friction, true, o.max_wear_updates);
   std::vector<Curve> sweep;
@@ -451,13 +457,18 @@ int run(const Options &o, const PlotRunner &plot) {
 
 Subcommand add_journal_bearing_command(CLI::App &app, PlotRunner plot) {
   auto options = std::make_shared<Options>();
-  auto *cmd = app.add_subcommand("journal-bearing", "Dry journal bearing run-in: contact, friction torque, wear (thesis ch. 5)");
+  auto *cmd = app.add_subcommand(
+      "journal-bearing",
+      "Journal bearing run-in: dry (contact, friction torque, wear; thesis ch. 5), or lubricated with a [lubrication] "
+      "table (mixed lubrication on a state law, Stribeck sweep)");
   cmd->add_option("case", options->case_path, "case file (TOML, or JSON if it ends in .json)")->required();
   cmd->add_option("--law", options->law_path,
                   "law file: from fit-law (friction.model = \"law_file\"), or from homogenise (\"state_law\", overrides friction.law)");
-  cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv, plots and vtk/")->required()
+  cmd->add_option("--output-dir", options->output_dir, "directory for journal_bearing.csv (lubricated: lubricated.csv), plots and vtk/")->required()
       ->check(output_directory());
   cmd->add_flag("--no-plot", options->no_plot, "write CSV and VTK only");
+  cmd->add_flag("--stribeck", options->stribeck,
+                "lubricated case: also run the Stribeck sweep (as a [stribeck] table does), write stribeck.csv");
   cmd->add_option("--max-wear-updates", options->max_wear_updates,
                   "stop with an error instead of running more wear updates (contact re-solves) than this")
       ->check(CLI::PositiveNumber)

@@ -35,10 +35,22 @@ struct FaceCoefficients {
   double couette = 0.0;        // u_m h_T + u_d sigma phi_s
 };
 
-FaceCoefficients face_coefficients(const ReynoldsSystem &s, double h)
+// The roughness the film equation sees at node k (0: classical Reynolds).
+double node_sigma(const ReynoldsSystem &s, int k)
+{
+  if (s.sigma.empty() || !s.roughness.flow_factors) return s.roughness.averaged_sigma();
+  return s.sigma[k];
+}
+
+double face_sigma(const ReynoldsSystem &s, int a, int b)
+{
+  if (s.sigma.empty() || !s.roughness.flow_factors) return s.roughness.averaged_sigma();
+  return 0.5 * (s.sigma[a] + s.sigma[b]);
+}
+
+FaceCoefficients face_coefficients(const ReynoldsSystem &s, double h, double sigma)
 {
   const FilmRoughness &r = s.roughness;
-  const double sigma = r.averaged_sigma();
   const double u_m = 0.5 * s.u_moving, u_d = 0.5 * s.u_moving;
   const double hp = std::max(h, 0.0);
   const double h3 = hp * hp * hp / (12.0 * s.viscosity);
@@ -57,9 +69,8 @@ FaceCoefficients face_coefficients(const ReynoldsSystem &s, double h)
 }
 
 // Couette content of a cell and its time derivative factor.
-double content(const ReynoldsSystem &s, double h)
+double content(const ReynoldsSystem &s, double h, double sigma)
 {
-  const double sigma = s.roughness.averaged_sigma();
   if (sigma > 0.0 && s.roughness.contact_factor) return tribo::mean_gap(h, sigma);
   return std::max(h, 0.0);
 }
@@ -67,7 +78,7 @@ double content(const ReynoldsSystem &s, double h)
 double content_rate(const ReynoldsSystem &s, int k)
 {
   if (s.dhdt.empty()) return 0.0;
-  const double sigma = s.roughness.averaged_sigma();
+  const double sigma = node_sigma(s, k);
   const double dc = sigma > 0.0 && s.roughness.contact_factor ? tribo::contact_factor(s.h[k] / sigma) : 1.0;
   return dc * s.dhdt[k];
 }
@@ -105,12 +116,12 @@ std::vector<Face> faces(const ReynoldsSystem &s)
       const int a = s.index(i, j);
       if (i + 1 < s.nx || s.periodic_x) {
         const int b = s.index((i + 1) % s.nx, j);
-        const FaceCoefficients c = face_coefficients(s, 0.5 * (s.h[a] + s.h[b]));
+        const FaceCoefficients c = face_coefficients(s, 0.5 * (s.h[a] + s.h[b]), face_sigma(s, a, b));
         out.push_back({a, b, c.kx * s.dy / s.dx, c.couette * s.dy});
       }
       if (j + 1 < s.ny) {
         const int b = s.index(i, j + 1);
-        const FaceCoefficients c = face_coefficients(s, 0.5 * (s.h[a] + s.h[b]));
+        const FaceCoefficients c = face_coefficients(s, 0.5 * (s.h[a] + s.h[b]), face_sigma(s, a, b));
         out.push_back({a, b, c.ky * s.dx / s.dy, 0.0});
       }
     }
@@ -154,6 +165,11 @@ void ReynoldsSystem::validate() const
       throw InvalidCoefficient("h: the film gap must be > 0 at every node (the surfaces touch), got " +
                                std::to_string(v));
   if (!dhdt.empty() && dhdt.size() != n) throw InvalidCoefficient("dhdt: one value per node or none");
+  if (!sigma.empty()) {
+    if (sigma.size() != n) throw InvalidCoefficient("sigma: one roughness per node or none");
+    for (double v : sigma)
+      if (!(v >= 0.0) || !std::isfinite(v)) throw InvalidCoefficient("sigma: node roughness must be >= 0 and finite");
+  }
   if (!theta_prev.empty()) {
     if (theta_prev.size() != n) throw InvalidCoefficient("theta_prev: one value per node or none");
     require_positive(dt, "dt");
@@ -194,7 +210,7 @@ ReynoldsSolution ReynoldsSolver::solve(const ReynoldsSystem &s, const std::optio
   std::vector<double> rate(n, 0.0), cont(n, 0.0);
   for (int k = 0; k < n; ++k) {
     rate[k] = content_rate(s, k);
-    cont[k] = content(s, s.h[k]);
+    cont[k] = content(s, s.h[k], node_sigma(s, k));
   }
 
   ReynoldsSolution sol;
@@ -292,7 +308,7 @@ ReynoldsSolution ReynoldsSolver::solve(const ReynoldsSystem &s, const std::optio
 double ReynoldsSolver::flux_x(const ReynoldsSystem &s, const ReynoldsSolution &sol, int i, int j)
 {
   const int a = s.index(i, j), b = s.index((i + 1) % s.nx, j);
-  const FaceCoefficients c = face_coefficients(s, 0.5 * (s.h[a] + s.h[b]));
+  const FaceCoefficients c = face_coefficients(s, 0.5 * (s.h[a] + s.h[b]), face_sigma(s, a, b));
   const Face f{a, b, c.kx * s.dy / s.dx, c.couette * s.dy};
   return face_flux(f, sol.pressure, sol.fill);
 }
@@ -300,7 +316,7 @@ double ReynoldsSolver::flux_x(const ReynoldsSystem &s, const ReynoldsSolution &s
 double ReynoldsSolver::flux_y(const ReynoldsSystem &s, const ReynoldsSolution &sol, int i, int j)
 {
   const int a = s.index(i, j), b = s.index(i, j + 1);
-  const FaceCoefficients c = face_coefficients(s, 0.5 * (s.h[a] + s.h[b]));
+  const FaceCoefficients c = face_coefficients(s, 0.5 * (s.h[a] + s.h[b]), face_sigma(s, a, b));
   const Face f{a, b, c.ky * s.dx / s.dy, 0.0};
   return face_flux(f, sol.pressure, sol.fill);
 }
@@ -310,15 +326,15 @@ namespace {
 
 // Shear stress on surface 1 (moving at U) at a node: Couette part carried by the filled share theta,
 // Poiseuille part phi_fp h/2 dp/dx.
-double shear_stress(const ReynoldsSystem &s, double h, double fill, double dpdx)
+double shear_stress(const ReynoldsSystem &s, double h, double sigma, double fill, double dpdx)
 {
   const FilmRoughness &r = s.roughness;
-  const double sigma = r.averaged_sigma();
   double f = 1.0, fp = 1.0;
   if (sigma > 0.0) {
     const double H = h / sigma;
-    const double s2 = sigma * sigma;
-    const double vr = (r.sigma_moving * r.sigma_moving - r.sigma_fixed * r.sigma_fixed) / s2;
+    const double s0 = r.sigma();   // the split between the surfaces (a per-node sigma keeps it)
+    const double s2 = s0 * s0;
+    const double vr = s2 > 0.0 ? (r.sigma_moving * r.sigma_moving - r.sigma_fixed * r.sigma_fixed) / s2 : 0.0;
     f = tribo::shear_stress_factor_f(H) - vr * tribo::shear_stress_factor_fs(H, r.gamma);
     fp = tribo::shear_stress_factor_fp(H, r.gamma);
   }
@@ -336,7 +352,7 @@ double face_shear(const ReynoldsSystem &s, const ReynoldsSolution &sol, int i, i
   const double h = 0.5 * (s.h[a] + s.h[b]);
   const int up = s.u_moving >= 0.0 ? i : (i + 1) % s.nx;
   const double fill = full_film ? 1.0 : sol.fill[s.index(up, fill_row)];
-  return shear_stress(s, h, fill, (sol.pressure[b] - sol.pressure[a]) / s.dx);
+  return shear_stress(s, h, face_sigma(s, a, b), fill, (sol.pressure[b] - sol.pressure[a]) / s.dx);
 }
 
 }    // namespace
@@ -348,9 +364,19 @@ void HydroJournalBearing::validate() const
   require_positive(clearance, "clearance");
   require_positive(viscosity, "viscosity");
   require_finite(omega, "omega");
-  if (!(eccentricity_ratio >= 0.0) || !(eccentricity_ratio < 1.0))
+  if (gap_addition.empty() && (!(eccentricity_ratio >= 0.0) || !(eccentricity_ratio < 1.0)))
     throw InvalidCoefficient("eccentricity_ratio must be in [0, 1) (at 1 the gap closes), got " +
                              std::to_string(eccentricity_ratio));
+  if (!gap_addition.empty() && (!(eccentricity_ratio >= 0.0) || !std::isfinite(eccentricity_ratio)))
+    throw InvalidCoefficient("eccentricity_ratio must be >= 0 and finite, got " + std::to_string(eccentricity_ratio));
+  require_finite(line_of_centres, "line_of_centres");
+  if (!gap_addition.empty() && gap_addition.size() != static_cast<std::size_t>(n_theta))
+    throw InvalidCoefficient("gap_addition: one value per circumferential node (n_theta) or none");
+  for (double v : gap_addition) require_finite(v, "gap_addition");
+  if (!node_sigma.empty() && node_sigma.size() != static_cast<std::size_t>(n_theta))
+    throw InvalidCoefficient("node_sigma: one value per circumferential node (n_theta) or none");
+  for (double v : node_sigma)
+    if (!(v >= 0.0) || !std::isfinite(v)) throw InvalidCoefficient("node_sigma must be >= 0 and finite");
   require_finite(groove_angle, "groove_angle");
   if (!(supply_pressure >= 0.0) || !std::isfinite(supply_pressure))
     throw InvalidCoefficient("supply_pressure must be >= 0 and finite");
@@ -388,11 +414,17 @@ ReynoldsSystem HydroJournalBearing::system() const
   s.fixed.assign(n, 0);
   s.fixed_pressure.assign(n, 0.0);
   s.fixed_fill.assign(n, 1.0);
+  if (!node_sigma.empty()) {
+    s.sigma.resize(n);
+    for (int j = 0; j < n_axial; ++j)
+      for (int i = 0; i < n_theta; ++i) s.sigma[s.index(i, j)] = node_sigma[i];
+  }
   const int g = groove_column(*this);
   for (int j = 0; j < n_axial; ++j)
     for (int i = 0; i < n_theta; ++i) {
       const int k = s.index(i, j);
-      s.h[k] = clearance * (1.0 + eccentricity_ratio * std::cos(i * 2.0 * kPi / n_theta));
+      s.h[k] = clearance * (1.0 + eccentricity_ratio * std::cos(i * 2.0 * kPi / n_theta - line_of_centres));
+      if (!gap_addition.empty()) s.h[k] += gap_addition[i];
       if (j == 0 || j == n_axial - 1) s.fixed[k] = 1;
       else if (i == g) {
         s.fixed[k] = 1;
@@ -403,11 +435,11 @@ ReynoldsSystem HydroJournalBearing::system() const
 }
 
 HydroJournalResult solve_journal_bearing(const HydroJournalBearing &b, const tribo::GreenwoodTripp *contact,
-                                         const ReynoldsSolver &solver)
+                                         const ReynoldsSolver &solver, const std::vector<double> *initial)
 {
   const ReynoldsSystem s = b.system();
   HydroJournalResult r;
-  r.film = solver.solve(s);
+  r.film = initial ? solver.solve(s, *initial) : solver.solve(s);
   const ReynoldsSolution &sol = r.film;
   const int nx = s.nx, ny = s.ny;
   const double dth = 2.0 * kPi / nx;
@@ -420,7 +452,7 @@ HydroJournalResult solve_journal_bearing(const HydroJournalBearing &b, const tri
     for (int i = 0; i < nx; ++i) {
       const int k = s.index(i, j);
       const double area = wy * s.dx * s.dy;
-      const double th = i * dth;
+      const double th = i * dth - b.line_of_centres;
       const double p = sol.pressure[k];
       fx += p * std::cos(th) * area;
       fy += p * std::sin(th) * area;

@@ -48,6 +48,10 @@ struct ReynoldsSystem {
   double dt = 0.0;                 // s, with theta_prev
   std::vector<char> fixed;         // 1: prescribed node
   std::vector<double> fixed_pressure, fixed_fill;   // Pa, - at the fixed nodes
+  // Combined rms roughness per node (m; empty: roughness.sigma() everywhere), e.g. a worn surface whose roughness
+  // varies. The split between the surfaces (V_r of the shear terms) stays roughness's sigma_moving : sigma_fixed;
+  // a face takes the mean of its two nodes. Ignored when roughness.flow_factors is false.
+  std::vector<double> sigma;
 
   int nodes() const { return nx * ny; }
   int index(int i, int j) const { return i + nx * j; }
@@ -106,6 +110,14 @@ struct HydroJournalBearing {
   // Couette shear in the cavitated zone: false: carried by the filled share theta (striated film);
   // true: as if the film were full (Raimondi & Boyd's friction variable)
   bool full_film_shear_in_cavitation = false;
+  // Bore-fixed grid (the mixed-lubrication run-in): node i sits at the bore angle i 2 pi / n_theta, the largest gap
+  // of the journal's displacement at line_of_centres (rad; 0: the grid is the line-of-centres frame as above);
+  // h_i = c (1 + eps cos(angle_i - line_of_centres)) + gap_addition[i] (m per circumferential node, e.g. the worn
+  // depth of the bore; empty: none). With a gap_addition, eps may reach or pass 1 (the journal sinks into the
+  // worn bore) as long as every gap stays positive. node_sigma (m per circumferential node; empty: roughness):
+  // the film's local combined roughness (ReynoldsSystem::sigma). The groove stays at groove_angle on the grid.
+  double line_of_centres = 0.0;
+  std::vector<double> gap_addition, node_sigma;
 
   void validate() const;   // throws tribo::InvalidCoefficient naming the field
   ReynoldsSystem system() const;
@@ -133,9 +145,12 @@ struct HydroJournalResult {
   double peak_pressure = 0.0;     // Pa
 };
 
+// initial: start pattern of the active-set solve (see ReynoldsSolver::solve), e.g. the last solution's
+// pressure - (1 - fill); the result does not depend on it, only the number of passes.
 HydroJournalResult solve_journal_bearing(const HydroJournalBearing &bearing,
                                          const tribo::GreenwoodTripp *contact = nullptr,
-                                         const ReynoldsSolver &solver = ReynoldsSolver());
+                                         const ReynoldsSolver &solver = ReynoldsSolver(),
+                                         const std::vector<double> *initial = nullptr);
 
 // ---------------------------------------------------------------------------------------------------
 // Piston-ring face (one-dimensional, per unit circumference): the ring face of axial width b with profile
