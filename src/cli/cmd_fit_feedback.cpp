@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 struct Options {
   std::string input, t_column, mu_column, r_column, output, kind = "lubricated", title;
   double t_scale = 1.0, r_scale = 1.0, max_rms_error = 0.05;
-  bool no_plot = false;
+  bool no_plot = false, drop_repeated_t = false;
 };
 
 // One case-file entry; rendered as TOML (with its comment) or JSON.
@@ -149,6 +149,23 @@ int run(const Options &o, const PlotRunner &plot) {
   series.mu = column(table, "--mu-column", o.mu_column);
   series.R = column(table, "--r-column", o.r_column);
   series.t_name = o.t_column, series.mu_name = o.mu_column, series.R_name = o.r_column;
+  // Rows at the same t as the row before (a pin that sticks does not slide): the first of them is kept.
+  std::vector<std::size_t> kept_rows;  // table row of each series row
+  for (std::size_t i = 0; i < series.t.size(); ++i) kept_rows.push_back(i);
+  std::size_t dropped = 0;
+  if (o.drop_repeated_t) {
+    coupling::FeedbackSeries kept = series;
+    kept.t.clear(), kept.mu.clear(), kept.R.clear(), kept_rows.clear();
+    for (std::size_t i = 0; i < series.t.size(); ++i) {
+      if (!kept.t.empty() && series.t[i] == kept.t.back()) {
+        ++dropped;
+        continue;
+      }
+      kept.t.push_back(series.t[i]), kept.mu.push_back(series.mu[i]), kept.R.push_back(series.R[i]);
+      kept_rows.push_back(i);
+    }
+    series = std::move(kept);
+  }
   const std::vector<double> t_data = series.t;
   for (auto &t : series.t) t *= o.t_scale;
   for (auto &r : series.R) r *= o.r_scale;
@@ -159,13 +176,14 @@ int run(const Options &o, const PlotRunner &plot) {
   const coupling::FeedbackFitResult fit = coupling::fit_feedback(series, options);
   if (!fit.ok()) {
     const std::string where = fit.bad_row != coupling::FeedbackFitResult::kNoRow
-                                  ? o.input + ":" + std::to_string(table.line_of(fit.bad_row))
+                                  ? o.input + ":" + std::to_string(table.line_of(kept_rows[fit.bad_row]))
                                   : o.input;
     using S = coupling::FeedbackFitStatus;
     const bool data_error = fit.status == S::TooFewPoints || fit.status == S::NonFinite ||
                             fit.status == S::TimeNotIncreasing || fit.status == S::NonPositive;
+    const bool repeated = fit.status == S::TimeNotIncreasing && series.t[fit.bad_row] == series.t[fit.bad_row - 1];
     throw InputError(where + ": " + (data_error ? "" : "not fitted (" + std::string(to_string(fit.status)) + "): ") +
-                     fit.message);
+                     fit.message + (repeated ? "; --drop-repeated-t keeps the first of rows with equal t" : ""));
   }
   const tribo::FeedbackModel &m = *fit.model;
   const auto &k = m.coefficients();
@@ -211,6 +229,7 @@ int run(const Options &o, const PlotRunner &plot) {
         {"r_scale", o.r_scale, "model R = r_scale r_column"},
         {"t0", t_data.front(), "first data time, column units"},
         {"points", static_cast<long>(fit.points), ""},
+        {"dropped_repeated_t", static_cast<long>(dropped), "rows at the t of the row before (--drop-repeated-t)"},
         {"status", std::string(to_string(fit.status)), ""},
         {"method", std::string("Levenberg-Marquardt on the relative error of R^2 (R0, R*, A K1); QR least squares "
                                "of mu / mu_i on (R, 1/R) (C1, C2 >= 0)"), ""},
@@ -257,7 +276,8 @@ int run(const Options &o, const PlotRunner &plot) {
   csv_file.commit();
   if (!o.no_plot) png_file.commit();
 
-  fmt::print("runin fit-feedback: {} ({} rows) -> {}\n", o.input, fit.points, o.output);
+  fmt::print("runin fit-feedback: {} ({} rows{}) -> {}\n", o.input, fit.points,
+             o.drop_repeated_t ? fmt::format(", {} at a repeated t dropped", dropped) : "", o.output);
   fmt::print("  columns      t '{}' x {:g}, mu '{}', R '{}' x {:g}; model time from t0 = {:.6g}\n", o.t_column,
              o.t_scale, o.mu_column, o.r_column, o.r_scale, t_data.front());
   fmt::print("  R(t)         R0 = {:.8g}, R* = {:.8g}, A K1 = {:.8g} (+- {:.2g}), B K2 = A K1 R*^2 = {:.8g}\n", fit.R0,
@@ -298,6 +318,8 @@ Subcommand add_fit_feedback_command(CLI::App &app, PlotRunner plot) {
                   "reject the fit when the RMS relative error of R(t) or mu(t) exceeds this")
       ->capture_default_str();
   cmd->add_option("--title", o->title, "title of the case (default: names the CSV)");
+  cmd->add_flag("--drop-repeated-t", o->drop_repeated_t,
+                "keep only the first of rows with equal t (a sliding distance that stands still while a pin sticks)");
   cmd->add_flag("--no-plot", o->no_plot, "write the case file and the comparison CSV only");
   return {cmd, [o, plot = std::move(plot)] { return run(*o, plot); }};
 }
