@@ -263,8 +263,22 @@ int run(const Options &o, const PlotRunner &plot) {
                        : fmt::format("{:g} x ({} - {:g})", o.t_scale, o.t_column, t_data.front());
 
   // Everything is computed: stage the files, plot, then move them in together.
+  // Directories made for the output are removed again if the run fails before the commit.
+  fs::path made;
+  for (fs::path p = output.parent_path(); !p.empty() && !fs::exists(p, error); p = p.parent_path()) {
+    made = p;
+    if (p == p.parent_path()) break;
+  }
   fs::create_directories(output.parent_path(), error);
   if (error) throw std::runtime_error("cannot create " + output.parent_path().string() + ": " + error.message());
+  struct RemoveUnlessKept {
+    fs::path path;
+    bool keep = false;
+    ~RemoveUnlessKept() {
+      std::error_code ignored;
+      if (!keep && !path.empty()) fs::remove_all(path, ignored);
+    }
+  } made_directories{made};
   StagedFile case_file(output), csv_file(csv_path), png_file(png_path);
   case_file.write(case_text);
   csv_file.write(csv);
@@ -275,6 +289,7 @@ int run(const Options &o, const PlotRunner &plot) {
   case_file.commit();
   csv_file.commit();
   if (!o.no_plot) png_file.commit();
+  made_directories.keep = true;
 
   fmt::print("runin fit-feedback: {} ({} rows{}) -> {}\n", o.input, fit.points,
              o.drop_repeated_t ? fmt::format(", {} at a repeated t dropped", dropped) : "", o.output);
