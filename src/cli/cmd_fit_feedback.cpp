@@ -239,6 +239,8 @@ int run(const Options &o, const PlotRunner &plot) {
         {"R_star_squared_std_error", fit.R_star_squared_error, ""},
         {"R0_squared_std_error", fit.R0_squared_error, ""},
         {"A_K1_std_error", fit.rate_error, ""},
+        {"C1_std_error", fit.C1_error, ""},
+        {"C2_std_error", fit.C2_error, "0 when clamped"},
         {"C2_clamped", fit.C2_clamped, "the unconstrained C2 was < 0"},
         {"R_max_rel_error", fit.R_max_rel_error, "fitted R(t) (exact solution) vs data"},
         {"R_rms_rel_error", fit.R_rms_rel_error, ""},
@@ -297,8 +299,9 @@ int run(const Options &o, const PlotRunner &plot) {
              o.t_scale, o.mu_column, o.r_column, o.r_scale, t_data.front());
   fmt::print("  R(t)         R0 = {:.8g}, R* = {:.8g}, A K1 = {:.8g} (+- {:.2g}), B K2 = A K1 R*^2 = {:.8g}\n", fit.R0,
              fit.R_star, fit.rate, fit.rate_error, fit.B_K2);
-  fmt::print("  mu(R)        C1 = {} = {:.8g}, C2 = {} = {:.8g}{}\n", m.thesis_name("C1"), fit.C1,
-             m.thesis_name("C2"), fit.C2, fit.C2_clamped ? " (clamped: the unconstrained C2 was < 0)" : "");
+  fmt::print("  mu(R)        C1 = {} = {:.8g} (+- {:.2g}), C2 = {} = {:.8g} (+- {:.2g}){}\n", m.thesis_name("C1"),
+             fit.C1, fit.C1_error, m.thesis_name("C2"), fit.C2, fit.C2_error,
+             fit.C2_clamped ? " (clamped: the unconstrained C2 was < 0)" : "");
   fmt::print("  written as   A = B = 1, K1 = A K1, K2 = B K2 (only the products are identified)\n");
   fmt::print("  residuals    R(t): max {:.3g}, rms {:.3g}; mu(t): max {:.3g}, rms {:.3g} (relative; LM status {}, "
              "{} evaluations)\n",

@@ -19,6 +19,7 @@ const char *to_string(FeedbackFitStatus status) {
     case FeedbackFitStatus::NonPositive: return "non-positive value";
     case FeedbackFitStatus::ConstantRoughness: return "degenerate data (R constant)";
     case FeedbackFitStatus::NoEquilibrium: return "no equilibrium roughness";
+    case FeedbackFitStatus::NoRunIn: return "no run-in";
     case FeedbackFitStatus::NoFrictionMinimum: return "no friction minimum";
     case FeedbackFitStatus::PoorFit: return "poor fit";
     case FeedbackFitStatus::NotConverged: return "not converged";
@@ -137,7 +138,7 @@ FeedbackFitResult fit_feedback(const FeedbackSeries &d, const FeedbackFitOptions
     x[i] = (d.t[i] - r.t0) / span;
     w[i] = scale / (d.R[i] * d.R[i]);
   }
-  // Start: the best b on a log grid (1e-3 .. 1e4 relaxations of e^2 over the span), linear part exact.
+  // Start: the best b = a span on a log grid 1e-3 .. 1e4, the linear part solved exactly for each.
   double best = std::numeric_limits<double>::infinity(), best_b = 1.0, v_inf = 0.0, v_0 = 1.0;
   for (int k = 0; k <= 140; ++k) {
     const double b = std::pow(10.0, -3.0 + 7.0 * k / 140.0);
@@ -211,6 +212,17 @@ FeedbackFitResult fit_feedback(const FeedbackSeries &d, const FeedbackFitOptions
   }
   r.C1 = c[0];
   r.C2 = c[1];
+  {
+    const double dof = static_cast<double>(n) - (r.C2_clamped ? 1.0 : 2.0);
+    const double s2_mu = (m * c - ones).squaredNorm() / dof;
+    if (r.C2_clamped) {
+      r.C1_error = std::sqrt(s2_mu / m.col(0).squaredNorm());
+    } else {
+      const Eigen::Matrix2d inverse = (m.transpose() * m).inverse();
+      r.C1_error = std::sqrt(std::max(s2_mu * inverse(0, 0), 0.0));
+      r.C2_error = std::sqrt(std::max(s2_mu * inverse(1, 1), 0.0));
+    }
+  }
 
   // Residuals of the fitted closed form (an R(t) that reaches 0 misses by 100 %, and mu there by more).
   double sr = 0.0, sm = 0.0, sml = 0.0;
@@ -249,9 +261,15 @@ FeedbackFitResult fit_feedback(const FeedbackSeries &d, const FeedbackFitOptions
                     (determined ? " +- " + g(r.R_star_squared_error) : std::string(" (not determined)")) +
                     ", rate A K1 = " + g(r.rate) + " per unit of " + d.t_name +
                     "; the model needs R to settle at an R* > 0 within the data");
-  if (!(r.C1 > 0.0))
+  if (!(r.rate > 3.0 * r.rate_error))
+    return fail(r, FeedbackFitStatus::NoRunIn,
+                "the run-in rate A K1 = " + g(r.rate) + " +- " + g(r.rate_error) + " per unit of " + d.t_name +
+                    " is not determined: " + d.R_name + " hardly changes over the data (R0 = " + g(r.R0) +
+                    ", R* = " + g(r.R_star) + ")");
+  if (!(r.C1 > 3.0 * r.C1_error))
     return fail(r, FeedbackFitStatus::NoFrictionMinimum,
-                "fitted C1 = " + g(r.C1) + " <= 0: " + d.mu_name + " does not follow C1 R + C2/R with C1 > 0");
+                "fitted C1 = " + g(r.C1) + " +- " + g(r.C1_error) + " is not > 0: " + d.mu_name +
+                    " does not grow with R as C1 R + C2/R needs for a friction minimum");
 
   tribo::FeedbackCoefficients k;
   k.C1 = r.C1;

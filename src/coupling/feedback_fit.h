@@ -33,7 +33,8 @@ enum class FeedbackFitStatus {
   NonPositive,        // R <= 0 or mu <= 0
   ConstantRoughness,  // R (nearly) constant: neither the rate nor C1, C2 apart are determined
   NoEquilibrium,      // R*^2 not significantly > 0 (R runs towards 0) or not determined by the data
-  NoFrictionMinimum,  // fitted C1 <= 0: mu does not grow with R
+  NoRunIn,            // the rate A K1 not significantly > 0: R hardly changes (noise about a level)
+  NoFrictionMinimum,  // fitted C1 not significantly > 0: mu does not grow with R
   PoorFit,            // the fitted model misses the data by more than the allowed RMS relative error
   NotConverged,       // Levenberg-Marquardt failed
 };
@@ -63,6 +64,7 @@ struct FeedbackFitResult {
   double C1 = 0.0, C2 = 0.0;
   // One standard error (from the Gauss-Newton covariance at the optimum) of R*^2, R0^2 and a.
   double R_star_squared_error = 0.0, R0_squared_error = 0.0, rate_error = 0.0;
+  double C1_error = 0.0, C2_error = 0.0;  // of the linear fit (covariance s^2 (M^T M)^-1)
   bool C2_clamped = false;  // the unconstrained C2 was < 0; refitted with C2 = 0
 
   // Residuals of the fitted model (R(t) from the exact solution, mu = mu(R(t))) against the data:

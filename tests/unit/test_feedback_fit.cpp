@@ -159,6 +159,19 @@ TEST(FeedbackFit, LinearGrowthIsNoEquilibrium) {
   EXPECT_LE(f.R_rms_rel_error, 0.02);  // fitted well, but without an equilibrium
 }
 
+TEST(FeedbackFit, NoisyConstantRoughnessIsNoRunIn) {
+  // R = 2 with 1 % noise: R* is well determined, the rate is not (it would fit the noise).
+  const FeedbackModel m(lubricated());
+  FeedbackSeries s;
+  for (int i = 0; i < 201; ++i) {
+    s.t.push_back(40.0 * i), s.R.push_back(2.0), s.mu.push_back(m.mu(2.0));
+  }
+  add_noise(s, 0.01, 5);
+  const auto f = fit_feedback(s);
+  EXPECT_EQ(f.status, FeedbackFitStatus::NoRunIn) << f.message;
+  EXPECT_NE(f.message.find("is not determined"), std::string::npos) << f.message;
+}
+
 TEST(FeedbackFit, FrictionFallingWithRoughnessHasNoMinimum) {
   FeedbackSeries s = exact_series(FeedbackModel(lubricated()), 6.0, 0.0, 40.0, 101);
   // C1 = -0.01: mu falls as R grows, so there is no friction minimum
