@@ -139,7 +139,7 @@ struct FeedbackCase {
   std::optional<tribo::FeedbackModel> model;  // always set after reading
   continuum::FeedbackRun run;
   std::optional<FeedbackSweep> sweep;  // every value already checked to give a valid model
-  std::optional<std::string> fitted_from;  // [fit]: "source (sha256 ...)", when the case was fitted
+  std::optional<std::string> fitted_from;  // [fit]: "source (sha256 ..., fit status)", when the case was fitted
 };
 
 FeedbackCase read_feedback_case(const std::string &path);
