@@ -42,11 +42,17 @@ const Schema kSchema = {
 };
 
 const Schema kFeedbackSchema = {
-    {"", {"title", "model", "run", "solver", "sweep"}},
+    {"", {"title", "model", "run", "solver", "sweep", "fit"}},
     {"model", {"kind", "C1", "C2", "K1", "K2", "A", "B"}},
     {"run", {"R0", "t_end", "output_interval"}},
     {"solver", {"method", "rtol", "atol", "max_steps"}},
     {"sweep", {"parameter", "values"}},
+    // written by `runin fit-feedback` (cmd_fit_feedback.cpp): provenance and residuals of the fit
+    {"fit", {"source", "source_sha256", "t_column", "mu_column", "r_column", "t_scale", "r_scale", "t0", "points",
+             "dropped_repeated_t", "status", "method", "R_star", "A_K1", "B_K2", "R_star_squared_std_error",
+             "R0_squared_std_error", "A_K1_std_error", "C1_std_error", "C2_std_error", "C2_clamped", "R_max_rel_error",
+             "R_rms_rel_error", "mu_max_rel_error", "mu_rms_rel_error", "mu_of_R_max_rel_error",
+             "mu_of_R_rms_rel_error", "max_rms_rel_error", "comparison"}},
 };
 
 // Keys each friction model reads besides "model", "alpha" and "speed_term".
@@ -521,6 +527,9 @@ FeedbackCase read_feedback_case(const std::string &path) {
     }
     c.sweep = sweep;
   }
+  if (reader.has("fit"))
+    c.fitted_from = reader.text("fit.source", "?") + " (sha256 " + reader.text("fit.source_sha256", "?") +
+                    ", fit " + reader.text("fit.status", "?") + ")";
   return c;
 }
 

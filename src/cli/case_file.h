@@ -125,7 +125,8 @@ const std::set<std::string> &friction_keys();
 PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path);
 
 // Feedback-model case (thesis ch. 3): [model] kind, C1, C2, K1, K2, A, B; [run] R0, t_end,
-// output_interval; optional [solver]; optional [sweep] parameter + values.
+// output_interval; optional [solver]; optional [sweep] parameter + values; optional [fit], the provenance
+// `runin fit-feedback` writes (not used by the run; its source and status are echoed).
 struct FeedbackSweep {
   std::string parameter;  // one of feedback_sweep_parameters()
   std::vector<double> values;
@@ -138,6 +139,7 @@ struct FeedbackCase {
   std::optional<tribo::FeedbackModel> model;  // always set after reading
   continuum::FeedbackRun run;
   std::optional<FeedbackSweep> sweep;  // every value already checked to give a valid model
+  std::optional<std::string> fitted_from;  // [fit]: "source (sha256 ..., fit status)", when the case was fitted
 };
 
 FeedbackCase read_feedback_case(const std::string &path);

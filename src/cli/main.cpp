@@ -1,5 +1,6 @@
 // runin: command-line driver of the continuum side.
 //   runin fit-law --input FILE --distance-column NAME --mu-column NAME --output law.json
+//   runin fit-feedback DATA.csv --t-column NAME --mu-column NAME --r-column NAME --output CASE.toml [--t-scale X]
 // A case file is TOML, or JSON when its name ends in .json (same keys).
 //   runin pin-on-disk CASE.toml [--law law.json] --output-dir DIR [--no-plot]
 //   runin feedback CASE.toml --output-dir DIR [--no-plot]
@@ -29,6 +30,7 @@
 #include <sys/wait.h>
 
 #include "cli/case_file.h"
+#include "cli/cmd_fit_feedback.h"
 #include "cli/cmd_pin_on_disk.h"
 #include "cli/cmd_journal_bearing.h"
 #include "cli/cmd_homogenise.h"
@@ -231,6 +233,7 @@ int feedback(const std::string &case_path, const std::string &output_dir, bool p
   auto or_none = [](double t) { return t < 0.0 ? std::string("not reached") : fmt::format("{:.6g}", t); };
   const auto &first = samples.front(), &last = samples.back();
   fmt::print("runin feedback: {}\n  {}\n", case_path, c.title);
+  if (c.fitted_from) fmt::print("  fitted from       {}\n", *c.fitted_from);
   fmt::print("  model             {} ({} smooths, {} roughens)\n", tribo::to_string(m.kind()),
              dry ? "deformation" : "viscous erosion", dry ? "adhesion" : "capillarity");
   fmt::print("  coefficients      C1 = {} = {:.6g}, C2 = {} = {:.6g}, K1 = {} = {:.6g}, K2 = {} = {:.6g}, A = {:.6g}, B = {:.6g}\n",
@@ -354,6 +357,8 @@ int main(int argc, char **argv) {
   fit_cmd->add_option("--distance-unit", fit.distance_unit, "unit of the distance column: m, mm, um, nm, angstrom")
       ->capture_default_str();
 
+  const Subcommand fit_feedback = add_fit_feedback_command(app, run_python_plot);
+
   PinOnDiskOptions pod;
   auto *pod_cmd = add_pin_on_disk_command(app, pod);
 
@@ -401,6 +406,7 @@ int main(int argc, char **argv) {
   }
   try {
     if (fit_cmd->parsed()) return fit_law(fit);
+    if (fit_feedback.app->parsed()) return fit_feedback.run();
     if (fb_cmd->parsed()) return feedback(fb_case, fb_dir, !fb_no_plot);
     if (vtk_cmd->parsed()) return dump_to_vtk(dump_path, vtk_dir, vtk_stem);
     if (journal_bearing.app->parsed()) return journal_bearing.run();
