@@ -53,15 +53,23 @@ LubricatedRingCase read_lubricated_ring_case(const std::string &path, const std:
   if (p.crank.link_length <= p.crank.crank_radius)
     reader.fail("kinematics.link_length",
                 "must exceed kinematics.crank_radius (" + CaseReader::format(p.crank.crank_radius) + ")");
-  p.crank_speed = reader.positive("lubrication.crank_speed_rpm") * 2.0 * kPi / 60.0;
+  const double rpm = reader.positive_at_most("lubrication.crank_speed_rpm", 1e5);
+  if (rpm < 1.0) reader.fail("lubrication.crank_speed_rpm", "must be at least 1, got " + CaseReader::format(rpm));
+  p.crank_speed = rpm * 2.0 * kPi / 60.0;
 
-  p.bore = reader.positive("ring.bore");
+  // ranges: a ring of an engine (beyond them the film and contact arithmetic leave double range)
+  p.bore = reader.positive_at_most("ring.bore", 10.0);
   p.face_width = reader.positive("ring.width");
   if (p.face_width >= p.bore) reader.fail("ring.width", "must be below ring.bore");
-  p.elastic_pressure = reader.positive("ring.elastic_pressure");
+  if (p.face_width < 1e-5) reader.fail("ring.width", "must be at least 1e-5 m, got " + CaseReader::format(p.face_width));
+  p.elastic_pressure = reader.positive_at_most("ring.elastic_pressure", 1e8);
+  if (p.elastic_pressure < 1.0)
+    reader.fail("ring.elastic_pressure", "must be at least 1 Pa, got " + CaseReader::format(p.elastic_pressure));
   p.crown_height = reader.non_negative("ring.crown_height", 0.0);
+  if (p.crown_height > p.face_width) reader.fail("ring.crown_height", "must not exceed ring.width");
 
-  const double youngs = reader.positive("material.youngs_modulus");
+  const double youngs = reader.positive_at_most("material.youngs_modulus", 1e13);
+  if (youngs < 1e6) reader.fail("material.youngs_modulus", "must be at least 1e6 Pa, got " + CaseReader::format(youngs));
   const double poisson = reader.number("material.poisson_ratio", 0.3);
   if (poisson <= -1.0 || poisson >= 0.5) reader.fail("material.poisson_ratio", "must lie in (-1, 0.5)");
   p.effective_modulus = youngs / (2.0 * (1.0 - poisson * poisson));   // ring and liner of one material
@@ -109,12 +117,19 @@ LubricatedRingCase read_lubricated_ring_case(const std::string &path, const std:
   }
 
   // lubrication
-  p.viscosity = reader.positive("lubrication.viscosity");
-  c.run.cycles = reader.positive_integer("lubrication.cycles", 0, 1000000000L);
+  p.viscosity = reader.positive_at_most("lubrication.viscosity", 100.0);
+  if (p.viscosity < 1e-5)
+    reader.fail("lubrication.viscosity", "must be at least 1e-5 Pa s (a gas, not an oil), got " + CaseReader::format(p.viscosity));
+  // cycle jumping makes cycles cheap, not free: 1e5 revolutions of the shipped case take 15 s (45 computed)
+  c.run.cycles = reader.positive_integer("lubrication.cycles", 0, 100000L);
   if (c.run.cycles == 0) reader.fail("lubrication.cycles", "missing (required): engine cycles to run in");
   const std::string inlet = reader.choice("lubrication.inlet", {"flooded", "starved"}, std::string("flooded"));
   p.supply = inlet == "flooded" ? continuum::OilSupply::Flooded : continuum::OilSupply::Starved;
-  if (p.supply == continuum::OilSupply::Starved) p.oil_film = reader.positive("lubrication.oil_film_thickness");
+  if (p.supply == continuum::OilSupply::Starved) {
+    p.oil_film = reader.positive_at_most("lubrication.oil_film_thickness", 1e-2);
+    if (p.oil_film < 1e-9)
+      reader.fail("lubrication.oil_film_thickness", "must be at least 1e-9 m, got " + CaseReader::format(p.oil_film));
+  }
   else if (reader.has("lubrication.oil_film_thickness"))
     reader.fail("lubrication.oil_film_thickness", "only used with lubrication.inlet = \"starved\"");
   p.nodes = static_cast<int>(reader.positive_integer("lubrication.nodes", 101, 2001));
@@ -137,9 +152,11 @@ LubricatedRingCase read_lubricated_ring_case(const std::string &path, const std:
 
   if (reader.has("stribeck")) {
     LubricatedRingCase::Stribeck s;
-    s.load = reader.positive("stribeck.load", p.elastic_pressure * p.face_width);
-    s.speed_min = reader.positive("stribeck.speed_min", 1e-3);
-    s.speed_max = reader.positive("stribeck.speed_max", 30.0);
+    s.load = reader.positive_at_most("stribeck.load", 1e8 * p.face_width, p.elastic_pressure * p.face_width);
+    s.speed_min = reader.positive_at_most("stribeck.speed_min", 1e3, 1e-3);
+    s.speed_max = reader.positive_at_most("stribeck.speed_max", 1e3, 30.0);
+    if (s.speed_min < 1e-9)
+      reader.fail("stribeck.speed_min", "must be at least 1e-9 m/s, got " + CaseReader::format(s.speed_min));
     if (s.speed_max <= s.speed_min)
       reader.fail("stribeck.speed_max", "must exceed stribeck.speed_min (" + CaseReader::format(s.speed_min) + ")");
     s.points = static_cast<int>(reader.positive_integer("stribeck.points", 50, 10000));

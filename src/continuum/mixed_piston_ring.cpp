@@ -243,7 +243,7 @@ FaceSolution MixedPistonRing::solve(double h_min, double speed, double squeeze, 
     const int j = mirror ? n - 1 - i : i;
     s.gap[i] = h_min + profile_[i];
     s.pressure[i] = r.film.pressure.empty() ? 0.0 : r.film.pressure[j];
-    s.fill[i] = r.film.fill.empty() ? 1.0 : r.film.fill[j];
+    s.fill[i] = r.film.fill.empty() ? 1.0 : std::clamp(r.film.fill[j], 0.0, 1.0);   // round-off at 0 and 1
     s.asperity_pressure[i] = asperity_pressure(i, s.gap[i]);
   }
   s.asperity_load = trapezoid(s.asperity_pressure, dx());
@@ -448,6 +448,7 @@ void RunInSettings::validate() const {
   if (!(jump_depth_fraction > 0.0)) throw std::invalid_argument("jump_depth_fraction must be positive");
   if (!(jump_sigma_fraction > 0.0)) throw std::invalid_argument("jump_sigma_fraction must be positive");
   if (!(growth >= 1.0)) throw std::invalid_argument("growth must be >= 1");
+  if (!(max_cycle_wear_fraction > 0.0)) throw std::invalid_argument("max_cycle_wear_fraction must be positive");
   if (frame_every < 0) throw std::invalid_argument("frame_every must be >= 0");
 }
 
@@ -482,6 +483,16 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
     const auto &sigma = system.sigma();
     double ratio = 0.0;
     for (int i = 0; i < n; ++i) {
+      if (r.wear[i] > settings.max_cycle_wear_fraction * sigma[i]) {
+        report.status = RunInStatus::WearPerCycleTooLarge;
+        report.message = "cycle " + std::to_string(done) + " wears face node " + std::to_string(i) + " by " +
+                         std::to_string(1e9 * r.wear[i]) + " nm, more than " +
+                         std::to_string(settings.max_cycle_wear_fraction) + " sigma (" + std::to_string(1e9 * sigma[i]) +
+                         " nm): not a gradual run-in at fixed geometry (mostly asperity contact: check the load, the "
+                         "crown and the oil)";
+        report.first = report.computed_cycles == 1 ? r : report.first;
+        return report;
+      }
       double limit = settings.jump_sigma_fraction * sigma[i];
       const auto upper = std::upper_bound(depth.begin(), depth.end(), h[i]);
       if (upper != depth.end())

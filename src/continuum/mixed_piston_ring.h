@@ -188,6 +188,9 @@ struct RunInSettings {
   double jump_depth_fraction = 0.5;
   double jump_sigma_fraction = 0.05;
   double growth = 2.0;
+  // a cycle that wears a node by more than this fraction of its sigma is not a gradual run-in at fixed geometry:
+  // the run stops (WearPerCycleTooLarge)
+  double max_cycle_wear_fraction = 0.5;
   int frame_every = 0;                 // crank steps between VTK frames of the first and last cycle (0: none)
   void validate() const;
 };
@@ -205,7 +208,7 @@ struct CycleSample {
 };
 using CycleObserver = std::function<void(const CycleSample &)>;
 
-enum class RunInStatus { Completed, CycleFailed };
+enum class RunInStatus { Completed, CycleFailed, WearPerCycleTooLarge };
 struct RunInReport {
   RunInStatus status = RunInStatus::Completed;
   std::string message;

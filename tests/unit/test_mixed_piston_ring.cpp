@@ -244,6 +244,27 @@ TEST(MixedPistonRing, RunInFrictionAndAsperityShareFallUntilTheFilmTakesOver) {
   EXPECT_NEAR(report.booked_wear_volume / ring.worn_volume(), 1.0, 1e-12);
 }
 
+// A flat face (no wedge) rides on its asperities and wears 300 nm in its first cycle, more than half its sigma:
+// not a gradual run-in at fixed geometry, so the stepper stops with a status instead of jumping.
+TEST(MixedPistonRing, RunInStopsWhenOneCycleWearsMoreThanHalfSigma) {
+  const auto law = steel_law();
+  auto p = run_in_parameters(*law);
+  p.crown_height = 0.0;
+  MixedPistonRing ring(p, law);
+  continuum::RunInSettings rs;
+  rs.cycles = 10;
+  long observed = 0;
+  const auto report = continuum::run_in(ring, rs, [&](const continuum::CycleSample &) { ++observed; });
+  EXPECT_EQ(report.status, continuum::RunInStatus::WearPerCycleTooLarge);
+  EXPECT_NE(report.message.find("not a gradual run-in"), std::string::npos) << report.message;
+  EXPECT_EQ(report.computed_cycles, 1);
+  EXPECT_EQ(observed, 0);
+  p.crown_height = 5e-6;   // the shipped barrel: a gradual run-in
+  MixedPistonRing barrel(p, law);
+  rs.cycles = 2;
+  EXPECT_TRUE(continuum::run_in(barrel, rs).ok());
+}
+
 // Cycle jumping against every cycle computed over 16 cycles of the same run-in.
 TEST(MixedPistonRing, CycleJumpingMatchesEveryCycleComputed) {
   const auto law = steel_law();
