@@ -11,6 +11,7 @@
 
 #include "continuum/mixed_piston_ring.h"
 #include "coupling/state_law.h"
+#include "tribo/contact.h"
 #include "tribo/greenwood_tripp.h"
 
 namespace {
@@ -82,6 +83,33 @@ TEST(MixedPistonRing, LawWithoutSurfaceStatisticsIsRejected) {
         << e.what();
   }
   EXPECT_NO_THROW(continuum::summit_statistics(*steel_law()));
+}
+
+// RingFace::fill_prev and dt reach the transient fill term: separating plates over one step keep their oil,
+// theta = h / (h + dh/dt dt) (the same plates as Reynolds.SeparatingSqueezeFilmCavitatesConservingMass, through the
+// ring face's own fields); a fill_prev of the wrong size or outside [0, 1] is refused naming the field.
+TEST(MixedPistonRing, RingFaceCarriesThePreviousFill) {
+  continuum::RingFace ring;
+  ring.width = 2e-3;
+  ring.viscosity = 0.01;
+  ring.min_gap = 2e-6;
+  ring.squeeze_velocity = 1e-4;
+  ring.profile.assign(51, 0.0);
+  ring.fill_prev.assign(51, 1.0);
+  ring.dt = 5e-3;
+  const auto r = continuum::solve_ring_face(ring);
+  ASSERT_TRUE(r.film.ok());
+  const double theta = ring.min_gap / (ring.min_gap + ring.squeeze_velocity * ring.dt);
+  for (int i = 1; i < 50; ++i) EXPECT_NEAR(r.film.fill[i], theta, 1e-12) << i;
+  ring.fill_prev.assign(50, 1.0);
+  EXPECT_THROW(ring.system(), tribo::InvalidCoefficient);
+  ring.fill_prev.assign(51, 1.5);
+  try {
+    ring.system();
+    FAIL() << "no throw";
+  } catch (const tribo::InvalidCoefficient &e) {
+    EXPECT_NE(std::string(e.what()).find("fill_prev"), std::string::npos) << e.what();
+  }
 }
 
 // Parallel squeeze film of a flat face (crown 0) at U = 0, no contact (rq 1 nm, H ~ 1e3): per unit length
