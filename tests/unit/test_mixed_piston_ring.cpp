@@ -293,6 +293,36 @@ TEST(MixedPistonRing, RunInStopsWhenOneCycleWearsMoreThanHalfSigma) {
   EXPECT_TRUE(continuum::run_in(barrel, rs).ok());
 }
 
+// Combined roughness: the "law" liner runs in like the ring (sigma = sqrt 2 rq), a "fixed" liner keeps its sigma.
+// A gas table makes the cycle its own (720 deg) and adds factor x p_gas to the ring tension.
+TEST(MixedPistonRing, LinerRoughnessAndGasLoad) {
+  const auto law = steel_law();
+  auto p = run_in_parameters(*law);
+  const double rq0 = law->value(coupling::StateField::Rq, law->pressure().front(), 0.0);
+  EXPECT_NEAR(MixedPistonRing(p, law).sigma()[5], std::sqrt(2.0) * rq0, 1e-12 * rq0);
+  p.liner = continuum::LinerRoughness::Fixed;
+  p.liner_sigma = 100e-9;
+  EXPECT_NEAR(MixedPistonRing(p, law).sigma()[5], std::hypot(rq0, 100e-9), 1e-12 * rq0);
+  p.liner = continuum::LinerRoughness::Law;
+  p.gas.crank_angle = {0.0, kPi, 2.0 * kPi};
+  p.gas.pressure = {1e6, 0.1e6, 0.1e6};
+  p.gas.cycle = 4.0 * kPi;
+  p.gas.factor = 0.2;
+  MixedPistonRing ring(p, law);
+  EXPECT_DOUBLE_EQ(p.load_per_length(0.0), (0.3e6 + 0.2e6) * p.face_width);
+  EXPECT_DOUBLE_EQ(p.period(), 4.0 * kPi / p.crank_speed);
+  continuum::FaceState state;
+  std::string message;
+  ASSERT_EQ(ring.start(state, message), continuum::MixedStatus::Ok) << message;
+  const auto c = ring.cycle(state, true);
+  ASSERT_TRUE(c.ok()) << c.message;
+  ASSERT_EQ(c.curve.size(), static_cast<std::size_t>(p.steps_per_cycle));
+  EXPECT_NEAR(c.curve.back().crank_angle, 4.0 * kPi, 1e-12);
+  // two revolutions, 4 stroke lengths (rectangle rule of |U| dt over 4 deg steps: 4e-4 relative)
+  EXPECT_NEAR(c.sliding_distance, 8.0 * p.crank.crank_radius, 1e-3 * 8.0 * p.crank.crank_radius);
+  EXPECT_NEAR(c.curve.front().load, p.load_per_length(c.curve.front().crank_angle) * p.circumference(), 1e-9);
+}
+
 // Cycle jumping against every cycle computed over 16 cycles of the same run-in.
 TEST(MixedPistonRing, CycleJumpingMatchesEveryCycleComputed) {
   const auto law = steel_law();
