@@ -166,6 +166,9 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
   if (o.points < 3 || o.points > 9 || o.points % 2 == 0) throw InputError("--points: must be odd, 3 to 9");
 
   toml::table base = parse_toml(o.case_path);
+  if (o.element == "piston-ring" && (base.contains("lubrication") || base.contains("stribeck")))
+    throw InputError(o.case_path + ": a lubricated piston-ring case ([lubrication]) writes no run summary to sweep; "
+                     "run `runin piston-ring` once per value");
   base.erase("sweep");  // one run per case file: the element's own mu0 sweep is not part of this study
   absolute_file_paths(base, fs::absolute(o.case_path).parent_path());
   std::vector<std::string> keys = o.keys;

@@ -472,6 +472,7 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
     if (!r.ok()) {
       report.status = RunInStatus::CycleFailed;
       report.message = "cycle " + std::to_string(done) + ": " + r.message;
+      report.cycles = done;
       return report;
     }
     report.use.below_pressure += r.use.below_pressure;
@@ -490,7 +491,8 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
                          std::to_string(settings.max_cycle_wear_fraction) + " sigma (" + std::to_string(1e9 * sigma[i]) +
                          " nm): not a gradual run-in at fixed geometry (mostly asperity contact: check the load, the "
                          "crown and the oil)";
-        report.first = report.computed_cycles == 1 ? r : report.first;
+        report.cycles = done;
+        if (report.computed_cycles == 1) report.first = r;
         return report;
       }
       double limit = settings.jump_sigma_fraction * sigma[i];

@@ -212,7 +212,7 @@ enum class RunInStatus { Completed, CycleFailed, WearPerCycleTooLarge };
 struct RunInReport {
   RunInStatus status = RunInStatus::Completed;
   std::string message;
-  long cycles = 0, computed_cycles = 0;
+  long cycles = 0, computed_cycles = 0;   // cycles: completed (at a failure: before the failing one)
   double booked_wear_volume = 0.0;     // sum over computed cycles of N x cycle wear volume
   CycleResult first, last;             // with curves
   coupling::RangeUse use;
