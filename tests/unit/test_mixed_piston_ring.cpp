@@ -1,12 +1,14 @@
 // Mixed-lubrication run-in of the piston ring (doc/lubricated_piston_ring.md).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
-#include <array>
+#include <string>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "continuum/mixed_piston_ring.h"
