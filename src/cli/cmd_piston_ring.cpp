@@ -15,6 +15,8 @@
 #include "cli/case_file.h"
 #include "cli/line_stress_report.h"
 #include "cli/piston_ring_case.h"
+#include "cli/cmd_piston_ring_lubricated.h"
+#include "cli/lubricated_ring_case.h"
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/piston_ring.h"
@@ -584,6 +586,8 @@ std::vector<LineStressReport> subsurface_stress(const PistonRingCase &c, const P
 }
 
 int run(const Options &o, const PlotRunner &plot) {
+  if (is_lubricated_ring_case(o.case_path))   // [lubrication]: the mixed-lubrication run-in
+    return run_lubricated_piston_ring(o.case_path, o.output_dir, o.law_path, o.no_plot, plot);
   const PistonRingCase c = read_piston_ring_case(o.case_path, o.law_path);
   const auto &p = c.parameters;
   const bool pack = c.rings.size() > 1;

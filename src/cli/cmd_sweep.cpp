@@ -169,6 +169,9 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
   if (o.element == "journal-bearing" && base.contains("lubrication"))
     throw InputError(o.case_path + ": a lubricated journal-bearing case (a [lubrication] table) writes no run summary "
                      "(break-away, steady friction) to sweep; its [stribeck] table sweeps the speed");
+  if (o.element == "piston-ring" && (base.contains("lubrication") || base.contains("stribeck")))
+    throw InputError(o.case_path + ": a lubricated piston-ring case ([lubrication]) writes no run summary to sweep; "
+                     "run `runin piston-ring` once per value");
   base.erase("sweep");  // one run per case file: the element's own mu0 sweep is not part of this study
   absolute_file_paths(base, fs::absolute(o.case_path).parent_path());
   std::vector<std::string> keys = o.keys;

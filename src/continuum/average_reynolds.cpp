@@ -534,6 +534,12 @@ void RingFace::validate() const
   if (profile.size() < 3) throw InvalidCoefficient("profile: at least 3 nodes needed");
   for (double v : profile)
     if (!(v >= 0.0) || !std::isfinite(v)) throw InvalidCoefficient("profile: heights above h_min must be >= 0");
+  if (!fill_prev.empty()) {
+    if (fill_prev.size() != profile.size()) throw InvalidCoefficient("fill_prev: one value per profile node needed");
+    for (double v : fill_prev)
+      if (!(v >= 0.0 && v <= 1.0)) throw InvalidCoefficient("fill_prev must be in [0, 1]");
+    require_positive(dt, "dt");
+  }
   roughness.validate();
 }
 
@@ -558,6 +564,10 @@ ReynoldsSystem RingFace::system() const
   s.fixed_pressure[0] = inlet_pressure;
   s.fixed_fill[0] = inlet_fill;
   s.fixed_pressure[s.nx - 1] = outlet_pressure;
+  if (!fill_prev.empty()) {
+    s.theta_prev = fill_prev;
+    s.dt = dt;
+  }
   return s;
 }
 

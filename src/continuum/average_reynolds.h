@@ -167,6 +167,8 @@ struct RingFace {
   double inlet_fill = 1.0;        // oil available at the inlet (1: flooded)
   std::vector<double> profile;    // m, gap above h_min at n equally spaced nodes (size >= 3)
   FilmRoughness roughness;
+  std::vector<double> fill_prev;  // fill fraction per node at the previous time (empty: quasi-steady)
+  double dt = 0.0;                // s, time since fill_prev (> 0 with fill_prev)
 
   void validate() const;   // throws tribo::InvalidCoefficient naming the field
   ReynoldsSystem system() const;
