@@ -51,7 +51,7 @@ std::string crank_csv(const continuum::RunInReport &r, long first_cycle, long la
   return text;
 }
 
-std::string stribeck_csv(const std::vector<continuum::StribeckPoint> &points) {
+std::string stribeck_csv(const std::vector<continuum::RingStribeckPoint> &points) {
   std::string text = "speed_m_s,duty_parameter,h_min_m,lambda,mu,asperity_share,viscous_friction_N_m,"
                      "boundary_friction_N_m\n";
   for (const auto &s : points)
@@ -105,13 +105,13 @@ int run_lubricated_piston_ring(const std::string &case_path, const std::string &
   const auto t_start = std::chrono::steady_clock::now();
 
   // Stribeck curve of the unworn ring first (steady sliding at fixed load)
-  std::vector<continuum::StribeckPoint> stribeck;
+  std::vector<continuum::RingStribeckPoint> stribeck;
   coupling::RangeUse stribeck_use;
   if (c.stribeck) {
     stribeck = continuum::stribeck_sweep(ring, c.stribeck->load, c.stribeck->speed_min, c.stribeck->speed_max,
                                          c.stribeck->points, &stribeck_use);
     for (const auto &s : stribeck)
-      if (s.status != continuum::MixedStatus::Ok)
+      if (s.status != continuum::RingFilmStatus::Ok)
         throw std::runtime_error(fmt::format("stribeck: {} at U = {:.6g} m/s", continuum::to_string(s.status), s.speed));
   }
 

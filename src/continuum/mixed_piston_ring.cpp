@@ -81,13 +81,13 @@ SummitStatistics summit_statistics(const coupling::StateLaw &law) {
   return {1.0 / (spacing * spacing), s["R"].get<double>()};
 }
 
-const char *to_string(MixedStatus status) {
+const char *to_string(RingFilmStatus status) {
   switch (status) {
-  case MixedStatus::Ok: return "ok";
-  case MixedStatus::FilmNotConverged: return "film solve not converged";
-  case MixedStatus::LoadNotBracketed: return "load balance not bracketed";
-  case MixedStatus::LoadNotConverged: return "load balance not converged";
-  case MixedStatus::LawOutOfRange: return "state law out of range";
+  case RingFilmStatus::Ok: return "ok";
+  case RingFilmStatus::FilmNotConverged: return "film solve not converged";
+  case RingFilmStatus::LoadNotBracketed: return "load balance not bracketed";
+  case RingFilmStatus::LoadNotConverged: return "load balance not converged";
+  case RingFilmStatus::LawOutOfRange: return "state law out of range";
   }
   return "?";
 }
@@ -227,7 +227,7 @@ FaceSolution MixedPistonRing::solve(double h_min, double speed, double squeeze, 
   }
   const RingFaceResult r = solve_ring_face(ring);
   FaceSolution s;
-  s.status = r.film.ok() ? MixedStatus::Ok : MixedStatus::FilmNotConverged;
+  s.status = r.film.ok() ? RingFilmStatus::Ok : RingFilmStatus::FilmNotConverged;
   s.speed = speed;
   s.load = load;
   s.h_min = h_min;
@@ -273,7 +273,7 @@ FaceSolution MixedPistonRing::balance(double h_prev, double speed, double load, 
   const double u_floor = std::log(1e-3 * sigma_min), u_ceiling = std::log(0.1 * p_.face_width);
   const double g = guess > 0.0 ? guess : (transient && h_prev > 0.0 ? h_prev : 3.0 * sigma_max);
   const double tolerance = kLoadTolerance * load;
-  MixedStatus status = MixedStatus::Ok;
+  RingFilmStatus status = RingFilmStatus::Ok;
   double ua = std::clamp(std::log(g), u_floor, u_ceiling), fa = F(ua);
   if (std::abs(fa) > tolerance) {
     double step = transient ? 0.01 : 0.1;
@@ -284,16 +284,16 @@ FaceSolution MixedPistonRing::balance(double h_prev, double speed, double load, 
       fa = fb;
       ub = ua + direction * step;
       if (ub > u_ceiling || ub < u_floor) {
-        status = MixedStatus::LoadNotBracketed;
+        status = RingFilmStatus::LoadNotBracketed;
         break;
       }
       fb = F(ub);
       step *= 2.0;
     }
     // Anderson-Bjorck on [ua, ub] (signs differ)
-    while (status == MixedStatus::Ok && best_residual > tolerance) {
+    while (status == RingFilmStatus::Ok && best_residual > tolerance) {
       if (solves >= kMaxSolves || std::abs(ub - ua) < 1e-13) {
-        status = MixedStatus::LoadNotConverged;
+        status = RingFilmStatus::LoadNotConverged;
         break;
       }
       double uc = (ua * fb - ub * fa) / (fb - fa);
@@ -313,7 +313,7 @@ FaceSolution MixedPistonRing::balance(double h_prev, double speed, double load, 
   FaceSolution out = std::move(best);
   out.film_solves = solves;
   // a failed trial solve away from the root does not matter; the kept one must have converged
-  out.status = out.status != MixedStatus::Ok ? MixedStatus::FilmNotConverged : status;
+  out.status = out.status != RingFilmStatus::Ok ? RingFilmStatus::FilmNotConverged : status;
   // contact: the law at each node that carries asperity pressure
   const int n = p_.nodes;
   out.mu_body.assign(n, 0.0);
@@ -362,12 +362,12 @@ CycleResult MixedPistonRing::cycle(FaceState &state, bool keep_curve, int frame_
     try {
       s = step(state, U, W, dt, &c.use);
     } catch (const std::out_of_range &e) {
-      c.status = MixedStatus::LawOutOfRange;
+      c.status = RingFilmStatus::LawOutOfRange;
       c.message = "crank angle " + std::to_string(theta * 180.0 / kPi) + " deg: " + e.what();
       return c;
     }
     c.film_solves += s.film_solves;
-    if (s.status != MixedStatus::Ok) {
+    if (s.status != RingFilmStatus::Ok) {
       c.status = s.status;
       c.message = std::string(to_string(s.status)) + " at crank angle " + std::to_string(theta * 180.0 / kPi) +
                   " deg (h_min " + std::to_string(s.h_min) + " m, W' " + std::to_string(W) + " N/m)";
@@ -422,15 +422,15 @@ CycleResult MixedPistonRing::cycle(FaceState &state, bool keep_curve, int frame_
   return c;
 }
 
-MixedStatus MixedPistonRing::start(FaceState &state, std::string &message) const {
+RingFilmStatus MixedPistonRing::start(FaceState &state, std::string &message) const {
   FaceSolution s;
   try {
     s = steady(p_.liner_speed(0.0), p_.load_per_length(0.0), nullptr);
   } catch (const std::out_of_range &e) {
     message = e.what();
-    return MixedStatus::LawOutOfRange;
+    return RingFilmStatus::LawOutOfRange;
   }
-  if (s.status != MixedStatus::Ok) {
+  if (s.status != RingFilmStatus::Ok) {
     message = std::string(to_string(s.status)) + " in the start solve at crank angle 0";
     return s.status;
   }
@@ -460,7 +460,7 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
   const int n = system.nodes();
   FaceState state;
   std::string message;
-  if (system.start(state, message) != MixedStatus::Ok) {
+  if (system.start(state, message) != RingFilmStatus::Ok) {
     report.status = RunInStatus::CycleFailed;
     report.message = message;
     return report;
@@ -550,19 +550,19 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
 }
 
 // ---------------------------------------------------------------------------------------------------
-std::vector<StribeckPoint> stribeck_sweep(const MixedPistonRing &system, double load, double speed_min,
+std::vector<RingStribeckPoint> stribeck_sweep(const MixedPistonRing &system, double load, double speed_min,
                                           double speed_max, int points, coupling::RangeUse *use) {
   require_positive(load, "load");
   require_positive(speed_min, "speed_min");
   require_positive(speed_max, "speed_max");
   if (!(speed_max > speed_min)) throw std::invalid_argument("speed_max must exceed speed_min");
   if (points < 2 || points > 100000) throw std::invalid_argument("points must lie in [2, 100000]");
-  std::vector<StribeckPoint> out;
+  std::vector<RingStribeckPoint> out;
   const double eta = system.parameters().viscosity;
   for (int k = 0; k < points; ++k) {
     const double U = speed_min * std::pow(speed_max / speed_min, static_cast<double>(k) / (points - 1));
     const FaceSolution s = system.steady(U, load, use, out.empty() ? 0.0 : out.back().h_min);
-    StribeckPoint pt;
+    RingStribeckPoint pt;
     pt.status = s.status;
     pt.speed = U;
     pt.duty = eta * U / load;

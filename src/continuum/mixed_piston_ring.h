@@ -73,11 +73,11 @@ struct FaceState {
   bool started = false;
 };
 
-enum class MixedStatus { Ok, FilmNotConverged, LoadNotBracketed, LoadNotConverged, LawOutOfRange };
-const char *to_string(MixedStatus status);
+enum class RingFilmStatus { Ok, FilmNotConverged, LoadNotBracketed, LoadNotConverged, LawOutOfRange };
+const char *to_string(RingFilmStatus status);
 
 struct FaceSolution {
-  MixedStatus status = MixedStatus::Ok;
+  RingFilmStatus status = RingFilmStatus::Ok;
   double speed = 0.0, load = 0.0;        // m/s, N/m
   double h_min = 0.0, squeeze_velocity = 0.0;
   double film_load = 0.0, asperity_load = 0.0;         // N/m
@@ -105,7 +105,7 @@ struct FaceFrame {
 };
 
 struct CycleResult {
-  MixedStatus status = MixedStatus::Ok;
+  RingFilmStatus status = RingFilmStatus::Ok;
   std::string message;
   std::vector<CrankSample> curve;
   std::vector<FaceFrame> frames;
@@ -122,7 +122,7 @@ struct CycleResult {
   double sliding_distance = 0.0;       // m per cycle
   long film_solves = 0;
   coupling::RangeUse use;
-  bool ok() const { return status == MixedStatus::Ok; }
+  bool ok() const { return status == RingFilmStatus::Ok; }
 };
 
 class MixedPistonRing {
@@ -159,7 +159,7 @@ class MixedPistonRing {
   // frames every frame_every steps (0: none).
   CycleResult cycle(FaceState &state, bool keep_curve, int frame_every = 0) const;
   // Starts a film state: a quasi-steady solve at crank angle 0 then one cycle without wear (the periodic film).
-  MixedStatus start(FaceState &state, std::string &message) const;
+  RingFilmStatus start(FaceState &state, std::string &message) const;
 
   double asperity_pressure(int i, double gap) const;   // Pa
 
@@ -223,13 +223,13 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
 
 // ---------------------------------------------------------------------------------------------------
 // Stribeck curve: steady sliding at fixed load W', log-spaced speeds from speed_min to speed_max.
-struct StribeckPoint {
-  MixedStatus status = MixedStatus::Ok;
+struct RingStribeckPoint {
+  RingFilmStatus status = RingFilmStatus::Ok;
   double speed = 0.0, duty = 0.0;      // m/s, eta U / W' (-)
   double h_min = 0.0, lambda = 0.0, mu = 0.0, asperity_share = 0.0;
   double viscous_friction = 0.0, boundary_friction = 0.0;   // N/m
 };
-std::vector<StribeckPoint> stribeck_sweep(const MixedPistonRing &system, double load, double speed_min,
+std::vector<RingStribeckPoint> stribeck_sweep(const MixedPistonRing &system, double load, double speed_min,
                                           double speed_max, int points = 50, coupling::RangeUse *use = nullptr);
 
 }  // namespace runin::continuum

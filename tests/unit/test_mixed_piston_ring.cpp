@@ -135,7 +135,7 @@ TEST(MixedPistonRing, SqueezeFilmMatchesTheFlatPlateClosedForm) {
   for (int k = 1; k <= steps; ++k) {
     const auto s = ring.step(state, 0.0, W, dt, nullptr);
     solves += s.film_solves;
-    ASSERT_EQ(s.status, continuum::MixedStatus::Ok);
+    ASSERT_EQ(s.status, continuum::RingFilmStatus::Ok);
     ASSERT_EQ(s.asperity_load, 0.0);
     state.h_min = s.h_min;
     state.fill = s.fill;
@@ -159,7 +159,7 @@ TEST(MixedPistonRing, StribeckRegimesInOrderAndFrictionMinimumNearLambdaThree) {
   ASSERT_EQ(sweep.size(), 50u);
   std::size_t best = 0;
   for (std::size_t k = 0; k < sweep.size(); ++k) {
-    ASSERT_EQ(sweep[k].status, continuum::MixedStatus::Ok) << k;
+    ASSERT_EQ(sweep[k].status, continuum::RingFilmStatus::Ok) << k;
     if (k > 0) {
       EXPECT_LE(sweep[k].asperity_share, sweep[k - 1].asperity_share + 1e-12) << k;   // regimes in order
       EXPECT_GE(sweep[k].lambda, sweep[k - 1].lambda) << k;
@@ -195,7 +195,7 @@ TEST(MixedPistonRing, FullFilmFollowsTheDutyParameterWithSquareRootFriction) {
   const double W = 450.0, R = p.face_width * p.face_width / (8.0 * p.crown_height);
   const auto sweep = continuum::stribeck_sweep(ring, W, 20.0, 40.0, 3);
   for (const auto &s : sweep) {
-    ASSERT_EQ(s.status, continuum::MixedStatus::Ok);
+    ASSERT_EQ(s.status, continuum::RingFilmStatus::Ok);
     EXPECT_LT(s.asperity_share, 1e-12);
     EXPECT_GT(s.lambda, 15.0);
   }
@@ -226,7 +226,7 @@ TEST(MixedPistonRing, StarvedInletCarriesLessFilm) {
   const auto a = flooded.steady(U, W, nullptr), b = thin.steady(U, W, nullptr), c = thick.steady(U, W, nullptr);
   std::printf("starved: h_min flooded %.4g, h_oil 0.3 um %.4g, h_oil 1 mm %.4g m; share %.3g, %.3g\n", a.h_min, b.h_min,
               c.h_min, a.asperity_share(), b.asperity_share());
-  ASSERT_EQ(b.status, continuum::MixedStatus::Ok);
+  ASSERT_EQ(b.status, continuum::RingFilmStatus::Ok);
   EXPECT_LT(b.h_min, 0.8 * a.h_min);
   EXPECT_GT(b.asperity_share(), a.asperity_share());
   EXPECT_NEAR(c.h_min / a.h_min, 1.0, 1e-6);
@@ -315,7 +315,7 @@ TEST(MixedPistonRing, LinerRoughnessAndGasLoad) {
   EXPECT_DOUBLE_EQ(p.period(), 4.0 * kPi / p.crank_speed);
   continuum::FaceState state;
   std::string message;
-  ASSERT_EQ(ring.start(state, message), continuum::MixedStatus::Ok) << message;
+  ASSERT_EQ(ring.start(state, message), continuum::RingFilmStatus::Ok) << message;
   const auto c = ring.cycle(state, true);
   ASSERT_TRUE(c.ok()) << c.message;
   ASSERT_EQ(c.curve.size(), static_cast<std::size_t>(p.steps_per_cycle));
