@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-"""Junction growth through pair_style runin/asperity friction junction (deck in.junction_shear): a plastic
+"""Junction growth through pair_style runin/asperity friction junction (deck in.junction_shear; or fix runin/wall
+keyword junction, --deck wall_junction): a plastic
 junction of two asperities sheared at constant normal load. For each f, F_t / F_n at gross sliding (the first
 step with no sticking contact) against Tabor (1959), mu = f / sqrt(alpha (1 - f^2)), within --tolerance; the
 real area (compute runin/friction entry 9) against sqrt(1 + alpha (F_t / F_n)^2) times the unsheared area,
 i.e. sqrt(F_n^2 + alpha F_t^2) / p_m with p_m = F_n / A_0; with --compare-np2 the same run on 2 MPI ranks (one
 asperity each) must agree with 1 rank (stdlib only).
 
-  junction_growth.py --lmp LMP --workdir DIR [--f 0.2 0.5 ...] [--alpha 12] [--compare-np2 --mpiexec M]
+  junction_growth.py --lmp LMP --workdir DIR [--deck NAME] [--f 0.2 0.5 ...] [--alpha 12] [--compare-np2 --mpiexec M]
 """
 import argparse
 import math
@@ -16,7 +17,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps, thermo_blocks  # noqa: E402
 
-DECK = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.junction_shear")
+DECKS = os.path.join(SOURCE_DIR, "tests", "lammps", "decks")
 
 
 def tabor(f, alpha):
@@ -25,7 +26,10 @@ def tabor(f, alpha):
 
 def check_one(args, f, np=1):
     log = f"log.f{f}.np{np}"
-    text = run_lammps(args, DECK, {"f": f, "alpha": args.alpha}, log=log, np=np)
+    deck = os.path.join(DECKS, "in." + args.deck)
+    text = run_lammps(args, deck, {"f": f, "alpha": args.alpha}, log=log, np=np)
+    if "Tabor1959" not in text:
+        fail(f"f = {f}: Tabor (1959) is not in the log's citation list")
     press, shear = thermo_blocks(text)[:2]
     unsheared = press[-1]
     if unsheared["c_fric[4]"] != 1 or not unsheared["c_fric[1]"] > 0.0:
@@ -56,7 +60,7 @@ def check_one(args, f, np=1):
     if worst_area > 1e-9:
         fail(f"f = {f}: real area differs from sqrt(F_n^2 + alpha F_t^2) / p_m by {worst_area:.3g}")
     growth = shear[-1]["c_fric[9]"] / area0
-    print(f"ok: f = {f}, alpha = {args.alpha}, np {np}: F_n = {fn0:.6g} N, p_m = {p_m / 350e6:.4f} S_y, gross sliding "
+    print(f"ok: {args.deck}: f = {f}, alpha = {args.alpha}, np {np}: F_n = {fn0:.6g} N, p_m = {p_m / 350e6:.4f} S_y, gross sliding "
           f"at step {first['Step']}: F_t/F_n = {ratio:.6f} (Tabor {want:.6f}, rel. error {error:.2g}); "
           f"area growth A/A_0 = {growth:.5f} (1/sqrt(1-f^2) = {1 / math.sqrt(1 - f * f):.5f}); "
           f"area law worst rel. error {worst_area:.2g}")
@@ -72,6 +76,7 @@ def main():
     parser.add_argument("--alpha", type=float, default=12.0)
     parser.add_argument("--tolerance", type=float, default=0.10)
     parser.add_argument("--compare-np2", action="store_true")
+    parser.add_argument("--deck", default="junction_shear", help="junction_shear (pair) or wall_junction (fix runin/wall)")
     args = parser.parse_args()
     fresh_dir(args.workdir)
     for f in args.f:
