@@ -102,7 +102,7 @@ static_assert(std::is_same_v<std::tuple_element_t<3, tribo::FrictionModels>, tri
               "the tests dispatch on the junction model's registry index");
 
 // A plastic junction (30 omega_c) sheared at constant normal load: F_t / F_n at the first slipping step is
-// Tabor's f / sqrt(alpha (1 - f^2)) (the issue asks 1 %; the model is exact) and the fixed point of the growth
+// Tabor's f / sqrt(alpha (1 - f^2)) (to 1 %, and to 1e-12: the model is exact) and the fixed point of the growth
 // criterion; before it the contact sticks below that ratio. A law without growth (f / sqrt(alpha)) is 2 to 3 x off.
 TEST(JunctionGrowth, GrossSlidingRatioIsTaborsClosedForm)
 {
