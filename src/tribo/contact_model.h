@@ -491,8 +491,9 @@ class BrizmerFrictionModel {
 // until tau reaches the interface strength tau_i = f k. k is the shear flow stress the criterion itself gives
 // at p = 0, p_m^2 = alpha k^2, and p_m the junction's mean pressure under the normal load alone (the normal
 // model's F_n / A_r), so gross sliding comes at the closed form mu = f / sqrt(alpha (1 - f^2)) whatever p_m.
-// A contact that has not yielded (no plastic history: no groove) does not grow: it shears at tau_i over its
-// area, mu = tau_i / p = f / sqrt(alpha) (Bowden & Tabor's adhesion without growth). No ploughing term, no
+// A contact that has not yielded (no plastic history: no groove; not a worn flat on plastic micro-contacts) does
+// not grow: it shears at tau_i over its area, mu = tau_i / p = f / sqrt(alpha) (Bowden & Tabor's adhesion
+// without growth). No ploughing term, no
 // static excess. Needs the elastic/plastic normal model (checked by ContactModel). doc/junction_growth.md.
 class JunctionFrictionModel {
  public:
@@ -523,8 +524,13 @@ class JunctionFrictionModel {
   // Tabor's F_t / F_n at gross sliding of a plastic junction, and of a junction that cannot grow.
   double sliding_ratio() const { return sliding_ratio_; }
   double elastic_ratio() const { return elastic_ratio_; }
-  // A contact is a plastic junction once it has yielded: the elastic/plastic model gives it a groove then.
-  static bool plastic_junction(const NormalContact &normal) { return normal.groove_ploughing > 0.0; }
+  // A plastic junction: a contact that has yielded (the elastic/plastic model gives it a groove then), or a worn
+  // flat that carries its load on plastic micro-contacts (its real area F / 2.84 S_y is below pi a^2).
+  static bool plastic_junction(const NormalContact &normal)
+  {
+    const double disc = 3.14159265358979323846 * normal.contact_radius * normal.contact_radius;
+    return normal.groove_ploughing > 0.0 || normal.real_area < (1.0 - 1e-12) * disc;
+  }
   double limit(double, double normal_force, const NormalContact &normal, double, FrictionStrengthParts &parts) const
   {
     if (!(normal_force > 0.0)) return 0.0;

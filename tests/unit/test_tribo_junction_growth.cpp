@@ -161,6 +161,43 @@ TEST(JunctionGrowth, ElasticContactDoesNotGrow)
   for (const Step &s : steps) EXPECT_EQ(s.real_area, steps[0].real_area);
 }
 
+// A worn flat (Archard: no plastic history) reloaded elastically carries its load on the plastic micro-contacts of
+// the scar (real area F / 2.84 S_y < pi a^2, doc/elastic_plastic_contact.md section 6): those are plastic
+// junctions, so the flat slides at Tabor's ratio and its area grows by the criterion with p_m = 2.84 S_y.
+TEST(JunctionGrowth, WornFlatMicroContactsArePlasticJunctions)
+{
+  const double f = 0.9, alpha = 12.0, R = 2e-5, drop = 5e-8, pi = 3.14159265358979323846;
+  const auto choice = junction_choice();
+  const tribo::ContactParameters p = steel(f, alpha);
+  const tribo::ContactModel model(choice, tribo::contact_coefficients(choice, p), {});
+  for (double overlap : {1e-11, 1e-10, 1e-9}) {
+    double history[tribo::CONTACT_HISTORY_SIZE] = {0.0};
+    tribo::ContactGeometry g;
+    g.overlap = overlap;
+    g.effective_radius = R;
+    g.effective_mass = 1e-9;
+    g.flat_radius = std::sqrt(2.0 * R * drop - drop * drop);
+    g.summit_drop = drop;
+    g.normal[2] = 1.0;
+    const tribo::ContactResult unsheared = model.evaluate<1, 3, 0>(g, history, 1e-9, true);
+    const double fn = unsheared.normal_force, area0 = unsheared.normal.real_area;
+    ASSERT_EQ(unsheared.normal.groove_ploughing, 0.0);    // no plastic history: Sneddon's elastic reload
+    ASSERT_LT(area0, pi * unsheared.normal.contact_radius * unsheared.normal.contact_radius) << overlap;
+    EXPECT_NEAR(fn / area0, 2.84 * p.yield_strength, 1e-12 * fn / area0);
+    g.tangential_velocity[0] = 1e5 * overlap;    // about 4000 steps of stick at every overlap
+    tribo::ContactResult r;
+    int steps = 0;
+    do {
+      r = model.evaluate<1, 3, 0>(g, history, 1e-9, true);
+      const double ft = r.tangential.force_magnitude;
+      const double want = std::sqrt(fn * fn + alpha * ft * ft) / (2.84 * p.yield_strength);
+      EXPECT_NEAR(r.normal.real_area, want, 1e-12 * want) << overlap;
+    } while (!r.tangential.slipping && ++steps < 100000);
+    ASSERT_GT(steps, 10) << overlap;
+    EXPECT_NEAR(r.tangential.force_magnitude / r.normal_force, tabor(f, alpha), 1e-12) << overlap;
+  }
+}
+
 // f outside [0, 1), alpha <= 0, no S_y (Tabor's H / 2.8 guess), no f, and Hertz instead of elastic/plastic:
 // each refused naming the coefficient.
 TEST(JunctionGrowth, BadCoefficientsNameTheCoefficient)
