@@ -491,8 +491,8 @@ class BrizmerFrictionModel {
 // until tau reaches the interface strength tau_i = f k. k is the shear flow stress the criterion itself gives
 // at p = 0, p_m^2 = alpha k^2, and p_m the junction's mean pressure under the normal load alone (the normal
 // model's F_n / A_r), so gross sliding comes at the closed form mu = f / sqrt(alpha (1 - f^2)) whatever p_m.
-// A contact that has not yielded (no plastic history: no groove; not a worn flat on plastic micro-contacts) does
-// not grow: it shears at tau_i over its area, mu = tau_i / p = f / sqrt(alpha) (Bowden & Tabor's adhesion
+// A contact that has not yielded (no plastic history: no groove; no flat, on whose plastic micro-contacts a worn
+// summit carries its load) does not grow: it shears at tau_i over its area, mu = tau_i / p = f / sqrt(alpha) (Bowden & Tabor's adhesion
 // without growth). No ploughing term, no
 // static excess. Needs the elastic/plastic normal model (checked by ContactModel). doc/junction_growth.md.
 class JunctionFrictionModel {
@@ -524,24 +524,28 @@ class JunctionFrictionModel {
   // Tabor's F_t / F_n at gross sliding of a plastic junction, and of a junction that cannot grow.
   double sliding_ratio() const { return sliding_ratio_; }
   double elastic_ratio() const { return elastic_ratio_; }
-  // A plastic junction: a contact that has yielded (the elastic/plastic model gives it a groove then), or a worn
-  // flat that carries its load on plastic micro-contacts (its real area F / 2.84 S_y is below pi a^2).
-  static bool plastic_junction(const NormalContact &normal)
+  // A plastic junction: a contact that has yielded (the elastic/plastic model gives it a groove then), or one on
+  // a flat summit (worn or flattened, flat_radius > 0), whose load the plastic micro-contacts of the scar carry
+  // (doc/elastic_plastic_contact.md, section 6).
+  static bool plastic_junction(const NormalContact &normal, double flat_radius)
   {
-    const double disc = 3.14159265358979323846 * normal.contact_radius * normal.contact_radius;
-    return normal.groove_ploughing > 0.0 || normal.real_area < (1.0 - 1e-12) * disc;
+    return normal.groove_ploughing > 0.0 || flat_radius > 0.0;
   }
-  double limit(double, double normal_force, const NormalContact &normal, double, FrictionStrengthParts &parts) const
+  // The limit (ContactModel::evaluate calls it in place of the other laws' limit(), at compile time: it needs the
+  // flat of the contact).
+  double junction_limit(double normal_force, const NormalContact &normal, double flat_radius,
+                        FrictionStrengthParts &parts) const
   {
     if (!(normal_force > 0.0)) return 0.0;
-    parts.adhesion = (plastic_junction(normal) ? sliding_ratio_ : elastic_ratio_) * normal_force;
+    parts.adhesion = (plastic_junction(normal, flat_radius) ? sliding_ratio_ : elastic_ratio_) * normal_force;
     return parts.adhesion;
   }
   // Real area of the junction under the tangential force F_t: A_r sqrt(1 + alpha (F_t / F_n)^2), which is
   // sqrt(F_n^2 + alpha F_t^2) / p_m with p_m = F_n / A_r; A_r / sqrt(1 - f^2) at gross sliding.
-  double junction_area(const NormalContact &normal, double normal_force, double tangential_force) const
+  double junction_area(const NormalContact &normal, double flat_radius, double normal_force,
+                       double tangential_force) const
   {
-    if (!plastic_junction(normal) || !(normal_force > 0.0)) return normal.real_area;
+    if (!plastic_junction(normal, flat_radius) || !(normal_force > 0.0)) return normal.real_area;
     const double ratio = tangential_force / normal_force;
     return normal.real_area * std::sqrt(1.0 + alpha_ * ratio * ratio);
   }
@@ -551,8 +555,9 @@ class JunctionFrictionModel {
   double elastic_ratio_ = 0.0, sliding_ratio_ = 0.0;
 };
 
-// A friction law whose real area grows with the tangential force (junction_area): ContactModel::evaluate
-// asks it after the tangential update, at compile time, so the other laws do not pay for it.
+// A friction law whose limit needs the contact's flat and whose real area grows with the tangential force
+// (junction_limit, junction_area): ContactModel::evaluate calls them at compile time, so the other laws do not
+// pay for it.
 template <class Model, class = void> struct GrowsJunction : std::false_type {};
 template <class Model>
 struct GrowsJunction<Model, std::void_t<decltype(&Model::junction_area)>> : std::true_type {};
@@ -735,7 +740,13 @@ class ContactModel {
 
     const double kt = tangential().stiffness(out.normal.contact_radius);
     double &slip = history[HISTORY_SLIP];
-    const double limit = std::get<FRICTION>(friction_)->limit(slip, fn, out.normal, g.overlap, out.strength);
+    using Friction = std::tuple_element_t<FRICTION, FrictionModels>;
+    const double limit = [&] {
+      if constexpr (GrowsJunction<Friction>::value)
+        return std::get<FRICTION>(friction_)->junction_limit(fn, out.normal, g.flat_radius, out.strength);
+      else
+        return std::get<FRICTION>(friction_)->limit(slip, fn, out.normal, g.overlap, out.strength);
+    }();
     out.tangential = mindlin_spring(kt, limit, g.normal, g.tangential_velocity, dt, &history[HISTORY_SPRING_X],
                                     slip, advance);
     if (advance) {
@@ -743,9 +754,9 @@ class ContactModel {
       if (resticks_squared(out.tangential, vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2], restick_speed_))
         slip = 0.0;    // re-stuck: the contact heals to its static limit
     }
-    if constexpr (GrowsJunction<std::tuple_element_t<FRICTION, FrictionModels>>::value)
+    if constexpr (GrowsJunction<Friction>::value)
       out.normal.real_area =
-          std::get<FRICTION>(friction_)->junction_area(out.normal, fn, out.tangential.force_magnitude);
+          std::get<FRICTION>(friction_)->junction_area(out.normal, g.flat_radius, fn, out.tangential.force_magnitude);
     if (WEAR && out.tangential.slip_increment > 0.0) {
       out.wear = wear().wear(fn, out.tangential.slip_increment);
       out.worn_volume = out.wear.lost_a + out.wear.lost_b;

@@ -162,9 +162,9 @@ TEST(JunctionGrowth, ElasticContactDoesNotGrow)
 }
 
 // A worn flat (Archard: no plastic history) reloaded elastically carries its load on the plastic micro-contacts of
-// the scar (real area F / 2.84 S_y < pi a^2, doc/elastic_plastic_contact.md section 6): those are plastic
-// junctions, so the flat slides at Tabor's ratio and its area grows by the criterion with p_m = 2.84 S_y.
-TEST(JunctionGrowth, WornFlatMicroContactsArePlasticJunctions)
+// the scar (real area F / 2.84 S_y below pi a^2, doc/elastic_plastic_contact.md section 6): a plastic junction.
+// It slides at Tabor's ratio and its area grows by the criterion with p_m = F_n / A_r = 2.84 S_y.
+TEST(JunctionGrowth, WornFlatsArePlasticJunctions)
 {
   const double f = 0.9, alpha = 12.0, R = 2e-5, drop = 5e-8, pi = 3.14159265358979323846;
   const auto choice = junction_choice();
@@ -181,16 +181,18 @@ TEST(JunctionGrowth, WornFlatMicroContactsArePlasticJunctions)
     g.normal[2] = 1.0;
     const tribo::ContactResult unsheared = model.evaluate<1, 3, 0>(g, history, 1e-9, true);
     const double fn = unsheared.normal_force, area0 = unsheared.normal.real_area;
-    ASSERT_EQ(unsheared.normal.groove_ploughing, 0.0);    // no plastic history: Sneddon's elastic reload
-    ASSERT_LT(area0, pi * unsheared.normal.contact_radius * unsheared.normal.contact_radius) << overlap;
-    EXPECT_NEAR(fn / area0, 2.84 * p.yield_strength, 1e-12 * fn / area0);
-    g.tangential_velocity[0] = 1e5 * overlap;    // about 4000 steps of stick at every overlap
+    const tribo::FlatHertzContact sneddon = tribo::flat_hertz_contact(p.effective_modulus, R, g.flat_radius, overlap);
+    ASSERT_NEAR(fn, sneddon.force, 1e-12 * fn) << overlap;    // Sneddon's elastic reload, no groove
+    ASSERT_EQ(unsheared.normal.groove_ploughing, 0.0);
+    ASSERT_LT(area0, pi * sneddon.contact_radius * sneddon.contact_radius) << overlap;
+    EXPECT_NEAR(fn / area0, 2.84 * p.yield_strength, 1e-12 * fn / area0) << overlap;
+    g.tangential_velocity[0] = 1e5 * overlap;    // thousands of steps of stick at every overlap
     tribo::ContactResult r;
     int steps = 0;
     do {
       r = model.evaluate<1, 3, 0>(g, history, 1e-9, true);
       const double ft = r.tangential.force_magnitude;
-      const double want = std::sqrt(fn * fn + alpha * ft * ft) / (2.84 * p.yield_strength);
+      const double want = area0 * std::sqrt(1.0 + alpha * (ft / fn) * (ft / fn));
       EXPECT_NEAR(r.normal.real_area, want, 1e-12 * want) << overlap;
     } while (!r.tangential.slipping && ++steps < 100000);
     ASSERT_GT(steps, 10) << overlap;
