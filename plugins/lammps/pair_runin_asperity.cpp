@@ -230,13 +230,15 @@ void PairRuninAsperity::coeff(int narg, char **arg)
                  given, given < 8 ? fmt::format(" (missing: {})", missing) : fmt::format(" ({} too many)", given - 8));
     }
     read_optional_coefficients(p, narg, arg, optional_first);
+    // a parameter that the chosen sub-models need and the deck left out (friction junction: f, S_y) is refused
+    c = runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair_coeff runin/asperity ({})", origin), true,
+                                  [&] { return tribo::contact_coefficients(choice, p); });
     if (p.yield_from_hardness && p.yield_strength > 0.0 && choice.of(SubModelKind::normal) ==
                                      tribo::find_sub_model(SubModelKind::normal, tribo::ElasticPlasticNormalModel::name))
       error->warning(FLERR,
                      "pair_coeff runin/asperity {} {}: no yield strength given (S_y keyword or material file): "
                      "S_y = H / {} = {:.4g} Pa (Tabor), nu = {}",
                      arg[0], arg[1], tribo::kTaborConstraintFactor, p.yield_strength, p.poisson_ratio);
-    c = tribo::contact_coefficients(choice, p);
   }
   // validates every sub-model's coefficients
   runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair_coeff runin/asperity ({})", origin), true,
@@ -311,8 +313,10 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
 {
   for (int iarg = first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
-    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu")
-      error->all(FLERR, "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y or nu)",
+    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
+        keyword != "alpha")
+      error->all(FLERR,
+                 "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f or alpha)",
                  keyword);
     const double value =
         runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", keyword,
@@ -323,6 +327,10 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
       p.ploughing_factor = value;
     else if (keyword == "nu")
       p.poisson_ratio = value;
+    else if (keyword == "f")
+      p.interface_coefficient = value;
+    else if (keyword == "alpha")
+      p.junction_alpha = value;
     else {
       p.yield_strength = value;
       p.yield_from_hardness = false;

@@ -33,6 +33,11 @@ inline const char *const kCiteBrizmer =
     "@Article{BrizmerKligermanEtsion2007,\n author = {V. Brizmer and Y. Kligerman and I. Etsion},\n title = "
     "{Elastic-plastic spherical contact under combined normal and tangential loading in full stick},\n"
     " journal = {Tribology Letters},\n year = 2007,\n volume = 25,\n pages = {61--70}\n}\n\n";
+inline const char *const kCiteTabor =
+    "RunIn friction model junction: Tabor (1959)\n\n"
+    "@Article{Tabor1959,\n author = {D. Tabor},\n title = {Junction growth in metallic friction: the role of "
+    "combined stresses and surface contamination},\n journal = {Proceedings of the Royal Society of London A},\n"
+    " year = 1959,\n volume = 251,\n pages = {378--393}\n}\n\n";
 inline const char *const kCiteArchard =
     "RunIn wear model archard: Archard (1953)\n\n"
     "@Article{Archard1953,\n author = {J. F. Archard},\n title = {Contact and rubbing of flat surfaces},\n"
@@ -59,6 +64,7 @@ inline std::vector<const char *> model_citations(const runin::tribo::ContactMode
   }
   if (chosen(SubModelKind::tangential) == "mindlin") entries.push_back(kCiteMindlin);
   if (chosen(SubModelKind::friction) == "brizmer") entries.push_back(kCiteBrizmer);
+  if (chosen(SubModelKind::friction) == "junction") entries.push_back(kCiteTabor);
   if (wear && chosen(SubModelKind::wear) == "archard") entries.push_back(kCiteArchard);
   if (wall) entries.push_back(kCiteGreenwoodWilliamson);
   return entries;

@@ -41,7 +41,7 @@ template <typename T> Compute *compute_creator(LAMMPS *lmp, int narg, char **arg
 const std::vector<StyleEntry> &styles()
 {
   static const std::vector<StyleEntry> table = {
-      {"pair", "runin/asperity", "RunIn asperity contact: Hertz or elastic/plastic normal, Mindlin with coulomb, strength or brizmer friction, Archard wear",
+      {"pair", "runin/asperity", "RunIn asperity contact: Hertz or elastic/plastic normal, Mindlin with coulomb, strength, brizmer or junction friction, Archard wear",
        &create_pair<PairRuninAsperity>, nullptr},
       {"fix", "RUNIN/WEAR_STATE", "RunIn per-atom wear state (internal)", nullptr,
        &create_with_args<FixRuninWearState>},

@@ -83,7 +83,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
   static const std::map<std::string, int> kKeywordValues = {
       {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
       {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
-      {"strength", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}, {"wear_scale", 1}};
+      {"strength", 2}, {"junction", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}, {"wear_scale", 1}};
   const std::string style = "fix runin/wall";
   // a RunIn kernel call whose exception becomes one ERROR "fix runin/wall: <what>"
   auto kernel = [&](auto &&body) -> decltype(body()) {
@@ -117,8 +117,8 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
     const auto known = kKeywordValues.find(keyword);
     if (known == kKeywordValues.end())
       fail(hooks, fmt::format("fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, "
-                              "wear, archard, reshape, vel, vz, load, pressure, servo, strength, restick, transfer, "
-                              "normal, yield, friction_model or wear_scale)", keyword));
+                              "wear, archard, reshape, vel, vz, load, pressure, servo, strength, junction, restick, "
+                              "transfer, normal, yield, friction_model or wear_scale)", keyword));
     const int nvalues = known->second;
     if (iarg + nvalues >= narg)
       fail(hooks, fmt::format("fix runin/wall: keyword '{}' needs {} value(s), got {}", keyword, nvalues,
@@ -190,6 +190,11 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
       parameters.ploughing_factor = number(1, "plough");
       c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
           tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
+    } else if (keyword == "junction") {
+      parameters.interface_coefficient = number(0, "f");
+      parameters.junction_alpha = number(1, "alpha");
+      c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
+          tribo::find_sub_model(tribo::SubModelKind::friction, tribo::JunctionFrictionModel::name);
     } else if (keyword == "friction_model") {
       friction_model_name = values[0];
       kernel([&] { return tribo::find_sub_model(tribo::SubModelKind::friction, values[0]); });

@@ -211,9 +211,10 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
   }
   for (int iarg = optional_first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
-    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu")
+    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
+        keyword != "alpha")
       runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: unknown keyword '{}' (expected "
-                                                  "tau_s, plough, S_y or nu)", keyword));
+                                                  "tau_s, plough, S_y, nu, f or alpha)", keyword));
     const double value = runin_liggghts::finite_number(lmp, FLERR, where, keyword, iarg + 1 < narg ? arg[iarg + 1] : "");
     if (keyword == "tau_s")
       p.shear_strength = value;
@@ -221,6 +222,10 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
       p.ploughing_factor = value;
     else if (keyword == "nu")
       p.poisson_ratio = value;
+    else if (keyword == "f")
+      p.interface_coefficient = value;
+    else if (keyword == "alpha")
+      p.junction_alpha = value;
     else {
       p.yield_strength = value;
       p.yield_from_hardness = false;

@@ -244,6 +244,10 @@ ContactModel::ContactModel(const ContactModelChoice &choice, const ContactCoeffi
   };
   check_film(std::get<std::optional<StrengthFrictionModel>>(friction_));
   check_film(std::get<std::optional<BrizmerFrictionModel>>(friction_));
+  // junction growth needs the plastic history and mean pressure of the elastic-plastic model
+  if (std::get<std::optional<JunctionFrictionModel>>(friction_) &&
+      !std::get<std::optional<ElasticPlasticNormalModel>>(normal_))
+    throw InvalidCoefficient("friction model 'junction' needs the normal model 'elastic/plastic'");
   if (std::get<std::optional<BrizmerFrictionModel>>(friction_)) {
     const auto &plastic = std::get<std::optional<ElasticPlasticNormalModel>>(normal_);
     if (!plastic)
@@ -308,6 +312,17 @@ ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const
                          p.ploughing_factor};
   else if (friction == BrizmerFrictionModel::name)
     c.of(K::friction) = {p.slip_weakening_distance, p.shear_strength, p.ploughing_factor};
+  else if (friction == JunctionFrictionModel::name) {
+    // which contacts are plastic junctions follows from S_y: Tabor's H / 2.8 guess is not taken for it
+    if (p.yield_from_hardness)
+      throw InvalidCoefficient("S_y: friction model 'junction' needs the yield strength of the softer body, not "
+                               "Tabor's H / 2.8 (pair_coeff keyword 'S_y X', fix runin/wall keyword 'yield', or "
+                               "the material's 6th value in a coefficient file)");
+    if (std::isnan(p.interface_coefficient))
+      throw InvalidCoefficient("f: friction model 'junction' needs the interface coefficient f, 0 <= f < 1 "
+                               "(pair_coeff keyword 'f X', fix runin/wall keyword 'junction f alpha')");
+    c.of(K::friction) = {p.interface_coefficient, p.junction_alpha};
+  }
   c.of(K::wear) = {p.wear_coefficient, p.hardness_i, p.wear_coefficient, p.hardness_j};
   check_coefficient_counts(choice, c);
   return c;

@@ -19,7 +19,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <tuple>
 #include <utility>
 #include <optional>
@@ -482,6 +485,83 @@ class BrizmerFrictionModel {
   AdhesionPloughing strength_;
 };
 
+// Friction limit of a plastic junction with junction growth (Tabor 1959, Proc. R. Soc. A 251:378; McFarlane &
+// Tabor 1950): a junction at yield under the normal load keeps p^2 + alpha tau^2 = p_m^2 (p = F_n / A,
+// tau = F_t / A) as the tangential force grows, so its real area grows, A = sqrt(F_n^2 + alpha F_t^2) / p_m,
+// until tau reaches the interface strength tau_i = f k. k is the shear flow stress the criterion itself gives
+// at p = 0, p_m^2 = alpha k^2, and p_m the junction's mean pressure under the normal load alone (the normal
+// model's F_n / A_r), so gross sliding comes at the closed form mu = f / sqrt(alpha (1 - f^2)) whatever p_m.
+// A contact that has not yielded (no plastic history: no groove; no flat, on whose plastic micro-contacts a worn
+// summit carries its load) does not grow: it shears at tau_i over its area, mu = tau_i / p = f / sqrt(alpha) (Bowden & Tabor's adhesion
+// without growth). No ploughing term, no
+// static excess. Needs the elastic/plastic normal model (checked by ContactModel). doc/junction_growth.md.
+class JunctionFrictionModel {
+ public:
+  static constexpr const char *name = "junction";
+  static constexpr std::array<const char *, 2> coefficient_names{"f", "alpha"};
+  // alpha of the explicit and file forms when not given: McFarlane & Tabor's (1950) measured value
+  static constexpr double kDefaultAlpha = 12.0;
+  explicit JunctionFrictionModel(const double *c) : f_(c[0]), alpha_(c[1])
+  {
+    char got[32];
+    if (!(c[0] >= 0.0 && c[0] < 1.0)) {
+      std::snprintf(got, sizeof got, "%.6g", c[0]);
+      throw InvalidCoefficient(std::string("f: interface coefficient must be in [0, 1) (at 1 a clean junction grows "
+                                           "without bound), got ") + got);
+    }
+    if (!(c[1] > 0.0) || !std::isfinite(c[1])) {
+      std::snprintf(got, sizeof got, "%.6g", c[1]);
+      throw InvalidCoefficient(std::string("alpha: junction growth constant must be > 0 and finite, got ") + got);
+    }
+    elastic_ratio_ = f_ / std::sqrt(alpha_);
+    sliding_ratio_ = f_ / std::sqrt(alpha_ * (1.0 - f_ * f_));
+  }
+  Coefficients values() const { return {f_, alpha_}; }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    return {mix_geometric(ii[0], jj[0]), mix_geometric(ii[1], jj[1])};
+  }
+  // Tabor's F_t / F_n at gross sliding of a plastic junction, and of a junction that cannot grow.
+  double sliding_ratio() const { return sliding_ratio_; }
+  double elastic_ratio() const { return elastic_ratio_; }
+  // A plastic junction: a contact that has yielded (the elastic/plastic model gives it a groove then), or one on
+  // a flat summit (worn or flattened, flat_radius > 0), whose load the plastic micro-contacts of the scar carry
+  // (doc/elastic_plastic_contact.md, section 6).
+  static bool plastic_junction(const NormalContact &normal, double flat_radius)
+  {
+    return normal.groove_ploughing > 0.0 || flat_radius > 0.0;
+  }
+  // The limit (ContactModel::evaluate calls it in place of the other laws' limit(), at compile time: it needs the
+  // flat of the contact).
+  double junction_limit(double normal_force, const NormalContact &normal, double flat_radius,
+                        FrictionStrengthParts &parts) const
+  {
+    if (!(normal_force > 0.0)) return 0.0;
+    parts.adhesion = (plastic_junction(normal, flat_radius) ? sliding_ratio_ : elastic_ratio_) * normal_force;
+    return parts.adhesion;
+  }
+  // Real area of the junction under the tangential force F_t: A_r sqrt(1 + alpha (F_t / F_n)^2), which is
+  // sqrt(F_n^2 + alpha F_t^2) / p_m with p_m = F_n / A_r; A_r / sqrt(1 - f^2) at gross sliding.
+  double junction_area(const NormalContact &normal, double flat_radius, double normal_force,
+                       double tangential_force) const
+  {
+    if (!plastic_junction(normal, flat_radius) || !(normal_force > 0.0)) return normal.real_area;
+    const double ratio = tangential_force / normal_force;
+    return normal.real_area * std::sqrt(1.0 + alpha_ * ratio * ratio);
+  }
+
+ private:
+  double f_, alpha_;
+  double elastic_ratio_ = 0.0, sliding_ratio_ = 0.0;
+};
+
+// A friction law whose limit needs the contact's flat and whose real area grows with the tangential force
+// (junction_limit, junction_area): ContactModel::evaluate calls them at compile time, so the other laws do not
+// pay for it.
+template <class Model, class = void> struct GrowsJunction : std::false_type {};
+template <class Model>
+struct GrowsJunction<Model, std::void_t<decltype(&Model::junction_area)>> : std::true_type {};
+
 // Wear: Archard for each body with its own coefficient and hardness, V_i = k_i W s / H_i (the thesis's form
 // divides by 3). A fraction 'transfer' of what one body loses is deposited on the other; the rest is debris.
 class ArchardWearModel {
@@ -541,7 +621,8 @@ constexpr int contact_history_size = TANGENTIAL_HISTORY_SIZE + std::tuple_elemen
 int contact_history_size_of(int normal_index);
 using DampingModels = std::tuple<RestitutionDampingModel>;
 using TangentialModels = std::tuple<MindlinTangentialModel>;
-using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel, BrizmerFrictionModel>;
+using FrictionModels =
+    std::tuple<CoulombFrictionModel, StrengthFrictionModel, BrizmerFrictionModel, JunctionFrictionModel>;
 using WearModels = std::tuple<ArchardWearModel>;
 
 enum class SubModelKind { normal = 0, damping, tangential, friction, wear };
@@ -602,6 +683,9 @@ struct ContactParameters {
   double yield_strength = 0.0;             // S_y of the yielding (softer) body [Pa] (elastic-plastic)
   double poisson_ratio = 0.3;              // nu of the yielding body [-] (elastic-plastic)
   bool yield_from_hardness = false;        // S_y was Tabor's H / 2.8 (no S_y given): hosts say so
+  // friction junction: interface coefficient f (NaN: not given, refused) and growth constant alpha
+  double interface_coefficient = std::numeric_limits<double>::quiet_NaN();
+  double junction_alpha = JunctionFrictionModel::kDefaultAlpha;
 };
 // Tabor's fallback S_y = H / 2.8 where a material gives no yield strength.
 constexpr double kTaborConstraintFactor = 2.8;
@@ -656,7 +740,13 @@ class ContactModel {
 
     const double kt = tangential().stiffness(out.normal.contact_radius);
     double &slip = history[HISTORY_SLIP];
-    const double limit = std::get<FRICTION>(friction_)->limit(slip, fn, out.normal, g.overlap, out.strength);
+    using Friction = std::tuple_element_t<FRICTION, FrictionModels>;
+    const double limit = [&] {
+      if constexpr (GrowsJunction<Friction>::value)
+        return std::get<FRICTION>(friction_)->junction_limit(fn, out.normal, g.flat_radius, out.strength);
+      else
+        return std::get<FRICTION>(friction_)->limit(slip, fn, out.normal, g.overlap, out.strength);
+    }();
     out.tangential = mindlin_spring(kt, limit, g.normal, g.tangential_velocity, dt, &history[HISTORY_SPRING_X],
                                     slip, advance);
     if (advance) {
@@ -664,6 +754,9 @@ class ContactModel {
       if (resticks_squared(out.tangential, vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2], restick_speed_))
         slip = 0.0;    // re-stuck: the contact heals to its static limit
     }
+    if constexpr (GrowsJunction<Friction>::value)
+      out.normal.real_area =
+          std::get<FRICTION>(friction_)->junction_area(out.normal, g.flat_radius, fn, out.tangential.force_magnitude);
     if (WEAR && out.tangential.slip_increment > 0.0) {
       out.wear = wear().wear(fn, out.tangential.slip_increment);
       out.worn_volume = out.wear.lost_a + out.wear.lost_b;

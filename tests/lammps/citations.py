@@ -21,7 +21,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from run_deck import SOURCE_DIR, fail, fresh_dir, mpi_env  # noqa: E402
 
 KEYS = ["Hertz1882", "JacksonGreen2005", "EtsionKligermanKadin2005", "Mindlin1949", "BrizmerKligermanEtsion2007",
-        "Archard1953", "GreenwoodWilliamson1966"]
+        "Archard1953", "GreenwoodWilliamson1966", "Tabor1959"]
 WALL = ["-var", "nload", "100", "-var", "nslide", "100", "-var", "thermo_every", "50"]
 SLIDER = ["-var", "nsettle", "100", "-var", "nslide", "100", "-var", "thermo_every", "50", "-var", "coeffs",
           os.path.join(SOURCE_DIR, "potentials", "CuAl.runin")]
