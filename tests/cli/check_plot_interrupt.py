@@ -16,11 +16,11 @@ import signal
 import subprocess
 import sys
 import time
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail  # noqa: E402
 
 WRAPPER = """#!/usr/bin/python3
 import os, sys, time
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from runin_common import fail  # noqa: E402
 with open({marker!r}, "w") as f:
     f.write(str(os.getpid()))
 time.sleep(3)
