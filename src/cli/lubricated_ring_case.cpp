@@ -5,12 +5,12 @@
 
 #include "cli/case_file.h"
 #include "cli/case_reader.h"
+#include "cli/piston_ring_case.h"  // read_gas_pressure_table
 
 namespace runin::cli {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
 const Schema &schema() {
   static const Schema s = {
@@ -80,23 +80,7 @@ LubricatedRingCase read_lubricated_ring_case(const std::string &path, const std:
   }
 
   if (reader.has("gas")) {
-    const auto angles = reader.numbers("gas.crank_angle_deg");
-    const auto pressures = reader.numbers("gas.pressure");
-    if (angles.size() != pressures.size())
-      reader.fail("gas.pressure", "has " + std::to_string(pressures.size()) + " values, gas.crank_angle_deg has " +
-                                      std::to_string(angles.size()));
-    const double cycle_deg = reader.positive("gas.cycle_deg", 720.0);
-    for (std::size_t i = 0; i < angles.size(); ++i) {
-      if (angles[i] < 0.0 || angles[i] >= cycle_deg)
-        reader.fail("gas.crank_angle_deg", "element " + std::to_string(i) + ": must lie in [0, gas.cycle_deg)");
-      if (i > 0 && angles[i] <= angles[i - 1])
-        reader.fail("gas.crank_angle_deg", "element " + std::to_string(i) + ": angles must increase");
-      if (pressures[i] < 0.0) reader.fail("gas.pressure", "element " + std::to_string(i) + ": must be >= 0");
-      p.gas.crank_angle.push_back(angles[i] * kDeg);
-      p.gas.pressure.push_back(pressures[i]);
-    }
-    p.gas.cycle = cycle_deg * kDeg;
-    p.gas.factor = reader.non_negative("gas.factor", 1.0);
+    p.gas = read_gas_pressure_table(reader);
   }
 
   // friction: the state law on the face nodes (mu_body, rq, wear_rate), Archard outside its pressure grid

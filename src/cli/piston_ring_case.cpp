@@ -41,6 +41,29 @@ continuum::SlidingFriction piston_ring_friction_with_mu0(const PistonRingCase &c
   return friction_with_static_coefficient(*c.friction, c.friction_model, mu0);
 }
 
+// [gas]: crank angles (deg, increasing, in [0, cycle_deg)), pressures (>= 0), cycle_deg, factor.
+continuum::GasPressureTable read_gas_pressure_table(const CaseReader &reader) {
+  continuum::GasPressureTable gas;
+  const auto angles = reader.numbers("gas.crank_angle_deg");
+  const auto pressures = reader.numbers("gas.pressure");
+  if (angles.size() != pressures.size())
+    reader.fail("gas.pressure", "has " + std::to_string(pressures.size()) + " values, gas.crank_angle_deg has " +
+                                    std::to_string(angles.size()));
+  const double cycle_deg = reader.positive("gas.cycle_deg", 720.0);
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    if (angles[i] < 0.0 || angles[i] >= cycle_deg)
+      reader.fail("gas.crank_angle_deg", "element " + std::to_string(i) + ": must lie in [0, gas.cycle_deg)");
+    if (i > 0 && angles[i] <= angles[i - 1])
+      reader.fail("gas.crank_angle_deg", "element " + std::to_string(i) + ": angles must increase");
+    if (pressures[i] < 0.0) reader.fail("gas.pressure", "element " + std::to_string(i) + ": must be >= 0");
+    gas.crank_angle.push_back(angles[i] * kDeg);
+    gas.pressure.push_back(pressures[i]);
+  }
+  gas.cycle = cycle_deg * kDeg;
+  gas.factor = reader.non_negative("gas.factor", 1.0);
+  return gas;
+}
+
 PistonRingCase read_piston_ring_case(const std::string &path, const std::optional<std::string> &law_path) {
   const CaseReader reader(path, parse_toml(path), schema());
   reader.reject_unknown_keys();
@@ -202,23 +225,7 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
   // Gas pressure behind the ring (crank motion only).
   if (reader.has("gas")) {
     if (p.motion != continuum::PistonMotion::Crank) reader.fail("gas", "needs kinematics.motion = \"crank\"");
-    const auto angles = reader.numbers("gas.crank_angle_deg");
-    const auto pressures = reader.numbers("gas.pressure");
-    if (angles.size() != pressures.size())
-      reader.fail("gas.pressure", "has " + std::to_string(pressures.size()) + " values, gas.crank_angle_deg has " +
-                                      std::to_string(angles.size()));
-    const double cycle_deg = reader.positive("gas.cycle_deg", 720.0);
-    for (std::size_t i = 0; i < angles.size(); ++i) {
-      if (angles[i] < 0.0 || angles[i] >= cycle_deg)
-        reader.fail("gas.crank_angle_deg", "element " + std::to_string(i) + ": must lie in [0, gas.cycle_deg)");
-      if (i > 0 && angles[i] <= angles[i - 1])
-        reader.fail("gas.crank_angle_deg", "element " + std::to_string(i) + ": angles must increase");
-      if (pressures[i] < 0.0) reader.fail("gas.pressure", "element " + std::to_string(i) + ": must be >= 0");
-      p.gas.crank_angle.push_back(angles[i] * kDeg);
-      p.gas.pressure.push_back(pressures[i]);
-    }
-    p.gas.cycle = cycle_deg * kDeg;
-    p.gas.factor = reader.non_negative("gas.factor", 1.0);
+    p.gas = read_gas_pressure_table(reader);
   }
 
   c.friction = read_friction(reader, law_path);

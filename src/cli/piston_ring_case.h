@@ -11,6 +11,8 @@
 
 namespace runin::cli {
 
+class CaseReader;
+
 // One ring of the pack: its own tension, land, face profile and wear (ring face + its share of
 // the one liner). Its centre rides at piston position + `position` + land deflection.
 struct PistonRingOfPack {
@@ -45,6 +47,8 @@ struct PistonRingCase {
 
 // `law_path` is the --law option; required exactly when friction.model = "law_file".
 PistonRingCase read_piston_ring_case(const std::string &path, const std::optional<std::string> &law_path);
+// The case's [gas] table (crank_angle_deg, pressure, cycle_deg, factor), shared by the dry and lubricated rings.
+continuum::GasPressureTable read_gas_pressure_table(const CaseReader &reader);
 
 // The case's friction with the static coefficient replaced by mu0 (friction_with_static_coefficient).
 // Throws std::invalid_argument for law_file or a mu0 not above the feedback law's steady value.

@@ -13,16 +13,12 @@
 namespace runin::continuum {
 
 using tribo::InvalidCoefficient;
+using tribo::require_positive_finite;
 
 namespace {
 
 const double kPi = std::acos(-1.0);
 
-void require_positive(double value, const std::string &name)
-{
-  if (!(value > 0.0) || !std::isfinite(value))
-    throw InvalidCoefficient(name + " must be > 0 and finite, got " + std::to_string(value));
-}
 
 void require_finite(double value, const std::string &name)
 {
@@ -153,9 +149,9 @@ void ReynoldsSystem::validate() const
 {
   if (nx < 2) throw InvalidCoefficient("nx: the grid needs >= 2 nodes along x");
   if (ny < 1) throw InvalidCoefficient("ny: the grid needs >= 1 node across");
-  require_positive(dx, "dx");
-  require_positive(dy, "dy");
-  require_positive(viscosity, "viscosity");
+  require_positive_finite(dx, "dx");
+  require_positive_finite(dy, "dy");
+  require_positive_finite(viscosity, "viscosity");
   require_finite(u_moving, "u_moving");
   roughness.validate();
   const auto n = static_cast<std::size_t>(nodes());
@@ -172,7 +168,7 @@ void ReynoldsSystem::validate() const
   }
   if (!theta_prev.empty()) {
     if (theta_prev.size() != n) throw InvalidCoefficient("theta_prev: one value per node or none");
-    require_positive(dt, "dt");
+    require_positive_finite(dt, "dt");
   }
   if (fixed.size() != n || fixed_pressure.size() != n || fixed_fill.size() != n)
     throw InvalidCoefficient("fixed: fixed, fixed_pressure and fixed_fill need one value per node");
@@ -359,10 +355,10 @@ double face_shear(const ReynoldsSystem &s, const ReynoldsSolution &sol, int i, i
 
 void HydroJournalBearing::validate() const
 {
-  require_positive(radius, "radius");
-  require_positive(length, "length");
-  require_positive(clearance, "clearance");
-  require_positive(viscosity, "viscosity");
+  require_positive_finite(radius, "radius");
+  require_positive_finite(length, "length");
+  require_positive_finite(clearance, "clearance");
+  require_positive_finite(viscosity, "viscosity");
   require_finite(omega, "omega");
   if (gap_addition.empty() && (!(eccentricity_ratio >= 0.0) || !(eccentricity_ratio < 1.0)))
     throw InvalidCoefficient("eccentricity_ratio must be in [0, 1) (at 1 the gap closes), got " +
@@ -523,10 +519,10 @@ HydroJournalResult solve_journal_bearing(const HydroJournalBearing &b, const tri
 // ---------------------------------------------------------------------------------------------------
 void RingFace::validate() const
 {
-  require_positive(width, "width");
-  require_positive(viscosity, "viscosity");
+  require_positive_finite(width, "width");
+  require_positive_finite(viscosity, "viscosity");
   require_finite(speed, "speed");
-  require_positive(min_gap, "min_gap");
+  require_positive_finite(min_gap, "min_gap");
   require_finite(squeeze_velocity, "squeeze_velocity");
   require_finite(inlet_pressure, "inlet_pressure");
   require_finite(outlet_pressure, "outlet_pressure");
@@ -538,7 +534,7 @@ void RingFace::validate() const
     if (fill_prev.size() != profile.size()) throw InvalidCoefficient("fill_prev: one value per profile node needed");
     for (double v : fill_prev)
       if (!(v >= 0.0 && v <= 1.0)) throw InvalidCoefficient("fill_prev must be in [0, 1]");
-    require_positive(dt, "dt");
+    require_positive_finite(dt, "dt");
   }
   roughness.validate();
 }

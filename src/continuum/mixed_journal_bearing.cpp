@@ -16,16 +16,12 @@
 namespace runin::continuum {
 
 using tribo::InvalidCoefficient;
+using tribo::require_positive_finite;
 
 namespace {
 
 const double kPi = std::acos(-1.0);
 
-void require_positive(double value, const std::string &name)
-{
-  if (!(value > 0.0) || !std::isfinite(value))
-    throw InvalidCoefficient(name + " must be > 0 and finite, got " + std::to_string(value));
-}
 
 }    // namespace
 
@@ -43,30 +39,30 @@ double MixedJournalBearingParameters::speed_at(double t) const
 
 void MixedJournalBearingParameters::validate() const
 {
-  require_positive(radius, "radius");
-  require_positive(length, "length");
-  require_positive(clearance, "clearance");
-  require_positive(load, "load");
-  require_positive(viscosity, "viscosity");
+  require_positive_finite(radius, "radius");
+  require_positive_finite(length, "length");
+  require_positive_finite(clearance, "clearance");
+  require_positive_finite(load, "load");
+  require_positive_finite(viscosity, "viscosity");
   if (!(supply_pressure >= 0.0) || !std::isfinite(supply_pressure))
     throw InvalidCoefficient("supply_pressure must be >= 0 and finite, got " + std::to_string(supply_pressure));
   if (!std::isfinite(groove_angle)) throw InvalidCoefficient("groove_angle must be finite");
   if (speed_time.empty()) {
-    require_positive(speed, "speed");
+    require_positive_finite(speed, "speed");
   } else {
     if (speed_time.size() != speed_value.size() || speed_time.size() < 2)
       throw InvalidCoefficient("speed_time, speed_value: a table of >= 2 points of equal length");
     for (std::size_t k = 0; k < speed_time.size(); ++k) {
       if (!std::isfinite(speed_time[k]) || (k > 0 && !(speed_time[k] > speed_time[k - 1])))
         throw InvalidCoefficient("speed_time must be finite and increase strictly");
-      require_positive(speed_value[k], "speed_value");
+      require_positive_finite(speed_value[k], "speed_value");
     }
   }
   if (n_theta < 8) throw InvalidCoefficient("n_theta: at least 8 circumferential nodes needed");
   if (n_axial < 3) throw InvalidCoefficient("n_axial: at least 3 axial nodes needed (both ends included)");
-  require_positive(summit_density, "summit_density");
-  require_positive(summit_radius, "summit_radius");
-  require_positive(effective_modulus, "effective_modulus");
+  require_positive_finite(summit_density, "summit_density");
+  require_positive_finite(summit_radius, "summit_radius");
+  require_positive_finite(effective_modulus, "effective_modulus");
   if (!law) throw InvalidCoefficient("law: the state law is required");
   if (!(sigma_override >= 0.0) || !std::isfinite(sigma_override))
     throw InvalidCoefficient("sigma_override must be >= 0 and finite");

@@ -15,6 +15,12 @@ class InvalidCoefficient : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// Throws InvalidCoefficient "<name> must be > 0 and finite, got <value>" unless value is positive and finite.
+inline void require_positive_finite(double value, const std::string &name) {
+  if (!(value > 0.0) || !std::isfinite(value))
+    throw InvalidCoefficient(name + " must be > 0 and finite, got " + std::to_string(value));
+}
+
 // Elastic properties of one body.
 struct Material {
   double youngs_modulus = 0.0;  // Pa

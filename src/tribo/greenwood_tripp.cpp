@@ -14,11 +14,6 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 
-void require_positive(double value, const char *name)
-{
-  if (!(value > 0.0) || !std::isfinite(value))
-    throw InvalidCoefficient(std::string(name) + " must be > 0 and finite, got " + std::to_string(value));
-}
 
 // F_n(H) = int_0^T 2 t^(2n+1) phi(H + t^2) dt (s - H = t^2 makes the integrand smooth at the lower end),
 // composite 8-point Gauss-Legendre on 24 panels up to s = max(H, 0) + 12 (phi(12) / phi(0) < 1e-31).
@@ -65,10 +60,10 @@ GreenwoodTripp::GreenwoodTripp(double summit_density, double summit_radius, doub
                                double effective_modulus) :
     eta_(summit_density), beta_(summit_radius), sigma_(sigma), e_eff_(effective_modulus)
 {
-  require_positive(eta_, "eta: summit density");
-  require_positive(beta_, "beta: summit radius");
-  require_positive(sigma_, "sigma: combined roughness");
-  require_positive(e_eff_, "E*: effective modulus");
+  require_positive_finite(eta_, "eta: summit density");
+  require_positive_finite(beta_, "beta: summit radius");
+  require_positive_finite(sigma_, "sigma: combined roughness");
+  require_positive_finite(e_eff_, "E*: effective modulus");
   const double ebs = eta_ * beta_ * sigma_;
   k_ = 16.0 * std::sqrt(2.0) / 15.0 * kPi * ebs * ebs * std::sqrt(sigma_ / beta_);
 }
@@ -99,8 +94,8 @@ LoadShare solve_load_share(double load, const std::function<double(double)> &fil
                            const std::function<double(double)> &asperity_load, double sigma, double h_min,
                            double h_max, double rel_tol, int max_iterations)
 {
-  require_positive(load, "load");
-  require_positive(sigma, "sigma");
+  require_positive_finite(load, "load");
+  require_positive_finite(sigma, "sigma");
   if (!(h_max > h_min) || !std::isfinite(h_min) || !std::isfinite(h_max))
     throw InvalidCoefficient("h_min, h_max: the film bracket needs h_min < h_max");
   LoadShare out;
@@ -139,7 +134,7 @@ LoadShare solve_load_share(double load, const std::function<double(double)> &fil
                            const GreenwoodTripp &contact, double nominal_area, double h_min, double h_max,
                            double rel_tol, int max_iterations)
 {
-  require_positive(nominal_area, "nominal_area");
+  require_positive_finite(nominal_area, "nominal_area");
   return solve_load_share(
       load, film_load, [&](double h) { return contact.load(h, nominal_area); }, contact.sigma(), h_min, h_max,
       rel_tol, max_iterations);
