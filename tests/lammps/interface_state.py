@@ -6,7 +6,9 @@ pair_coeff ... file potentials/Steel1020.runin ... interface STATE): m and S_y a
   - friction junction: F_t / F_n at gross sliding is Tabor's f / sqrt(alpha (1 - f^2)) with f = m, alpha = 12
 (stdlib only).
 
-  interface_state.py --lmp LMP --workdir DIR --friction strength|junction --states clean oxidised ...
+The same on fix runin/wall (keyword interface, deck in.wall_interface_shear) with --host wall.
+
+  interface_state.py --lmp LMP --workdir DIR --friction strength|junction --states clean oxidised ... [--host wall]
 """
 import argparse
 import math
@@ -16,7 +18,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps, thermo_blocks  # noqa: E402
 
-DECK = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.interface_shear")
+DECKS = {"pair": os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.interface_shear"),
+         "wall": os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.wall_interface_shear")}
 COEFFS = os.path.join(SOURCE_DIR, "potentials", "Steel1020.runin")
 ALPHA = 12.0    # the pair's default
 
@@ -41,13 +44,14 @@ def main():
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--friction", choices=["strength", "junction"], required=True)
     parser.add_argument("--states", nargs="+", required=True)
+    parser.add_argument("--host", choices=["pair", "wall"], default="pair")
     args = parser.parse_args()
     fresh_dir(args.workdir)
     yield_strength, d_c, factors = file_values()
     for state in args.states:
         m = factors[state]
-        text = run_lammps(args, DECK, {"state": state, "friction": args.friction, "coeffs": COEFFS},
-                          log=f"log.{args.friction}.{state}")
+        text = run_lammps(args, DECKS[args.host], {"state": state, "friction": args.friction, "coeffs": COEFFS},
+                          log=f"log.{args.host}.{args.friction}.{state}")
         press, shear = thermo_blocks(text)[:2]
         if press[-1]["c_fric[4]"] != 1 or not press[-1]["c_fric[9]"] > 0.0:
             fail(f"{state}: the asperities are not in contact after pressing")
@@ -70,14 +74,14 @@ def main():
             error = abs(ft - kinetic) / kinetic
             if error > 1e-9:
                 fail(f"{state}: sliding F_t = {ft!r} N vs tau_s A_r + F_pl = {kinetic!r} N ({error:.3g})")
-            print(f"ok: strength, {state}: m = {m}, tau_s = {tau_s:.6g} Pa over A_r (worst {worst:.2g}); kinetic "
+            print(f"ok: {args.host}, strength, {state}: m = {m}, tau_s = {tau_s:.6g} Pa over A_r (worst {worst:.2g}); kinetic "
                   f"F_t / F_n = {ft / fn:.6f} = tau_s / p_m {last['c_fric[6]']:.6f} + ploughing {last['c_fric[7]']:.6f}")
         else:
             want = m / math.sqrt(ALPHA * (1.0 - m * m))
             error = abs(ft / fn - want) / want
             if error > 1e-9:
                 fail(f"{state}: F_t / F_n at gross sliding {ft / fn!r} vs Tabor {want!r} with f = m = {m} ({error:.3g})")
-            print(f"ok: junction, {state}: f = m = {m}: F_t / F_n = {ft / fn:.6f} (Tabor {want:.6f}, {error:.2g})")
+            print(f"ok: {args.host}, junction, {state}: f = m = {m}: F_t / F_n = {ft / fn:.6f} (Tabor {want:.6f}, {error:.2g})")
 
 
 if __name__ == "__main__":
