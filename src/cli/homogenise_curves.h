@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "coupling/ave_time_reader.h"
+#include "coupling/homogenise.h"
 #include "coupling/state_law.h"
 
 namespace runin::cli {
@@ -23,9 +24,7 @@ CellSeries cell_series(const coupling::AveTimeTable &table);
 // 0 .. depth in `points` even steps (the last one exactly depth).
 std::vector<double> depth_grid(double depth, long points);
 
-struct DepthCurves {
-  std::array<std::vector<double>, coupling::state_field_count> field;  // [StateField][depth index]
-};
+using DepthCurves = coupling::DepthCurves;  // [StateField][depth index]
 
 // Every field of the state law on `grid` for one sample run at `acceleration` (physical s = acceleration x cell s,
 // physical rates = cell rates / acceleration). Uses the rows with s > 0; h made non-decreasing by a running
