@@ -27,11 +27,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/case_file.h"
-#include "cli/homogenise_curves.h"
 #include "cli/homogenise_plan.h"
 #include "cli/runin_version.h"
 #include "cli/staged_file.h"
 #include "coupling/ave_time_reader.h"
+#include "coupling/homogenise_curves.h"
 #include "coupling/state_law.h"
 
 extern char **environ;  // mpi_environment()
@@ -41,6 +41,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+using coupling::cell_series;
+using coupling::depth_grid;
+using coupling::DepthCurves;
+using coupling::resample_on_depth_grid;
 
 struct Options {
   std::string case_path, output = "law.json", output_dir, cache_dir, lmp, deck;
