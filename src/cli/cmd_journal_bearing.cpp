@@ -216,34 +216,18 @@ std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, 
 }
 #endif
 
-// Subsurface stress below each bearing half (doc/subsurface_stress.md). Start: the unworn bore; McEwen's closed
-// form on the Hertz line contact when the solved pressure is Hertzian (peak within 5 % of Hertz p0), else the
-// influence tier; mu at break-away (largest |F| / N up to the first slip sample). End: the influence tier on the
-// last solved (worn) pressure, with the |mu| of the last slip sample (the last sample without slip). The sign of
-// the shear follows the journal's turning direction.
+// Subsurface stress below each bearing half (doc/subsurface_stress.md): the library's start and end frames
+// (continuum::bore_start_end_stress), named for the summary and the VTK series.
 std::vector<LineStressReport> subsurface_stress(const JournalBearingCase &c, const Curve &curve) {
   std::vector<LineStressReport> reports;
-  const auto &samples = curve.samples;
-  const auto &rep = curve.report;
-  if (samples.empty() || rep.initial_pressure.size() != static_cast<std::size_t>(c.parameters.halves) ||
-      rep.final_pressure.size() != rep.initial_pressure.size())
-    return reports;
-  const continuum::ConformalContact contact(c.parameters.bore);
   bool tabor_bearing = false, tabor_shaft = false;
   continuum::verdict_yield_strength(c.bearing_material, &tabor_bearing);
   continuum::verdict_yield_strength(c.shaft_material, &tabor_shaft);
   const tribo::Material bearing = verdict_material(c.bearing_material), shaft = verdict_material(c.shaft_material);
-  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
-  const JournalBearingSample *last_slip = nullptr, *first_slip = nullptr;
-  for (const auto &s : samples)
-    if (s.state == continuum::ContactState::Slip) {
-      if (!first_slip) first_slip = &s;
-      last_slip = &s;
-    }
-  const JournalBearingSample &end = last_slip ? *last_slip : samples.back();
-  const double dir_start = first_slip ? sign(first_slip->journal_speed) : 1.0;
-  const double mu_start = dir_start * curve.summary.start_friction_force / samples.front().normal_force;
-  for (int h = 0; h < c.parameters.halves; ++h) {
+  const auto halves = continuum::bore_start_end_stress(c.parameters, curve.samples, curve.summary.start_friction_force,
+                                                       curve.report, bearing, shaft);
+  for (std::size_t h = 0; h < halves.size(); ++h) {
+    const auto &stress = halves[h];
     LineStressReport r;
     r.contact = c.parameters.halves == 2 ? (h == 0 ? "lower half" : "upper half") : "bearing";
     r.label_a = body_label("bearing", c.bearing_material_name);
@@ -251,23 +235,11 @@ std::vector<LineStressReport> subsurface_stress(const JournalBearingCase &c, con
     r.field_a = "bearing", r.field_b = "shaft";
     r.materials_hint = "contact.materials";
     r.tabor_a = tabor_bearing, r.tabor_b = tabor_shaft;
-    const auto &p_start = rep.initial_pressure[h];
-    const double solved_peak = *std::max_element(p_start.begin(), p_start.end());
-    const auto hertz = continuum::bore_hertz_stress(c.parameters.bore, c.parameters.half_load(h) / c.parameters.bore.axial_width,
-                                                    mu_start, bearing, shaft);
-    const bool hertzian = std::abs(solved_peak / hertz.peak_pressure - 1.0) <= 0.05;
     r.cross_check = fmt::format("solved unworn pressure: p0 = {:.4g} Pa ({:+.2f} % from Hertz): start from the {}",
-                                solved_peak, 100.0 * (solved_peak / hertz.peak_pressure - 1.0),
-                                hertzian ? "closed form" : "influence tier");
-    r.frames.push_back({samples.front().t, hertzian ? hertz : continuum::bore_contact_stress(contact, p_start, mu_start,
-                                                                                           bearing, shaft)});
-    const double mu_end = sign(end.journal_speed) * std::abs(end.half[h].mu != 0.0 ? end.half[h].mu : end.mu);
-    // The symmetric set-up: the upper half's end state equals the lower's (computed once).
-    if (h == 1 && rep.final_pressure[1] == rep.final_pressure[0] && end.half[1].mu == end.half[0].mu)
-      r.frames.push_back({samples.back().t, reports.front().frames.back().stress});
-    else
-      r.frames.push_back({samples.back().t,
-                          continuum::bore_contact_stress(contact, rep.final_pressure[h], mu_end, bearing, shaft)});
+                                stress.solved_peak, 100.0 * (stress.solved_peak / stress.hertz_peak - 1.0),
+                                stress.closed_form ? "closed form" : "influence tier");
+    r.frames.push_back({curve.samples.front().t, stress.start});
+    r.frames.push_back({curve.samples.back().t, stress.end});
     reports.push_back(std::move(r));
   }
   return reports;

@@ -232,25 +232,18 @@ std::string csv_text(const std::vector<Row> &rows, bool state_law) {
   return text;
 }
 
-// Subsurface stress at the start (unworn tip: Hertz, Hamilton's closed form, mu of break-away) and at the end
-// (solved pressure of the worn profile: influence functions, the final mu). doc/subsurface_stress.md.
+// Subsurface stress at the start and the end of the run (continuum::pin_start_end_stress, doc/subsurface_stress.md).
 struct StressFrame {
   double time;
   continuum::ContactStress stress;
 };
 std::vector<StressFrame> subsurface_stress(const PinOnDiskCase &c, const Curve &curve) {
-  std::vector<StressFrame> frames;
-  if (!c.contact || c.contact->flat) return frames;  // flat end: no Hertz start, nominal pressure only
+  if (!c.contact || c.contact->flat) return {};  // flat end: no Hertz start, nominal pressure only
   const auto &k = *c.contact;
-  const double load = c.parameters.normal_load;
-  const auto hertz = continuum::hertz_sphere_on_flat(k.tip_radius, k.effective_modulus(), load);
-  const double mu_start = curve.summary.start_friction_force / load;
-  frames.push_back({curve.rows.front().s.t, continuum::hertz_contact_stress(hertz.peak_pressure, hertz.contact_radius,
-                                                                            mu_start, k.pin, k.disk)});
-  const double mu_end = std::abs(curve.rows.back().s.mu);
-  frames.push_back({curve.rows.back().s.t, continuum::ring_contact_stress(curve.final_pressure, curve.ring_width,
-                                                                          mu_end, k.pin, k.disk)});
-  return frames;
+  const auto [start, end] = continuum::pin_start_end_stress(
+      pin_wear_parameters(k), c.parameters.normal_load, curve.summary.start_friction_force, curve.final_pressure,
+      curve.ring_width, curve.rows.back().s.mu, k.pin, k.disk);
+  return {{curve.rows.front().s.t, start}, {curve.rows.back().s.t, end}};
 }
 
 #ifdef RUNIN_HAVE_VTK

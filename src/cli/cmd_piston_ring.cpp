@@ -330,11 +330,8 @@ std::string pack_csv_text(const PistonRingCase &c, const PackRun &run, const std
   return text;
 }
 
-// Subsurface stress below each ring face (doc/subsurface_stress.md). Start: the unworn face; McEwen's closed form
-// on the Hertz contact of the crowned face when it is Hertzian (the Hertz width inside the face and the solved
-// peak within 5 % of Hertz p0), else the influence tier; mu at break-away (largest |F| / W up to the first slip
-// sample). End: the influence tier on the last sample's (worn) pressure, with the |mu| of the last slip sample.
-// The sign of the shear follows the ring's sliding direction on the liner.
+// Subsurface stress below each ring face (doc/subsurface_stress.md): the library's start and end frames
+// (continuum::ring_face_start_end_stress), named for the summary and the VTK series.
 std::vector<LineStressReport> subsurface_stress(const PistonRingCase &c, const PackRun &run,
                                                 const std::vector<continuum::RingLinerWear> &wear,
                                                 const std::vector<WearPass> &passes) {
@@ -343,22 +340,12 @@ std::vector<LineStressReport> subsurface_stress(const PistonRingCase &c, const P
   continuum::verdict_yield_strength(c.liner_material, &tabor_liner);
   continuum::verdict_yield_strength(c.ring_material, &tabor_ring);
   const tribo::Material liner = verdict_material(c.liner_material), ring = verdict_material(c.ring_material);
-  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
   for (std::size_t k = 0; k < c.rings.size(); ++k) {
     const auto &samples = run.grid[k];
     const auto &pass = passes[k];
     if (samples.empty() || pass.initial_pressure.empty() || pass.final_pressure.empty()) continue;
-    const PistonRingSample *first_slip = nullptr, *last_slip = nullptr;
-    for (const auto &s : samples)
-      if (s.state == continuum::ContactState::Slip) {
-        if (!first_slip) first_slip = &s;
-        last_slip = &s;
-      }
-    const auto &first = samples.front();
-    const PistonRingSample &end = last_slip ? *last_slip : samples.back();
-    const double mu_start = (first_slip ? sign(first_slip->speed) : 1.0) *
-                            run.rings[k].summary.start_friction_force / first.normal_load;
-    const double mu_end = sign(end.speed) * end.mu;
+    const auto stress = continuum::ring_face_start_end_stress(wear[k], samples, run.rings[k].summary.start_friction_force,
+                                                              pass.initial_pressure, pass.final_pressure, liner, ring);
     LineStressReport r;
     r.contact = c.rings.size() > 1 ? "ring " + c.rings[k].name + " face" : "ring face";
     r.label_a = body_label("liner", c.liner_material_name);
@@ -366,19 +353,15 @@ std::vector<LineStressReport> subsurface_stress(const PistonRingCase &c, const P
     r.field_a = "liner", r.field_b = "ring";
     r.materials_hint = "material.materials";
     r.tabor_a = tabor_liner, r.tabor_b = tabor_ring;
-    const auto &p_start = pass.initial_pressure;
-    const double solved_peak = *std::max_element(p_start.begin(), p_start.end());
-    const auto hertz = continuum::ring_face_hertz_stress(wear[k].settings(), first.normal_load, mu_start, liner, ring);
-    const bool hertzian = hertz && std::abs(solved_peak / hertz->peak_pressure - 1.0) <= 0.05;
-    if (hertz)
+    if (stress.hertz_peak > 0.0)
       r.cross_check = fmt::format("solved unworn pressure: p0 = {:.4g} Pa ({:+.2f} % from Hertz): start from the {}",
-                                  solved_peak, 100.0 * (solved_peak / hertz->peak_pressure - 1.0),
-                                  hertzian ? "closed form" : "influence tier");
+                                  stress.solved_peak, 100.0 * (stress.solved_peak / stress.hertz_peak - 1.0),
+                                  stress.closed_form ? "closed form" : "influence tier");
     else
       r.cross_check = "the unworn face is not Hertzian (no crown, or the Hertz width reaches the face width): start "
                       "from the influence tier";
-    r.frames.push_back({first.t, hertzian ? *hertz : continuum::ring_face_stress(wear[k], p_start, mu_start, liner, ring)});
-    r.frames.push_back({samples.back().t, continuum::ring_face_stress(wear[k], pass.final_pressure, mu_end, liner, ring)});
+    r.frames.push_back({samples.front().t, stress.start});
+    r.frames.push_back({samples.back().t, stress.end});
     reports.push_back(std::move(r));
   }
   return reports;

@@ -495,6 +495,45 @@ LineContactStress bore_hertz_stress(const BoreGeometry &bore, double load_per_le
   return hertz_line_contact_stress(hertz_peak_pressure(load_per_length, b), b, mu, bearing, shaft, 0.0, points);
 }
 
+std::vector<StartEndStress> bore_start_end_stress(const JournalBearingParameters &p,
+                                                  const std::vector<JournalBearingSample> &samples,
+                                                  double start_friction_force, const JournalBearingReport &rep,
+                                                  const tribo::Material &bearing, const tribo::Material &shaft) {
+  std::vector<StartEndStress> out;
+  if (samples.empty() || rep.initial_pressure.size() != static_cast<std::size_t>(p.halves) ||
+      rep.final_pressure.size() != rep.initial_pressure.size())
+    return out;
+  const ConformalContact contact(p.bore);
+  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
+  const JournalBearingSample *last_slip = nullptr, *first_slip = nullptr;
+  for (const auto &s : samples)
+    if (s.state == ContactState::Slip) {
+      if (!first_slip) first_slip = &s;
+      last_slip = &s;
+    }
+  const JournalBearingSample &end = last_slip ? *last_slip : samples.back();
+  const double dir_start = first_slip ? sign(first_slip->journal_speed) : 1.0;
+  const double mu_start = dir_start * start_friction_force / samples.front().normal_force;
+  for (int h = 0; h < p.halves; ++h) {
+    StartEndStress s;
+    s.mu_start = mu_start;
+    const auto &p_start = rep.initial_pressure[h];
+    s.solved_peak = *std::max_element(p_start.begin(), p_start.end());
+    const auto hertz = bore_hertz_stress(p.bore, p.half_load(h) / p.bore.axial_width, mu_start, bearing, shaft);
+    s.hertz_peak = hertz.peak_pressure;
+    s.closed_form = std::abs(s.solved_peak / hertz.peak_pressure - 1.0) <= StartEndStress::hertz_tolerance;
+    s.start = s.closed_form ? hertz : bore_contact_stress(contact, p_start, mu_start, bearing, shaft);
+    s.mu_end = sign(end.journal_speed) * std::abs(end.half[h].mu != 0.0 ? end.half[h].mu : end.mu);
+    // The symmetric set-up: the upper half's end state equals the lower's (computed once).
+    if (h == 1 && rep.final_pressure[1] == rep.final_pressure[0] && end.half[1].mu == end.half[0].mu)
+      s.end = out.front().end;
+    else
+      s.end = bore_contact_stress(contact, rep.final_pressure[h], s.mu_end, bearing, shaft);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
 WearHistory wear_in(const JournalBearingSystem &system, double ds, int steps) {
   require(std::isfinite(ds) && ds > 0.0, "ds must be positive");
   require(steps >= 0, "steps must be >= 0");

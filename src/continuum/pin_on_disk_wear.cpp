@@ -1,6 +1,7 @@
 #include "continuum/pin_on_disk_wear.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace runin::continuum {
@@ -100,6 +101,17 @@ PinWearPass pin_wear_pass(const std::vector<PinOnDiskSample> &samples, const Pin
     out.disk = track;
   }
   return out;
+}
+
+std::pair<ContactStress, ContactStress> pin_start_end_stress(const PinWearParameters &tip, double load,
+                                                             double start_friction_force,
+                                                             const std::vector<double> &final_pressure,
+                                                             double ring_width, double final_mu,
+                                                             const tribo::Material &pin, const tribo::Material &disk) {
+  const auto hertz = hertz_sphere_on_flat(tip.tip_radius, tip.effective_modulus, load);
+  const double mu_start = start_friction_force / load;
+  return {hertz_contact_stress(hertz.peak_pressure, hertz.contact_radius, mu_start, pin, disk),
+          ring_contact_stress(final_pressure, ring_width, std::abs(final_mu), pin, disk)};
 }
 
 }  // namespace runin::continuum

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "continuum/axisymmetric_contact.h"
@@ -61,5 +62,14 @@ struct PinWearError : std::runtime_error {
 
 // Throws std::invalid_argument when the grid cannot hold the unworn contact, PinWearError when a step fails.
 PinWearPass pin_wear_pass(const std::vector<PinOnDiskSample> &samples, const PinWearPassSettings &settings);
+
+// The tip's subsurface stress (doc/subsurface_stress.md) at the start, the unworn tip (Hertz, Hamilton's closed form,
+// mu of break-away = start_friction_force / W), and at the end, the solved pressure of the worn profile (influence
+// functions, the final |mu|).
+std::pair<ContactStress, ContactStress> pin_start_end_stress(const PinWearParameters &tip, double load,
+                                                             double start_friction_force,
+                                                             const std::vector<double> &final_pressure,
+                                                             double ring_width, double final_mu,
+                                                             const tribo::Material &pin, const tribo::Material &disk);
 
 }  // namespace runin::continuum

@@ -145,6 +145,32 @@ double pressure_settling_time(const PistonRingParameters &p, const std::vector<P
   return first < cycles - 1 ? first * period : -1.0;
 }
 
+StartEndStress ring_face_start_end_stress(const RingLinerWear &wear, const std::vector<PistonRingSample> &samples,
+                                          double start_friction_force, const std::vector<double> &initial_pressure,
+                                          const std::vector<double> &final_pressure, const tribo::Material &liner,
+                                          const tribo::Material &ring) {
+  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
+  const PistonRingSample *first_slip = nullptr, *last_slip = nullptr;
+  for (const auto &s : samples)
+    if (s.state == ContactState::Slip) {
+      if (!first_slip) first_slip = &s;
+      last_slip = &s;
+    }
+  const auto &first = samples.front();
+  const PistonRingSample &end = last_slip ? *last_slip : samples.back();
+  StartEndStress out;
+  out.mu_start = (first_slip ? sign(first_slip->speed) : 1.0) * start_friction_force / first.normal_load;
+  out.mu_end = sign(end.speed) * end.mu;
+  out.solved_peak = *std::max_element(initial_pressure.begin(), initial_pressure.end());
+  const auto hertz = ring_face_hertz_stress(wear.settings(), first.normal_load, out.mu_start, liner, ring);
+  if (hertz) out.hertz_peak = hertz->peak_pressure;
+  out.closed_form =
+      hertz && std::abs(out.solved_peak / hertz->peak_pressure - 1.0) <= StartEndStress::hertz_tolerance;
+  out.start = out.closed_form ? *hertz : ring_face_stress(wear, initial_pressure, out.mu_start, liner, ring);
+  out.end = ring_face_stress(wear, final_pressure, out.mu_end, liner, ring);
+  return out;
+}
+
 RingStateLawRun simulate_state_law(const PistonRingSystem &system, const PistonRingRun &run, RingLinerWear &wear,
                                    StateLawFriction &held, double groove_position,
                                    const std::vector<double> &frame_times) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "continuum/contact_stress.h"
 #include "continuum/piston_ring.h"
 #include "continuum/ring_liner_wear.h"
 #include "continuum/sliding_friction.h"
@@ -63,6 +64,13 @@ std::vector<RingWearPass> ring_wear_pass(std::vector<RingLinerWear> &wear,
 // every cycle's value is within 1 % of the last full cycle's. -1: not settled (or ramp motion).
 double pressure_settling_time(const PistonRingParameters &p, const std::vector<PistonRingSample> &samples,
                               const std::vector<RingWearRow> &rows);
+
+// A ring face's subsurface stress at the start and the end (StartEndStress): `samples` are the ring's on the common
+// grid, `start_friction_force` the largest |F| up to the first slip sample, the pressures the pass's first and last.
+StartEndStress ring_face_start_end_stress(const RingLinerWear &wear, const std::vector<PistonRingSample> &samples,
+                                          double start_friction_force, const std::vector<double> &initial_pressure,
+                                          const std::vector<double> &final_pressure, const tribo::Material &liner,
+                                          const tribo::Material &ring);
 
 // One ring on the state law, split (state_law_splitting.h): its dynamics and its face/liner wear advance together.
 struct RingStateLawRun {
