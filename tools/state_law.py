@@ -58,7 +58,7 @@ def sample_rows(path):
 
 
 def sample_at_depth(rows, column, h, step, fit):
-    """One sample's value of `column` at worn depth h, reduced as src/cli/homogenise_curves.cpp does: fit = True
+    """One sample's value of `column` at worn depth h, reduced as src/coupling/homogenise_curves.cpp does: fit = True
     (mu_body, area_fraction) and h > 0: the least-squares line over the rows with h within step / 2, at h, kept
     within those rows' range; otherwise (or with fewer than 3 rows) linear between the last row below h and the
     first at or above it. NaN if the rows do not reach h."""

@@ -67,6 +67,88 @@ const std::map<std::string, std::set<std::string>> kModelKeys = {
 
 }  // namespace
 
+namespace {
+
+// mu0 + alpha V (strengthening, default) or mu0 - alpha V (weakening, thesis eq. 4.5 with -).
+double read_speed_coefficient(const CaseReader &reader) {
+  double alpha = reader.number("friction.alpha", 0.0);
+  if (reader.has("friction.speed_term")) {
+    const bool weakening = reader.choice("friction.speed_term", {"strengthening", "weakening"}) == "weakening";
+    if (alpha < 0.0) reader.fail("friction.alpha", "must be >= 0 when friction.speed_term is given, got " +
+                                                       CaseReader::format(alpha));
+    if (weakening) alpha = -alpha;
+  }
+  return alpha;
+}
+
+// The homogenised path: per-node mu(p, h) and dh/ds from a runin-state-law file. Relative paths: to the case file's
+// directory, else to the RunIn source tree.
+SlidingFriction read_state_law_friction(const CaseReader &reader, const std::optional<std::string> &law_path,
+                                        double alpha) {
+  auto state = std::make_shared<continuum::StateLawFriction>();
+  // --law FILE (relative to the working directory) overrides friction.law
+  const std::string file = law_path ? *law_path : reader.text("friction.law", "");
+  if (file.empty())
+    reader.fail("friction.law", "missing (required): the state law file (runin homogenise), or --law FILE");
+  if (law_path) {
+    state->path = std::filesystem::path(file).lexically_normal().string();
+    if (!std::filesystem::exists(state->path)) throw InputError("--law: no such file: " + state->path);
+  } else {
+    state->path = find_case_file(reader, "friction.law", file).string();
+  }
+  try {
+    state->law = std::make_shared<const coupling::StateLaw>(coupling::StateLaw::read_file(state->path));
+  } catch (const coupling::InputFormatError &e) {
+    reader.fail("friction.law", e.what());
+  }
+  const std::string policy =
+      reader.choice("friction.out_of_range", {"error", "clamp", "archard"}, std::string("error"));
+  state->policy = policy == "clamp"     ? coupling::OutOfRange::Clamp
+                  : policy == "archard" ? coupling::OutOfRange::Archard
+                                        : coupling::OutOfRange::Error;
+  if (reader.has("friction.mu_static")) state->mu_static = reader.non_negative("friction.mu_static");
+  return SlidingFriction::state_law(std::move(state), alpha);
+}
+
+SlidingFriction read_feedback_friction(const CaseReader &reader, double alpha) {
+  const auto kind = reader.choice("friction.kind", {"lubricated", "dry"}, std::string("dry")) == "dry"
+                        ? tribo::FeedbackKind::dry
+                        : tribo::FeedbackKind::lubricated;
+  tribo::FeedbackCoefficients k;
+  k.C1 = reader.positive("friction.C1");
+  k.C2 = reader.non_negative("friction.C2");
+  k.K1 = reader.positive("friction.K1");
+  k.K2 = reader.positive("friction.K2");
+  k.A = reader.positive("friction.A");
+  k.B = reader.positive("friction.B");
+  const double r0 = reader.positive("friction.R0");
+  const bool per_distance = reader.choice("friction.basis", {"distance", "time"}, std::string("distance")) == "distance";
+  try {
+    return SlidingFriction::feedback(tribo::FeedbackModel(k, kind), r0, per_distance, alpha);
+  } catch (const tribo::InvalidCoefficient &e) {
+    reader.fail("friction", e.what());
+  }
+}
+
+SlidingFriction read_law_file_friction(const CaseReader &reader, const std::optional<std::string> &law_path,
+                                       double alpha) {
+  if (!law_path) reader.fail("friction.model", "is 'law_file' but no --law FILE was given");
+  const double distance_scale = reader.positive("friction.distance_scale");
+  const auto branch = reader.choice("friction.branch", {"fit", "table"}, std::string("fit")) == "fit"
+                          ? coupling::FrictionLaw::Branch::Fit
+                          : coupling::FrictionLaw::Branch::Table;
+  coupling::FrictionLaw law = [&] {
+    try {
+      return coupling::read_law_file(*law_path);
+    } catch (const coupling::InputFormatError &e) {
+      throw InputError(e.what());
+    }
+  }();
+  return SlidingFriction::from_law(law, branch, distance_scale, alpha);
+}
+
+}  // namespace
+
 continuum::SlidingFriction read_friction(const CaseReader &reader, const std::optional<std::string> &law_path) {
   const std::string model =
       reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
@@ -75,14 +157,7 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       for (const auto &key : keys)
         if (reader.has("friction." + key) && !kModelKeys.at(model).count(key))
           reader.fail("friction." + key, "not used by model '" + model + "'");
-  // mu0 + alpha V (strengthening, default) or mu0 - alpha V (weakening, thesis eq. 4.5 with -).
-  double alpha = reader.number("friction.alpha", 0.0);
-  if (reader.has("friction.speed_term")) {
-    const bool weakening = reader.choice("friction.speed_term", {"strengthening", "weakening"}) == "weakening";
-    if (alpha < 0.0) reader.fail("friction.alpha", "must be >= 0 when friction.speed_term is given, got " +
-                                                       CaseReader::format(alpha));
-    if (weakening) alpha = -alpha;
-  }
+  const double alpha = read_speed_coefficient(reader);
   if (law_path && model != "law_file" && model != "state_law")
     reader.fail("friction.model", "is '" + model + "' but --law was given");
 
@@ -94,65 +169,9 @@ continuum::SlidingFriction read_friction(const CaseReader &reader, const std::op
       if (mu_kinetic > mu_static) reader.fail("friction.mu_kinetic", "must not exceed friction.mu_static");
       return SlidingFriction::static_kinetic(mu_static, mu_kinetic, alpha);
     }
-    if (model == "state_law") {
-      // The homogenised path: per-node mu(p, h) and dh/ds from a runin-state-law file. Relative
-      // paths: to the case file's directory, else to the RunIn source tree.
-      auto state = std::make_shared<continuum::StateLawFriction>();
-      // --law FILE (relative to the working directory) overrides friction.law
-      const std::string file = law_path ? *law_path : reader.text("friction.law", "");
-      if (file.empty())
-        reader.fail("friction.law", "missing (required): the state law file (runin homogenise), or --law FILE");
-      if (law_path) {
-        state->path = std::filesystem::path(file).lexically_normal().string();
-        if (!std::filesystem::exists(state->path)) throw InputError("--law: no such file: " + state->path);
-      } else {
-        state->path = find_case_file(reader, "friction.law", file).string();
-      }
-      try {
-        state->law = std::make_shared<const coupling::StateLaw>(coupling::StateLaw::read_file(state->path));
-      } catch (const coupling::InputFormatError &e) {
-        reader.fail("friction.law", e.what());
-      }
-      const std::string policy =
-          reader.choice("friction.out_of_range", {"error", "clamp", "archard"}, std::string("error"));
-      state->policy = policy == "clamp"     ? coupling::OutOfRange::Clamp
-                      : policy == "archard" ? coupling::OutOfRange::Archard
-                                            : coupling::OutOfRange::Error;
-      if (reader.has("friction.mu_static")) state->mu_static = reader.non_negative("friction.mu_static");
-      return SlidingFriction::state_law(std::move(state), alpha);
-    }
-    if (model == "feedback") {
-      const auto kind = reader.choice("friction.kind", {"lubricated", "dry"}, std::string("dry")) == "dry"
-                            ? tribo::FeedbackKind::dry
-                            : tribo::FeedbackKind::lubricated;
-      tribo::FeedbackCoefficients k;
-      k.C1 = reader.positive("friction.C1");
-      k.C2 = reader.non_negative("friction.C2");
-      k.K1 = reader.positive("friction.K1");
-      k.K2 = reader.positive("friction.K2");
-      k.A = reader.positive("friction.A");
-      k.B = reader.positive("friction.B");
-      const double r0 = reader.positive("friction.R0");
-      const bool per_distance = reader.choice("friction.basis", {"distance", "time"}, std::string("distance")) == "distance";
-      try {
-        return SlidingFriction::feedback(tribo::FeedbackModel(k, kind), r0, per_distance, alpha);
-      } catch (const tribo::InvalidCoefficient &e) {
-        reader.fail("friction", e.what());
-      }
-    }
-    if (!law_path) reader.fail("friction.model", "is 'law_file' but no --law FILE was given");
-    const double distance_scale = reader.positive("friction.distance_scale");
-    const auto branch = reader.choice("friction.branch", {"fit", "table"}, std::string("fit")) == "fit"
-                            ? coupling::FrictionLaw::Branch::Fit
-                            : coupling::FrictionLaw::Branch::Table;
-    coupling::FrictionLaw law = [&] {
-      try {
-        return coupling::read_law_file(*law_path);
-      } catch (const coupling::InputFormatError &e) {
-        throw InputError(e.what());
-      }
-    }();
-    return SlidingFriction::from_law(law, branch, distance_scale, alpha);
+    if (model == "state_law") return read_state_law_friction(reader, law_path, alpha);
+    if (model == "feedback") return read_feedback_friction(reader, alpha);
+    return read_law_file_friction(reader, law_path, alpha);
   } catch (const std::invalid_argument &e) {
     reader.fail("friction", e.what());
   }
@@ -247,20 +266,12 @@ tribo::Material read_runin_material(const std::string &path, const std::string &
   }
 }
 
-PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path) {
-  const CaseReader reader(path, parse_toml(path), kSchema);
-  reader.reject_unknown_keys();
+namespace {
 
-  PinOnDiskCase c;
-  c.path = path;
-  c.title = reader.text("title", path);
+// [loading]: the speed drive, or the torque drive with its torque given or from eq. 4.11; returns whether the torque
+// was targeted (target_speed + target_time).
+bool read_loading(const CaseReader &reader, PinOnDiskCase &c) {
   auto &p = c.parameters;
-  p.mass = reader.positive_at_most("pin.mass", 1e3);  // kg; above it eq. 4.11's torque overflows long before
-  p.track_radius = reader.positive("pin.track_radius");
-  p.normal_load = reader.positive("pin.normal_load");
-  p.ramp_time = reader.non_negative("loading.ramp_time", 2.0);
-  c.friction = read_friction(reader, law_path);
-
   const bool speed_drive = reader.choice("loading.drive", {"torque", "speed"}, std::string("torque")) == "speed";
   const bool explicit_torque = reader.has("loading.applied_torque");
   const bool targeted = reader.has("loading.target_speed") || reader.has("loading.target_time");
@@ -275,28 +286,29 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   }
   if (!speed_drive && explicit_torque && targeted)
     reader.fail("loading.applied_torque", "give either applied_torque or target_speed + target_time, not both");
-  if (speed_drive) {
-    // the drive sets V(t); its torque is an output
-  } else if (explicit_torque) {
+  if (speed_drive) return targeted;  // the drive sets V(t); its torque is an output
+  if (explicit_torque) {
     p.applied_torque = reader.positive("loading.applied_torque");
     c.torque_origin = "from the case file";
-  } else {
-    if (!targeted) reader.fail("loading.applied_torque", "missing (or give target_speed + target_time)");
-    const double v1 = reader.positive("loading.target_speed");
-    const double t1 = reader.positive("loading.target_time");
-    if (c.friction->speed_coefficient() < 0.0)
-      reader.fail("loading.target_speed",
-                  "eq. 4.11 with velocity weakening puts T_app at the static limit to within exp(-|alpha| W t1 / m); "
-                  "give loading.applied_torque instead");
-    // Eq. 4.11 from rest with mu0 = the static coefficient (the thesis's mu0).
-    p.applied_torque = continuum::thesis_torque_for_speed(p, c.friction->static_coefficient(),
-                                                          c.friction->speed_coefficient(), 0.0, v1, t1);
-    if (!(p.applied_torque > 0.0)) reader.fail("loading.target_speed", "eq. 4.11 gives a non-positive torque");
-    c.torque_origin = "eq. 4.11: V = " + CaseReader::format(v1) + " m/s at t = " + CaseReader::format(t1) +
-                      " s from rest under constant torque";
+    return targeted;
   }
+  if (!targeted) reader.fail("loading.applied_torque", "missing (or give target_speed + target_time)");
+  const double v1 = reader.positive("loading.target_speed");
+  const double t1 = reader.positive("loading.target_time");
+  if (c.friction->speed_coefficient() < 0.0)
+    reader.fail("loading.target_speed",
+                "eq. 4.11 with velocity weakening puts T_app at the static limit to within exp(-|alpha| W t1 / m); "
+                "give loading.applied_torque instead");
+  // Eq. 4.11 from rest with mu0 = the static coefficient (the thesis's mu0).
+  p.applied_torque = continuum::thesis_torque_for_speed(p, c.friction->static_coefficient(),
+                                                        c.friction->speed_coefficient(), 0.0, v1, t1);
+  if (!(p.applied_torque > 0.0)) reader.fail("loading.target_speed", "eq. 4.11 gives a non-positive torque");
+  c.torque_origin = "eq. 4.11: V = " + CaseReader::format(v1) + " m/s at t = " + CaseReader::format(t1) +
+                    " s from rest under constant torque";
+  return targeted;
+}
 
-  auto &run = c.run;
+void read_pin_run(const CaseReader &reader, continuum::PinOnDiskRun &run) {
   run.t_end = reader.positive("run.t_end");
   run.output_interval = reader.positive("run.output_interval", 1e-3);
   if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
@@ -306,6 +318,140 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   defaults.atol = 1e-10;
   defaults.max_steps = 100000;
   run.integrator = read_solver(reader, defaults);
+}
+
+// Yield strengths (and E, nu unless given in [contact]) from a RunIn coefficient file, for the subsurface stress
+// verdict (doc/subsurface_stress.md).
+void read_contact_materials(const CaseReader &reader, PinContactCase &k) {
+  const std::string file = reader.text("contact.materials", "");
+  if (file.empty()) reader.fail("contact.materials", "needed with contact.pin_material / disk_material");
+  k.materials_path = find_case_file(reader, "contact.materials", file).string();
+  k.pin_name = reader.text("contact.pin_material", "");
+  k.disk_name = reader.text("contact.disk_material", "");
+  if (k.pin_name.empty() || k.disk_name.empty())
+    reader.fail("contact.materials", "needs both contact.pin_material and contact.disk_material");
+  try {
+    const tribo::Material pin = read_runin_material(k.materials_path, k.pin_name);
+    const tribo::Material disk = read_runin_material(k.materials_path, k.disk_name);
+    if (!reader.has("contact.pin_youngs_modulus")) k.pin.youngs_modulus = pin.youngs_modulus;
+    if (!reader.has("contact.pin_poisson_ratio")) k.pin.poisson_ratio = pin.poisson_ratio;
+    if (!reader.has("contact.disk_youngs_modulus")) k.disk.youngs_modulus = disk.youngs_modulus;
+    if (!reader.has("contact.disk_poisson_ratio")) k.disk.poisson_ratio = disk.poisson_ratio;
+    k.pin.yield_strength = pin.yield_strength;
+    k.disk.yield_strength = disk.yield_strength;
+    k.pin.hardness = pin.hardness;
+    k.disk.hardness = disk.hardness;
+  } catch (const std::invalid_argument &e) {
+    reader.fail("contact.materials", e.what());
+  }
+}
+
+// [contact] without [wear]: the tip (sphere or flat end), the materials, the rings.
+PinContactCase read_pin_contact(const CaseReader &reader, bool state_law) {
+  PinContactCase k;
+  k.flat = reader.choice("contact.tip", {"sphere", "flat"}, std::string("sphere")) == "flat";
+  if (k.flat) {
+    if (!state_law) reader.fail("contact.tip", "'flat' needs friction.model = \"state_law\"");
+    if (reader.has("contact.tip_radius")) reader.fail("contact.tip_radius", "not used by contact.tip = \"flat\"");
+    k.flat_radius = reader.positive("contact.flat_radius");
+    k.tip_radius = k.flat_radius;  // only names a size below
+  } else {
+    if (reader.has("contact.flat_radius")) reader.fail("contact.flat_radius", "needs contact.tip = \"flat\"");
+    k.tip_radius = reader.positive("contact.tip_radius");
+  }
+  // Thesis ch. 4: Cu pin E = 110 GPa, nu = 0.37; Al disk E = 69 GPa, nu = 0.33.
+  k.pin.youngs_modulus = reader.positive("contact.pin_youngs_modulus", 110e9);
+  k.pin.poisson_ratio = reader.non_negative("contact.pin_poisson_ratio", 0.37);
+  k.disk.youngs_modulus = reader.positive("contact.disk_youngs_modulus", 69e9);
+  k.disk.poisson_ratio = reader.non_negative("contact.disk_poisson_ratio", 0.33);
+  if (reader.has("contact.materials") || reader.has("contact.pin_material") || reader.has("contact.disk_material"))
+    read_contact_materials(reader, k);
+  for (const char *key : {"contact.pin_poisson_ratio", "contact.disk_poisson_ratio"})
+    if (reader.number(key, 0.0) >= 0.5) reader.fail(key, "must be < 0.5");
+  const long rings = reader.positive_integer("contact.rings", 256);
+  if (rings < 8 || rings > 4096) reader.fail("contact.rings", "must be in [8, 4096], got " + std::to_string(rings));
+  k.rings = static_cast<int>(rings);
+  if (reader.has("contact.grid_radius")) k.grid_radius = reader.positive("contact.grid_radius");
+  return k;
+}
+
+// The disk's own Archard wear of its track (opt-in: without wear.disk_k the disk is not worn). H_d defaults to the
+// disk material's hardness in contact.materials.
+void read_disk_wear(const CaseReader &reader, PinContactCase &k, tribo::ArchardForm form) {
+  if (reader.has("wear.disk_hardness") && !reader.has("wear.disk_k"))
+    reader.fail("wear.disk_hardness", "needs wear.disk_k (the disk's wear coefficient)");
+  if (!reader.has("wear.disk_k")) return;
+  const double disk_k = reader.non_negative("wear.disk_k");
+  double disk_hardness = 0.0;
+  if (reader.has("wear.disk_hardness")) {
+    disk_hardness = reader.positive("wear.disk_hardness");
+    k.disk_hardness_origin = "wear.disk_hardness";
+  } else if (k.disk.hardness > 0.0) {
+    disk_hardness = k.disk.hardness;
+    k.disk_hardness_origin = k.disk_name + " in " + k.materials_path;
+  } else {
+    reader.fail("wear.disk_hardness", "missing (or name the disk's material with contact.materials and "
+                                      "contact.disk_material)");
+  }
+  k.disk_wear.emplace(disk_k, disk_hardness, form);
+}
+
+// [wear]: the state law's own (its wear_rate wears the pin, its counterface_wear_rate the disk), or Archard's.
+void read_pin_wear(const CaseReader &reader, PinContactCase &k, bool state_law) {
+  if (state_law) {
+    for (const char *key : {"wear.k", "wear.hardness", "wear.form", "wear.disk_k", "wear.disk_hardness"})
+      if (reader.has(key))
+        reader.fail(key, "not used with friction.model = \"state_law\" (the law's wear_rate wears the pin, its "
+                         "counterface_wear_rate the disk)");
+  } else {
+    const double coefficient = reader.non_negative("wear.k");
+    const double hardness = reader.positive("wear.hardness");
+    const auto form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "thesis"
+                          ? tribo::ArchardForm::thesis
+                          : tribo::ArchardForm::plain;
+    k.wear.emplace(coefficient, hardness, form);
+    read_disk_wear(reader, k, form);
+  }
+  k.step_safety = reader.positive("wear.step_safety", 0.5);
+  if (k.step_safety > 1.0) reader.fail("wear.step_safety", "must be <= 1 (fraction of the stability bound)");
+  k.max_wear_steps = reader.positive_integer("wear.max_steps", 1000000);
+}
+
+void read_pin_sweep(const CaseReader &reader, PinOnDiskCase &c, bool state_law) {
+  if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
+  if (c.friction_model == "law_file")
+    reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
+  c.sweep_mu0 = reader.numbers_at_most("sweep.mu0", CaseReader::kMaxSweepValues);
+  const bool speed_drive = c.parameters.drive == continuum::PinDrive::Speed;
+  for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
+    if (c.sweep_mu0[i] < 0.0) reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0");
+    try {
+      friction_with_static_coefficient(*c.friction, c.friction_model, c.sweep_mu0[i]);
+    } catch (const std::invalid_argument &e) {
+      reader.fail("sweep.mu0", "element " + std::to_string(i) + ": " + e.what());
+    }
+    if (!speed_drive && !(with_mu0(c, c.sweep_mu0[i]).parameters.applied_torque > 0.0))
+      reader.fail("sweep.mu0", "element " + std::to_string(i) + ": eq. 4.11 gives a non-positive torque");
+  }
+}
+
+}  // namespace
+
+PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional<std::string> &law_path) {
+  const CaseReader reader(path, parse_toml(path), kSchema);
+  reader.reject_unknown_keys();
+
+  PinOnDiskCase c;
+  c.path = path;
+  c.title = reader.text("title", path);
+  auto &p = c.parameters;
+  p.mass = reader.positive_at_most("pin.mass", 1e3);  // kg; above it eq. 4.11's torque overflows long before
+  p.track_radius = reader.positive("pin.track_radius");
+  p.normal_load = reader.positive("pin.normal_load");
+  p.ramp_time = reader.non_negative("loading.ramp_time", 2.0);
+  c.friction = read_friction(reader, law_path);
+  const bool targeted = read_loading(reader, c);
+  read_pin_run(reader, c.run);
 
   c.friction_model = reader.text("friction.model", "");
   if (targeted) c.torque_target = std::make_pair(reader.number("loading.target_speed"), reader.number("loading.target_time"));
@@ -314,117 +460,18 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   if (state_law && !reader.has("contact"))
     reader.fail("friction.model", "'state_law' needs a [contact] table (the per-node pressures)");
   if (reader.has("contact")) {
-    PinContactCase k;
-    k.flat = reader.choice("contact.tip", {"sphere", "flat"}, std::string("sphere")) == "flat";
-    if (k.flat) {
-      if (!state_law) reader.fail("contact.tip", "'flat' needs friction.model = \"state_law\"");
-      if (reader.has("contact.tip_radius")) reader.fail("contact.tip_radius", "not used by contact.tip = \"flat\"");
-      k.flat_radius = reader.positive("contact.flat_radius");
-      k.tip_radius = k.flat_radius;  // only names a size below
-    } else {
-      if (reader.has("contact.flat_radius")) reader.fail("contact.flat_radius", "needs contact.tip = \"flat\"");
-      k.tip_radius = reader.positive("contact.tip_radius");
-    }
-    // Thesis ch. 4: Cu pin E = 110 GPa, nu = 0.37; Al disk E = 69 GPa, nu = 0.33.
-    k.pin.youngs_modulus = reader.positive("contact.pin_youngs_modulus", 110e9);
-    k.pin.poisson_ratio = reader.non_negative("contact.pin_poisson_ratio", 0.37);
-    k.disk.youngs_modulus = reader.positive("contact.disk_youngs_modulus", 69e9);
-    k.disk.poisson_ratio = reader.non_negative("contact.disk_poisson_ratio", 0.33);
-    // Yield strengths (and E, nu unless given above) from a RunIn coefficient file, for the subsurface stress
-    // verdict (doc/subsurface_stress.md).
-    if (reader.has("contact.materials") || reader.has("contact.pin_material") || reader.has("contact.disk_material")) {
-      const std::string file = reader.text("contact.materials", "");
-      if (file.empty()) reader.fail("contact.materials", "needed with contact.pin_material / disk_material");
-      k.materials_path = find_case_file(reader, "contact.materials", file).string();
-      k.pin_name = reader.text("contact.pin_material", "");
-      k.disk_name = reader.text("contact.disk_material", "");
-      if (k.pin_name.empty() || k.disk_name.empty())
-        reader.fail("contact.materials", "needs both contact.pin_material and contact.disk_material");
-      try {
-        const tribo::Material pin = read_runin_material(k.materials_path, k.pin_name);
-        const tribo::Material disk = read_runin_material(k.materials_path, k.disk_name);
-        if (!reader.has("contact.pin_youngs_modulus")) k.pin.youngs_modulus = pin.youngs_modulus;
-        if (!reader.has("contact.pin_poisson_ratio")) k.pin.poisson_ratio = pin.poisson_ratio;
-        if (!reader.has("contact.disk_youngs_modulus")) k.disk.youngs_modulus = disk.youngs_modulus;
-        if (!reader.has("contact.disk_poisson_ratio")) k.disk.poisson_ratio = disk.poisson_ratio;
-        k.pin.yield_strength = pin.yield_strength;
-        k.disk.yield_strength = disk.yield_strength;
-        k.pin.hardness = pin.hardness;
-        k.disk.hardness = disk.hardness;
-      } catch (const std::invalid_argument &e) {
-        reader.fail("contact.materials", e.what());
-      }
-    }
-    for (const char *key : {"contact.pin_poisson_ratio", "contact.disk_poisson_ratio"})
-      if (reader.number(key, 0.0) >= 0.5) reader.fail(key, "must be < 0.5");
-    const long rings = reader.positive_integer("contact.rings", 256);
-    if (rings < 8 || rings > 4096) reader.fail("contact.rings", "must be in [8, 4096], got " + std::to_string(rings));
-    k.rings = static_cast<int>(rings);
-    if (reader.has("contact.grid_radius")) k.grid_radius = reader.positive("contact.grid_radius");
-    if (state_law && reader.has("wear")) {
-      // One wear law: the state law's wear_rate wears the pin, its counterface_wear_rate the disk.
-      for (const char *key : {"wear.k", "wear.hardness", "wear.form", "wear.disk_k", "wear.disk_hardness"})
-        if (reader.has(key))
-          reader.fail(key, "not used with friction.model = \"state_law\" (the law's wear_rate wears the pin, its "
-                           "counterface_wear_rate the disk)");
-      k.step_safety = reader.positive("wear.step_safety", 0.5);
-      if (k.step_safety > 1.0) reader.fail("wear.step_safety", "must be <= 1 (fraction of the stability bound)");
-      k.max_wear_steps = reader.positive_integer("wear.max_steps", 1000000);
-    } else if (reader.has("wear")) {
-      const double coefficient = reader.non_negative("wear.k");
-      const double hardness = reader.positive("wear.hardness");
-      const auto form = reader.choice("wear.form", {"plain", "thesis"}, std::string("plain")) == "thesis"
-                            ? tribo::ArchardForm::thesis
-                            : tribo::ArchardForm::plain;
-      k.wear.emplace(coefficient, hardness, form);
-      // The disk's own Archard wear of its track (opt-in: without wear.disk_k the disk is not worn, as before).
-      // H_d defaults to the disk material's hardness in contact.materials.
-      if (reader.has("wear.disk_hardness") && !reader.has("wear.disk_k"))
-        reader.fail("wear.disk_hardness", "needs wear.disk_k (the disk's wear coefficient)");
-      if (reader.has("wear.disk_k")) {
-        const double disk_k = reader.non_negative("wear.disk_k");
-        double disk_hardness = 0.0;
-        if (reader.has("wear.disk_hardness")) {
-          disk_hardness = reader.positive("wear.disk_hardness");
-          k.disk_hardness_origin = "wear.disk_hardness";
-        } else if (k.disk.hardness > 0.0) {
-          disk_hardness = k.disk.hardness;
-          k.disk_hardness_origin = k.disk_name + " in " + k.materials_path;
-        } else {
-          reader.fail("wear.disk_hardness", "missing (or name the disk's material with contact.materials and "
-                                            "contact.disk_material)");
-        }
-        k.disk_wear.emplace(disk_k, disk_hardness, form);
-      }
-      k.step_safety = reader.positive("wear.step_safety", 0.5);
-      if (k.step_safety > 1.0) reader.fail("wear.step_safety", "must be <= 1 (fraction of the stability bound)");
-      k.max_wear_steps = reader.positive_integer("wear.max_steps", 1000000);
-    }
+    PinContactCase k = read_pin_contact(reader, state_law);
+    if (reader.has("wear")) read_pin_wear(reader, k, state_law);
     c.contact = k;
     check_law_materials(reader, *c.friction, law_path, "contact.pin_material", k.pin_name, "contact.disk_material",
                         k.disk_name);
   }
   if (reader.has("output.vtk_times")) {
     if (!c.contact) reader.fail("output.vtk_times", "needs a [contact] table");
-    c.vtk_times = reader.times_within("output.vtk_times", run.t_end);
+    c.vtk_times = reader.times_within("output.vtk_times", c.run.t_end);
     if (c.vtk_times.size() > 100) reader.fail("output.vtk_times", "more than 100 frames");
   }
-  if (reader.has("sweep")) {
-    if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
-    if (c.friction_model == "law_file")
-      reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
-    c.sweep_mu0 = reader.numbers_at_most("sweep.mu0", CaseReader::kMaxSweepValues);
-    for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
-      if (c.sweep_mu0[i] < 0.0) reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0");
-      try {
-        friction_with_static_coefficient(*c.friction, c.friction_model, c.sweep_mu0[i]);
-      } catch (const std::invalid_argument &e) {
-        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": " + e.what());
-      }
-      if (!speed_drive && !(with_mu0(c, c.sweep_mu0[i]).parameters.applied_torque > 0.0))
-        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": eq. 4.11 gives a non-positive torque");
-    }
-  }
+  if (reader.has("sweep")) read_pin_sweep(reader, c, state_law);
   return c;
 }
 

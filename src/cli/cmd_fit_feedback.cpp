@@ -119,7 +119,8 @@ double output_interval(const std::vector<double> &t) {
   return dt;
 }
 
-int run(const Options &o, const PlotRunner &plot) {
+// The options' checks; returns the absolute output path (a .toml or .json case file).
+fs::path checked_output(const Options &o) {
   if (o.r_column.empty())
     throw InputError("--r-column: required: mu(t) alone does not fix the roughness scale (C1 R + C2/R is unchanged "
                      "under R -> s R, C1 -> C1/s, C2 -> C2 s); give the column with the roughness R");
@@ -134,79 +135,69 @@ int run(const Options &o, const PlotRunner &plot) {
     throw InputError("--output: '" + o.output + "' must end in .toml or .json (the case file `runin feedback` reads)");
   std::error_code error;
   if (fs::is_directory(output, error)) throw InputError("--output: '" + o.output + "' is a directory; name a case file");
+  return output;
+}
 
-  const std::string bytes = read_bytes(o.input);
-  const coupling::CsvTable table = [&] {
-    std::istringstream in(bytes);
-    try {
-      return coupling::parse_csv_table(in, o.input);
-    } catch (const coupling::InputFormatError &e) {
-      throw InputError(std::string("--input: ") + e.what());
-    }
-  }();
+// The series as read (t in column units, unscaled), the table row of each series row, the rows dropped.
+struct Series {
   coupling::FeedbackSeries series;
+  std::vector<std::size_t> kept_rows;
+  std::size_t dropped = 0;
+};
+
+Series read_series(const Options &o, const coupling::CsvTable &table) {
+  Series s;
+  auto &series = s.series;
   series.t = column(table, "--t-column", o.t_column);
   series.mu = column(table, "--mu-column", o.mu_column);
   series.R = column(table, "--r-column", o.r_column);
   series.t_name = o.t_column, series.mu_name = o.mu_column, series.R_name = o.r_column;
+  for (std::size_t i = 0; i < series.t.size(); ++i) s.kept_rows.push_back(i);
+  if (!o.drop_repeated_t) return s;
   // Rows at the same t as the row before (a pin that sticks does not slide): the first of them is kept.
-  std::vector<std::size_t> kept_rows;  // table row of each series row
-  for (std::size_t i = 0; i < series.t.size(); ++i) kept_rows.push_back(i);
-  std::size_t dropped = 0;
-  if (o.drop_repeated_t) {
-    coupling::FeedbackSeries kept = series;
-    kept.t.clear(), kept.mu.clear(), kept.R.clear(), kept_rows.clear();
-    for (std::size_t i = 0; i < series.t.size(); ++i) {
-      if (!kept.t.empty() && series.t[i] == kept.t.back()) {
-        ++dropped;
-        continue;
-      }
-      kept.t.push_back(series.t[i]), kept.mu.push_back(series.mu[i]), kept.R.push_back(series.R[i]);
-      kept_rows.push_back(i);
+  coupling::FeedbackSeries kept = series;
+  kept.t.clear(), kept.mu.clear(), kept.R.clear(), s.kept_rows.clear();
+  for (std::size_t i = 0; i < series.t.size(); ++i) {
+    if (!kept.t.empty() && series.t[i] == kept.t.back()) {
+      ++s.dropped;
+      continue;
     }
-    series = std::move(kept);
+    kept.t.push_back(series.t[i]), kept.mu.push_back(series.mu[i]), kept.R.push_back(series.R[i]);
+    s.kept_rows.push_back(i);
   }
-  const std::vector<double> t_data = series.t;
-  for (auto &t : series.t) t *= o.t_scale;
-  for (auto &r : series.R) r *= o.r_scale;
+  series = std::move(kept);
+  return s;
+}
 
-  coupling::FeedbackFitOptions options;
-  options.kind = o.kind == "dry" ? tribo::FeedbackKind::dry : tribo::FeedbackKind::lubricated;
-  options.max_rms_relative_error = o.max_rms_error;
-  const coupling::FeedbackFitResult fit = coupling::fit_feedback(series, options);
-  if (!fit.ok()) {
-    const std::string where = fit.bad_row != coupling::FeedbackFitResult::kNoRow
-                                  ? o.input + ":" + std::to_string(table.line_of(kept_rows[fit.bad_row]))
-                                  : o.input;
-    using S = coupling::FeedbackFitStatus;
-    const bool data_error = fit.status == S::TooFewPoints || fit.status == S::NonFinite ||
-                            fit.status == S::TimeNotIncreasing || fit.status == S::NonPositive;
-    const bool repeated = fit.status == S::TimeNotIncreasing && series.t[fit.bad_row] == series.t[fit.bad_row - 1];
-    throw InputError(where + ": " + (data_error ? "" : "not fitted (" + std::string(to_string(fit.status)) + "): ") +
-                     fit.message + (repeated ? "; --drop-repeated-t keeps the first of rows with equal t" : ""));
-  }
+// A fit that failed, as one line naming the data row.
+[[noreturn]] void fit_failed(const Options &o, const coupling::CsvTable &table, const Series &s,
+                             const coupling::FeedbackFitResult &fit) {
+  const auto &series = s.series;
+  const std::string where = fit.bad_row != coupling::FeedbackFitResult::kNoRow
+                                ? o.input + ":" + std::to_string(table.line_of(s.kept_rows[fit.bad_row]))
+                                : o.input;
+  using S = coupling::FeedbackFitStatus;
+  const bool data_error = fit.status == S::TooFewPoints || fit.status == S::NonFinite ||
+                          fit.status == S::TimeNotIncreasing || fit.status == S::NonPositive;
+  const bool repeated = fit.status == S::TimeNotIncreasing && series.t[fit.bad_row] == series.t[fit.bad_row - 1];
+  throw InputError(where + ": " + (data_error ? "" : "not fitted (" + std::string(to_string(fit.status)) + "): ") +
+                   fit.message + (repeated ? "; --drop-repeated-t keeps the first of rows with equal t" : ""));
+}
+
+// What the written case and its comparison name.
+struct Written {
+  fs::path output, csv_path, png_path;
+  std::string title, source, bytes;
+  double t0 = 0.0;  // the first data time, column units
+};
+
+std::vector<Section> fit_sections(const Options &o, const Written &w, const Series &s,
+                                  const coupling::FeedbackFitResult &fit) {
   const tribo::FeedbackModel &m = *fit.model;
   const auto &k = m.coefficients();
-  const double t_end = series.t.back() - fit.t0;
-  const double interval = output_interval(series.t);
-  const std::string source = fs::path(o.input).filename().string();
-  const std::string title =
-      o.title.empty() ? "Feedback model (thesis ch. 3) fitted to " + source : o.title;
-
-  const fs::path stem = output.parent_path() / output.stem();
-  const fs::path csv_path = stem.string() + "_comparison.csv";
-  const fs::path png_path = stem.string() + "_comparison.png";
   const bool dry = m.kind() == tribo::FeedbackKind::dry;
-
-  const std::vector<std::string> header = {
-      "Fitted by `runin fit-feedback` (doc/feedback_model.md, \"Fitting the model to a run-in\").",
-      "R(t) identifies R0, R* and the rate A K1 only; B K2 = A K1 R*^2 and the wear rate is not in the data,",
-      "so the model is written with A = B = 1, K1 = A K1, K2 = B K2 (wear in units where A = B = 1).",
-      fmt::format("t = {:g} * ({} - {:.17g}), R = {:g} * {}, mu = {}.", o.t_scale, o.t_column, t_data.front(),
-                  o.r_scale, o.r_column, o.mu_column),
-      "Run: runin feedback " + output.filename().string() + " --output-dir DIR"};
-  const std::vector<Section> sections = {
-      {"", {{"title", title, ""}}},
+  return {
+      {"", {{"title", w.title, ""}}},
       {"model",
        {{"kind", std::string(tribo::to_string(m.kind())), ""},
         {"C1", k.C1, m.thesis_name("C1") + (dry ? ", deformation" : ", viscous erosion")},
@@ -217,19 +208,19 @@ int run(const Options &o, const PlotRunner &plot) {
         {"B", k.B, "not identifiable apart from K2"}}},
       {"run",
        {{"R0", fit.R0, "fitted R at the first data point"},
-        {"t_end", t_end, "the data's span"},
-        {"output_interval", interval, ""}}},
+        {"t_end", s.series.t.back() - fit.t0, "the data's span"},
+        {"output_interval", output_interval(s.series.t), ""}}},
       {"fit",
-       {{"source", source, ""},
-        {"source_sha256", sha256_hex(bytes), ""},
+       {{"source", w.source, ""},
+        {"source_sha256", sha256_hex(w.bytes), ""},
         {"t_column", o.t_column, ""},
         {"mu_column", o.mu_column, ""},
         {"r_column", o.r_column, ""},
         {"t_scale", o.t_scale, "model t = t_scale (t_column - t0)"},
         {"r_scale", o.r_scale, "model R = r_scale r_column"},
-        {"t0", t_data.front(), "first data time, column units"},
+        {"t0", w.t0, "first data time, column units"},
         {"points", static_cast<long>(fit.points), ""},
-        {"dropped_repeated_t", static_cast<long>(dropped), "rows at the t of the row before (--drop-repeated-t)"},
+        {"dropped_repeated_t", static_cast<long>(s.dropped), "rows at the t of the row before (--drop-repeated-t)"},
         {"status", std::string(to_string(fit.status)), ""},
         {"method", std::string("Levenberg-Marquardt on the relative error of R^2 (R0, R*, A K1); QR least squares "
                                "of mu / mu_i on (R, 1/R) (C1, C2 >= 0)"), ""},
@@ -249,9 +240,25 @@ int run(const Options &o, const PlotRunner &plot) {
         {"mu_of_R_max_rel_error", fit.mu_of_R_max_rel_error, "C1 R + C2/R at the measured R vs data"},
         {"mu_of_R_rms_rel_error", fit.mu_of_R_rms_rel_error, ""},
         {"max_rms_rel_error", o.max_rms_error, "acceptance limit (--max-rms-error)"},
-        {"comparison", csv_path.filename().string(), "data vs fit"}}}};
-  const std::string case_text = extension == ".json" ? render_json(sections) : render_toml(header, sections);
+        {"comparison", w.csv_path.filename().string(), "data vs fit"}}}};
+}
 
+std::string case_text(const Options &o, const Written &w, const Series &s, const coupling::FeedbackFitResult &fit) {
+  const std::vector<std::string> header = {
+      "Fitted by `runin fit-feedback` (doc/feedback_model.md, \"Fitting the model to a run-in\").",
+      "R(t) identifies R0, R* and the rate A K1 only; B K2 = A K1 R*^2 and the wear rate is not in the data,",
+      "so the model is written with A = B = 1, K1 = A K1, K2 = B K2 (wear in units where A = B = 1).",
+      fmt::format("t = {:g} * ({} - {:.17g}), R = {:g} * {}, mu = {}.", o.t_scale, o.t_column, w.t0,
+                  o.r_scale, o.r_column, o.mu_column),
+      "Run: runin feedback " + w.output.filename().string() + " --output-dir DIR"};
+  const auto sections = fit_sections(o, w, s, fit);
+  return w.output.extension() == ".json" ? render_json(sections) : render_toml(header, sections);
+}
+
+// Data against the fit: t (column units and model), R, mu and their relative errors.
+std::string comparison_csv(const std::vector<double> &t_data, const coupling::FeedbackSeries &series,
+                           const coupling::FeedbackFitResult &fit) {
+  const tribo::FeedbackModel &m = *fit.model;
   std::string csv = "t,t_model,R,R_fit,mu,mu_fit,R_rel_error,mu_rel_error\n";
   for (std::size_t i = 0; i < series.t.size(); ++i) {
     const double R_fit = m.exact_roughness(fit.R0, series.t[i] - fit.t0), mu_fit = m.mu(R_fit);
@@ -259,20 +266,21 @@ int run(const Options &o, const PlotRunner &plot) {
                        series.t[i] - fit.t0, series.R[i], R_fit, series.mu[i], mu_fit,
                        (R_fit - series.R[i]) / series.R[i], (mu_fit - series.mu[i]) / series.mu[i]);
   }
+  return csv;
+}
 
-  const std::string t_label =
-      o.t_scale == 1.0 ? fmt::format("{} - {:g}", o.t_column, t_data.front())
-                       : fmt::format("{:g} x ({} - {:g})", o.t_scale, o.t_column, t_data.front());
-
-  // Everything is computed: stage the files, plot, then move them in together.
-  // Directories made for the output are removed again if the run fails before the commit.
+// Everything is computed: stage the files, plot, then move them in together. Directories made for the output are
+// removed again if the run fails before the commit.
+void write_outputs(const Options &o, const Written &w, const std::string &text, const std::string &csv,
+                   double r_star, const PlotRunner &plot) {
+  std::error_code error;
   fs::path made;
-  for (fs::path p = output.parent_path(); !p.empty() && !fs::exists(p, error); p = p.parent_path()) {
+  for (fs::path p = w.output.parent_path(); !p.empty() && !fs::exists(p, error); p = p.parent_path()) {
     made = p;
     if (p == p.parent_path()) break;
   }
-  fs::create_directories(output.parent_path(), error);
-  if (error) throw std::runtime_error("cannot create " + output.parent_path().string() + ": " + error.message());
+  fs::create_directories(w.output.parent_path(), error);
+  if (error) throw std::runtime_error("cannot create " + w.output.parent_path().string() + ": " + error.message());
   struct RemoveUnlessKept {
     fs::path path;
     bool keep = false;
@@ -281,22 +289,28 @@ int run(const Options &o, const PlotRunner &plot) {
       if (!keep && !path.empty()) fs::remove_all(path, ignored);
     }
   } made_directories{made};
-  StagedFile case_file(output), csv_file(csv_path), png_file(png_path);
-  case_file.write(case_text);
+  StagedFile case_file(w.output), csv_file(w.csv_path), png_file(w.png_path);
+  case_file.write(text);
   csv_file.write(csv);
+  const std::string t_label =
+      o.t_scale == 1.0 ? fmt::format("{} - {:g}", o.t_column, w.t0)
+                       : fmt::format("{:g} x ({} - {:g})", o.t_scale, o.t_column, w.t0);
   if (!o.no_plot)
     plot("plot_feedback_fit.py",
-         {csv_file.temp_path().string(), png_file.temp_path().string(), "--title", title, "--r-star",
-          fmt::format("{:.17g}", fit.R_star), "--t-label", t_label});
+         {csv_file.temp_path().string(), png_file.temp_path().string(), "--title", w.title, "--r-star",
+          fmt::format("{:.17g}", r_star), "--t-label", t_label});
   case_file.commit();
   csv_file.commit();
   if (!o.no_plot) png_file.commit();
   made_directories.keep = true;
+}
 
+void print_fit(const Options &o, const Written &w, std::size_t dropped, const coupling::FeedbackFitResult &fit) {
+  const tribo::FeedbackModel &m = *fit.model;
   fmt::print("runin fit-feedback: {} ({} rows{}) -> {}\n", o.input, fit.points,
              o.drop_repeated_t ? fmt::format(", {} at a repeated t dropped", dropped) : "", o.output);
   fmt::print("  columns      t '{}' x {:g}, mu '{}', R '{}' x {:g}; model time from t0 = {:.6g}\n", o.t_column,
-             o.t_scale, o.mu_column, o.r_column, o.r_scale, t_data.front());
+             o.t_scale, o.mu_column, o.r_column, o.r_scale, w.t0);
   fmt::print("  R(t)         R0 = {:.8g}, R* = {:.8g}, A K1 = {:.8g} (+- {:.2g}), B K2 = A K1 R*^2 = {:.8g}\n", fit.R0,
              fit.R_star, fit.rate, fit.rate_error, fit.B_K2);
   fmt::print("  mu(R)        C1 = {} = {:.8g} (+- {:.2g}), C2 = {} = {:.8g} (+- {:.2g}){}\n", m.thesis_name("C1"),
@@ -307,8 +321,40 @@ int run(const Options &o, const PlotRunner &plot) {
              "{} evaluations)\n",
              fit.R_max_rel_error, fit.R_rms_rel_error, fit.mu_max_rel_error, fit.mu_rms_rel_error, fit.lm_status,
              fit.lm_evaluations);
-  fmt::print("  wrote        {}, {}{}\n", output.string(), csv_path.string(),
-             o.no_plot ? "" : ", " + png_path.string());
+  fmt::print("  wrote        {}, {}{}\n", w.output.string(), w.csv_path.string(),
+             o.no_plot ? "" : ", " + w.png_path.string());
+}
+
+int run(const Options &o, const PlotRunner &plot) {
+  Written w;
+  w.output = checked_output(o);
+  w.bytes = read_bytes(o.input);
+  const coupling::CsvTable table = [&] {
+    std::istringstream in(w.bytes);
+    try {
+      return coupling::parse_csv_table(in, o.input);
+    } catch (const coupling::InputFormatError &e) {
+      throw InputError(std::string("--input: ") + e.what());
+    }
+  }();
+  Series s = read_series(o, table);
+  const std::vector<double> t_data = s.series.t;
+  for (auto &t : s.series.t) t *= o.t_scale;
+  for (auto &r : s.series.R) r *= o.r_scale;
+
+  coupling::FeedbackFitOptions options;
+  options.kind = o.kind == "dry" ? tribo::FeedbackKind::dry : tribo::FeedbackKind::lubricated;
+  options.max_rms_relative_error = o.max_rms_error;
+  const coupling::FeedbackFitResult fit = coupling::fit_feedback(s.series, options);
+  if (!fit.ok()) fit_failed(o, table, s, fit);
+  w.source = fs::path(o.input).filename().string();
+  w.title = o.title.empty() ? "Feedback model (thesis ch. 3) fitted to " + w.source : o.title;
+  const fs::path stem = w.output.parent_path() / w.output.stem();
+  w.csv_path = stem.string() + "_comparison.csv";
+  w.png_path = stem.string() + "_comparison.png";
+  w.t0 = t_data.front();
+  write_outputs(o, w, case_text(o, w, s, fit), comparison_csv(t_data, s.series, fit), fit.R_star, plot);
+  print_fit(o, w, s.dropped, fit);
   return 0;
 }
 

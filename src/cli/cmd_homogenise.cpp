@@ -27,11 +27,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/case_file.h"
-#include "cli/homogenise_curves.h"
 #include "cli/homogenise_plan.h"
 #include "cli/runin_version.h"
 #include "cli/staged_file.h"
 #include "coupling/ave_time_reader.h"
+#include "coupling/homogenise_curves.h"
 #include "coupling/state_law.h"
 
 extern char **environ;  // mpi_environment()
@@ -41,6 +41,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+using coupling::cell_series;
+using coupling::depth_grid;
+using coupling::DepthCurves;
+using coupling::resample_on_depth_grid;
 
 struct Options {
   std::string case_path, output = "law.json", output_dir, cache_dir, lmp, deck;
@@ -306,8 +310,6 @@ std::vector<Failure> run_isolated(const std::vector<const Sample *> &todo, int n
   return failures;
 }
 
-constexpr std::size_t kFields = coupling::state_field_count;
-
 // ---------------------------------------------------------------------------------------------------------------
 
 std::string utc_now() {
@@ -357,19 +359,22 @@ std::string portable_command_line(const std::string &command_line) {
   return out;
 }
 
-int run_homogenise(const Options &o) {
-  const auto start = Clock::now();
-  const HomogeniseCase c = read_homogenise_case(o.case_path, !o.deck.empty());
-  if (o.np < 0) throw InputError("--np: must be positive");
-  // --deck, else the case's `deck`, else the rough-on-rough cell of the pipeline (the rough-on-flat in.rve_wall's
-  // friction does not run in)
+// --deck, else the case's `deck`, else the rough-on-rough cell of the pipeline (the rough-on-flat in.rve_wall's
+// friction does not run in)
+fs::path resolve_deck(const Options &o, const HomogeniseCase &c) {
   const fs::path deck = fs::absolute(!o.deck.empty()          ? fs::path(o.deck)
                                      : !c.deck_file.empty() ? fs::path(c.deck_file)
                                                             : fs::path(RUNIN_SOURCE_DIR) / "inputs" / "in.rve_rough");
   std::error_code error;
   if (!fs::is_regular_file(deck, error)) throw InputError("--deck: not a file: " + deck.string());
+  return deck;
+}
+
+// --lmp, else lmp_runin beside runin, else on PATH; absolute.
+std::string resolve_lmp(const Options &o) {
   std::string lmp = o.lmp;
   if (lmp.empty()) {
+    std::error_code error;
     const fs::path beside = fs::read_symlink("/proc/self/exe", error).parent_path() / "lmp_runin";
     lmp = !error && access(beside.c_str(), X_OK) == 0 ? beside.string() : find_executable("lmp_runin");
     if (lmp.empty())
@@ -380,8 +385,11 @@ int run_homogenise(const Options &o) {
     if (found.empty()) throw InputError("--lmp: not an executable: " + lmp);
     lmp = found;
   }
-  lmp = fs::absolute(lmp).string();
-  const std::string deck_text = file_bytes(deck);
+  return fs::absolute(lmp).string();
+}
+
+// What the case asks of the deck: a summit list reader, an acceleration-invariant cell for accelerated wear.
+void check_deck(const HomogeniseCase &c, const fs::path &deck, const std::string &deck_text) {
   if (!c.heights_file.empty() && deck_text.find("height_source") == std::string::npos)
     throw InputError(c.path + ": key 'surface.heights': the deck " + deck.string() +
                      " does not read a summit list (it has no height_source variable; inputs/in.rve_wall does)");
@@ -393,55 +401,53 @@ int run_homogenise(const Options &o) {
                                  "acceleration = 1, or a deck that is (--deck inputs/in.rve_wall, or the case's "
                                  "deck key)",
                                  c.path, top, deck.string()));
-  const fs::path cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
-  const CodeIdentity code{runin_version(), lmp, sha256_hex(file_bytes(lmp))};
-  const std::vector<Sample> samples = plan_samples(c, deck_text, code, cache_dir);
-  std::vector<const Sample *> todo;
-  for (const auto &s : samples)
-    if (!s.complete()) todo.push_back(&s);
-  // the MPI launcher, before any sample starts (a fully cached rerun needs none)
-  if (!todo.empty() && find_executable(mpirun_program()).empty())
+}
+
+// The MPI launcher, before any sample starts (a fully cached rerun needs none), and the cache directory.
+void check_launcher_and_cache(bool samples_to_run, const fs::path &cache_dir) {
+  if (samples_to_run && find_executable(mpirun_program()).empty())
     throw InputError(std::getenv("RUNIN_MPIRUN") && *std::getenv("RUNIN_MPIRUN")
                          ? "RUNIN_MPIRUN: not an executable: " + mpirun_program() +
                                "; set it to the MPI launcher (mpirun or mpiexec) or unset it"
                          : "RUNIN_MPIRUN: mpirun is not on PATH; install an MPI (Open MPI, MPICH) or set RUNIN_MPIRUN "
                            "to its launcher (e.g. mpiexec)");
+  std::error_code error;
   fs::create_directories(cache_dir, error);
   if (error || !fs::is_directory(cache_dir))
     throw std::runtime_error("cannot create the cache directory " + cache_dir.string() +
                              (error ? ": " + error.message() : std::string()));
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int np = static_cast<int>(std::min<std::size_t>(o.np > 0 ? o.np : cores, std::max<std::size_t>(1, todo.size())));
-  fmt::print("runin homogenise: {}: {} pressures x {} seeds = {} samples of {} summits; {} cached in {}\n",
-             o.case_path, c.pressures.size(), c.seeds.size(), samples.size(), c.nside * c.nside,
-             samples.size() - todo.size(), cache_dir.string());
-  fmt::print("runin homogenise: {} samples to run\n", todo.size());
-  std::fflush(stdout);
+}
 
+// Runs the samples not in the cache: all under one mpirun, then each missing one alone to name the failing ones.
+std::vector<Failure> run_samples(const HomogeniseCase &c, const std::vector<const Sample *> &todo, int np,
+                                 const std::string &lmp, const fs::path &deck, const fs::path &cache_dir,
+                                 Clock::time_point start) {
   std::vector<Failure> failures;
-  if (!todo.empty()) {
-    for (const Sample *s : todo) prepare_sample(c, *s, deck);
-    Progress progress(todo, todo.size(), start);
-    const int status = run_partitioned(todo, np, lmp, cache_dir, progress);
-    std::vector<const Sample *> missing;
-    for (const Sample *s : todo)
-      if (!s->complete()) missing.push_back(s);
-    if (missing.size() == 1 && todo.size() == 1) {
-      // it ran alone already: its log names the ERROR
-      std::string error = first_line_starting(missing.front()->log(), "ERROR");
-      if (error.empty()) error = fmt::format("no output and no ERROR line in its log (mpirun exit status {})", status);
-      failures.push_back({missing.front(), error});
-    } else if (!missing.empty()) {
-      fmt::print("runin homogenise: mpirun exited with status {}, {} samples incomplete; running each alone to find "
-                 "the failing ones\n",
-                 status, missing.size());
-      std::fflush(stdout);
-      failures = run_isolated(missing, std::min<int>(np, static_cast<int>(missing.size())), lmp, cache_dir, progress);
-    }
+  if (todo.empty()) return failures;
+  for (const Sample *s : todo) prepare_sample(c, *s, deck);
+  Progress progress(todo, todo.size(), start);
+  const int status = run_partitioned(todo, np, lmp, cache_dir, progress);
+  std::vector<const Sample *> missing;
+  for (const Sample *s : todo)
+    if (!s->complete()) missing.push_back(s);
+  if (missing.size() == 1 && todo.size() == 1) {
+    // it ran alone already: its log names the ERROR
+    std::string error = first_line_starting(missing.front()->log(), "ERROR");
+    if (error.empty()) error = fmt::format("no output and no ERROR line in its log (mpirun exit status {})", status);
+    failures.push_back({missing.front(), error});
+  } else if (!missing.empty()) {
+    fmt::print("runin homogenise: mpirun exited with status {}, {} samples incomplete; running each alone to find "
+               "the failing ones\n",
+               status, missing.size());
+    std::fflush(stdout);
+    failures = run_isolated(missing, std::min<int>(np, static_cast<int>(missing.size())), lmp, cache_dir, progress);
   }
+  return failures;
+}
 
-  // Each complete sample on the h grid; a sample that cannot be read or did not reach the depth fails too.
-  const std::vector<double> grid = depth_grid(c.depth, c.depth_points);
+// Each complete sample on the h grid; a sample that cannot be read or did not reach the depth fails too.
+std::map<const Sample *, DepthCurves> read_curves(const std::vector<Sample> &samples, const std::vector<double> &grid,
+                                                   std::vector<Failure> &failures) {
   std::map<const Sample *, DepthCurves> curves;
   for (const auto &s : samples) {
     if (!s.complete()) continue;
@@ -452,60 +458,58 @@ int run_homogenise(const Options &o) {
       failures.push_back({&s, e.what()});
     }
   }
-  std::map<const Sample *, std::string> failed;
-  for (const auto &f : failures) failed[f.sample] = f.error;
   for (const auto &f : failures)
     fmt::print("runin homogenise: sample FAILED: {} (accel {:g}, key {}): {}; log {}\n", f.sample->label(),
                f.sample->acceleration, f.sample->key, f.error, f.sample->log().string());  // stderr: the one error line
+  return curves;
+}
 
-  // The law: every pressure needs at least one good seed; mean over the good seeds, band = their min and max.
+std::string failed_labels(const std::vector<Failure> &failures) {
+  std::string list;
+  for (const auto &f : failures) list += (list.empty() ? "" : "; ") + f.sample->label();
+  return list;
+}
+
+// The good seeds of each pressure (coupling::homogenise averages them); every pressure needs at least one.
+coupling::HomogenisationSamples good_seeds(const HomogeniseCase &c, const std::vector<Sample> &samples,
+                                           const std::vector<double> &grid,
+                                           const std::map<const Sample *, DepthCurves> &curves,
+                                           const std::vector<Failure> &failures) {
+  coupling::HomogenisationSamples good{c.pressures, grid, {}};
   std::vector<std::size_t> empty_pressures;
-  std::array<coupling::StateFieldTable, kFields> tables;
   for (std::size_t ip = 0; ip < c.pressures.size(); ++ip) {
-    std::vector<const DepthCurves *> good;
+    good.seeds.emplace_back();
     for (const auto &s : samples)
-      if (s.ip == ip && curves.count(&s)) good.push_back(&curves.at(&s));
-    if (good.empty()) {
-      empty_pressures.push_back(ip);
-      continue;
-    }
-    for (std::size_t f = 0; f < kFields; ++f) {
-      std::vector<double> mean(grid.size()), low(grid.size()), high(grid.size());
-      for (std::size_t j = 0; j < grid.size(); ++j) {
-        double sum = 0, lo = good.front()->field[f][j], hi = lo;
-        for (const DepthCurves *g : good) {
-          const double v = g->field[f][j];
-          sum += v, lo = std::min(lo, v), hi = std::max(hi, v);
-        }
-        mean[j] = std::clamp(sum / static_cast<double>(good.size()), lo, hi);  // round-off may leave [lo, hi]
-        low[j] = lo, high[j] = hi;
-      }
-      tables[f].mean.push_back(std::move(mean));
-      tables[f].low.push_back(std::move(low));
-      tables[f].high.push_back(std::move(high));
-    }
+      if (s.ip == ip && curves.count(&s)) good.seeds.back().push_back(curves.at(&s));
+    if (good.seeds.back().empty()) empty_pressures.push_back(ip);
   }
-  std::string failed_list;
-  for (const auto &f : failures) failed_list += (failed_list.empty() ? "" : "; ") + f.sample->label();
-  if (!empty_pressures.empty()) {
-    std::string list;
-    for (std::size_t ip : empty_pressures) list += (list.empty() ? "" : ", ") + fmt::format("{:.4g}", c.pressures[ip]);
-    throw std::runtime_error(fmt::format("homogenise: no law written: no good seed at p = {} Pa; {} of {} samples "
-                                         "failed: {}",
-                                         list, failures.size(), samples.size(), failed_list));
-  }
+  if (empty_pressures.empty()) return good;
+  std::string list;
+  for (std::size_t ip : empty_pressures) list += (list.empty() ? "" : ", ") + fmt::format("{:.4g}", c.pressures[ip]);
+  throw std::runtime_error(fmt::format("homogenise: no law written: no good seed at p = {} Pa; {} of {} samples "
+                                       "failed: {}",
+                                       list, failures.size(), samples.size(), failed_labels(failures)));
+}
 
-  // Metadata
-  std::string lammps_version = "unknown";
+struct Provenance {
+  fs::path deck, cache_dir;
+  std::string deck_text, lmp, lmp_sha256;
+};
+
+// The LAMMPS version line of the first good sample that recorded one.
+std::string lammps_version(const std::vector<Sample> &samples, const std::map<const Sample *, DepthCurves> &curves) {
   for (const auto &s : samples)
     if (curves.count(&s)) {
       std::ifstream in(s.dir / "lammps_version");
       std::string line;
-      if (std::getline(in, line) && !line.empty()) {
-        lammps_version = line;
-        break;
-      }
+      if (std::getline(in, line) && !line.empty()) return line;
     }
+  return "unknown";
+}
+
+nlohmann::json sample_list(const std::vector<Sample> &samples, const std::vector<Failure> &failures) {
+  std::map<const Sample *, std::string> failed;
+  for (const auto &f : failures) failed[f.sample] = f.error;
   nlohmann::json list = nlohmann::json::array();
   for (const auto &s : samples) {
     nlohmann::json entry = {{"pressure", s.pressure}, {"seed", s.seed}, {"acceleration", s.acceleration},
@@ -513,6 +517,12 @@ int run_homogenise(const Options &o) {
     if (failed.count(&s)) entry["error"] = failed.at(&s);
     list.push_back(entry);
   }
+  return list;
+}
+
+nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Provenance &p,
+                            const std::vector<Sample> &samples, const std::map<const Sample *, DepthCurves> &curves,
+                            const std::vector<Failure> &failures) {
   nlohmann::json metadata = {
       {"title", c.title},
       {"material",
@@ -528,14 +538,14 @@ int run_homogenise(const Options &o) {
         {"nslide", c.nslide},
         {"nout", c.nout},
         {"band", "low/high: minimum/maximum over the good seeds at each point; mean: their mean"},
-        {"deck", {{"path", portable_path(deck)}, {"sha256", sha256_hex(deck_text)}}},
-        {"cache_dir", portable_path(cache_dir)},
-        {"list", list}}},
+        {"deck", {{"path", portable_path(p.deck)}, {"sha256", sha256_hex(p.deck_text)}}},
+        {"cache_dir", portable_path(p.cache_dir)},
+        {"list", sample_list(samples, failures)}}},
       {"provenance",
        {{"runin_version", runin_version()},
         {"runin_git", runin_git_describe()},
-        {"lammps_version", lammps_version},
-        {"lmp", {{"path", portable_path(lmp)}, {"sha256", code.lmp_sha256}}},
+        {"lammps_version", lammps_version(samples, curves)},
+        {"lmp", {{"path", portable_path(p.lmp)}, {"sha256", p.lmp_sha256}}},
         {"command_line", portable_command_line(o.command_line)},
         {"case", {{"path", portable_path(o.case_path)},
                   {"sha256", sha256_hex(file_bytes(o.case_path))}}},
@@ -546,21 +556,58 @@ int run_homogenise(const Options &o) {
     metadata["surface"]["heights"] = portable_path(c.heights_file);
     metadata["surface"]["heights_sha256"] = c.heights_sha256;
   }
-  std::vector<double> pressures = c.pressures;
+  return metadata;
+}
+
+void write_law(const Options &o, const coupling::HomogenisationSamples &good) {
   const coupling::StateLaw law = [&] {
     try {
-      return coupling::StateLaw(pressures, grid, tables, metadata);
+      return coupling::homogenise(good);
     } catch (const std::invalid_argument &e) {
       throw std::runtime_error(std::string("homogenise: the samples give no valid state law: ") + e.what());
     }
   }();
   if (!o.output_dir.empty()) {
+    std::error_code error;
     fs::create_directories(o.output_dir, error);
     if (error) throw std::runtime_error("cannot create --output-dir " + o.output_dir + ": " + error.message());
   }
   StagedFile out(fs::absolute(o.output));
   out.write(law.to_json().dump(1) + "\n");
   out.commit();
+}
+
+int run_homogenise(const Options &o) {
+  const auto start = Clock::now();
+  const HomogeniseCase c = read_homogenise_case(o.case_path, !o.deck.empty());
+  if (o.np < 0) throw InputError("--np: must be positive");
+  Provenance p;
+  p.deck = resolve_deck(o, c);
+  p.lmp = resolve_lmp(o);
+  p.deck_text = file_bytes(p.deck);
+  check_deck(c, p.deck, p.deck_text);
+  p.cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
+  const CodeIdentity code{runin_version(), p.lmp, sha256_hex(file_bytes(p.lmp))};
+  p.lmp_sha256 = code.lmp_sha256;
+  const std::vector<Sample> samples = plan_samples(c, p.deck_text, code, p.cache_dir);
+  std::vector<const Sample *> todo;
+  for (const auto &s : samples)
+    if (!s.complete()) todo.push_back(&s);
+  check_launcher_and_cache(!todo.empty(), p.cache_dir);
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int np = static_cast<int>(std::min<std::size_t>(o.np > 0 ? o.np : cores, std::max<std::size_t>(1, todo.size())));
+  fmt::print("runin homogenise: {}: {} pressures x {} seeds = {} samples of {} summits; {} cached in {}\n",
+             o.case_path, c.pressures.size(), c.seeds.size(), samples.size(), c.nside * c.nside,
+             samples.size() - todo.size(), p.cache_dir.string());
+  fmt::print("runin homogenise: {} samples to run\n", todo.size());
+  std::fflush(stdout);
+
+  std::vector<Failure> failures = run_samples(c, todo, np, p.lmp, p.deck, p.cache_dir, start);
+  const std::vector<double> grid = depth_grid(c.depth, c.depth_points);
+  const auto curves = read_curves(samples, grid, failures);
+  coupling::HomogenisationSamples good = good_seeds(c, samples, grid, curves, failures);
+  good.metadata = law_metadata(o, c, p, samples, curves, failures);
+  write_law(o, good);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   fmt::print("runin homogenise: wrote {} ({} pressures {:.4g} .. {:.4g} Pa x {} depths 0 .. {:.4g} m, {} seeds; "
              "{:.2f} s)\n",
@@ -568,7 +615,7 @@ int run_homogenise(const Options &o) {
              c.seeds.size(), seconds);
   if (!failures.empty())
     throw std::runtime_error(fmt::format("homogenise: {} of {} samples failed (the law uses the other seeds): {}",
-                                         failures.size(), samples.size(), failed_list));
+                                         failures.size(), samples.size(), failed_labels(failures)));
   return 0;
 }
 

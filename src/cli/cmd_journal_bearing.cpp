@@ -216,34 +216,18 @@ std::vector<coupling::SurfaceFrame> surface_frames(const JournalBearingCase &c, 
 }
 #endif
 
-// Subsurface stress below each bearing half (doc/subsurface_stress.md). Start: the unworn bore; McEwen's closed
-// form on the Hertz line contact when the solved pressure is Hertzian (peak within 5 % of Hertz p0), else the
-// influence tier; mu at break-away (largest |F| / N up to the first slip sample). End: the influence tier on the
-// last solved (worn) pressure, with the |mu| of the last slip sample (the last sample without slip). The sign of
-// the shear follows the journal's turning direction.
+// Subsurface stress below each bearing half (doc/subsurface_stress.md): the library's start and end frames
+// (continuum::bore_start_end_stress), named for the summary and the VTK series.
 std::vector<LineStressReport> subsurface_stress(const JournalBearingCase &c, const Curve &curve) {
   std::vector<LineStressReport> reports;
-  const auto &samples = curve.samples;
-  const auto &rep = curve.report;
-  if (samples.empty() || rep.initial_pressure.size() != static_cast<std::size_t>(c.parameters.halves) ||
-      rep.final_pressure.size() != rep.initial_pressure.size())
-    return reports;
-  const continuum::ConformalContact contact(c.parameters.bore);
   bool tabor_bearing = false, tabor_shaft = false;
   continuum::verdict_yield_strength(c.bearing_material, &tabor_bearing);
   continuum::verdict_yield_strength(c.shaft_material, &tabor_shaft);
   const tribo::Material bearing = verdict_material(c.bearing_material), shaft = verdict_material(c.shaft_material);
-  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
-  const JournalBearingSample *last_slip = nullptr, *first_slip = nullptr;
-  for (const auto &s : samples)
-    if (s.state == continuum::ContactState::Slip) {
-      if (!first_slip) first_slip = &s;
-      last_slip = &s;
-    }
-  const JournalBearingSample &end = last_slip ? *last_slip : samples.back();
-  const double dir_start = first_slip ? sign(first_slip->journal_speed) : 1.0;
-  const double mu_start = dir_start * curve.summary.start_friction_force / samples.front().normal_force;
-  for (int h = 0; h < c.parameters.halves; ++h) {
+  const auto halves = continuum::bore_start_end_stress(c.parameters, curve.samples, curve.summary.start_friction_force,
+                                                       curve.report, bearing, shaft);
+  for (std::size_t h = 0; h < halves.size(); ++h) {
+    const auto &stress = halves[h];
     LineStressReport r;
     r.contact = c.parameters.halves == 2 ? (h == 0 ? "lower half" : "upper half") : "bearing";
     r.label_a = body_label("bearing", c.bearing_material_name);
@@ -251,91 +235,83 @@ std::vector<LineStressReport> subsurface_stress(const JournalBearingCase &c, con
     r.field_a = "bearing", r.field_b = "shaft";
     r.materials_hint = "contact.materials";
     r.tabor_a = tabor_bearing, r.tabor_b = tabor_shaft;
-    const auto &p_start = rep.initial_pressure[h];
-    const double solved_peak = *std::max_element(p_start.begin(), p_start.end());
-    const auto hertz = continuum::bore_hertz_stress(c.parameters.bore, c.parameters.half_load(h) / c.parameters.bore.axial_width,
-                                                    mu_start, bearing, shaft);
-    const bool hertzian = std::abs(solved_peak / hertz.peak_pressure - 1.0) <= 0.05;
     r.cross_check = fmt::format("solved unworn pressure: p0 = {:.4g} Pa ({:+.2f} % from Hertz): start from the {}",
-                                solved_peak, 100.0 * (solved_peak / hertz.peak_pressure - 1.0),
-                                hertzian ? "closed form" : "influence tier");
-    r.frames.push_back({samples.front().t, hertzian ? hertz : continuum::bore_contact_stress(contact, p_start, mu_start,
-                                                                                           bearing, shaft)});
-    const double mu_end = sign(end.journal_speed) * std::abs(end.half[h].mu != 0.0 ? end.half[h].mu : end.mu);
-    // The symmetric set-up: the upper half's end state equals the lower's (computed once).
-    if (h == 1 && rep.final_pressure[1] == rep.final_pressure[0] && end.half[1].mu == end.half[0].mu)
-      r.frames.push_back({samples.back().t, reports.front().frames.back().stress});
-    else
-      r.frames.push_back({samples.back().t,
-                          continuum::bore_contact_stress(contact, rep.final_pressure[h], mu_end, bearing, shaft)});
+                                stress.solved_peak, 100.0 * (stress.solved_peak / stress.hertz_peak - 1.0),
+                                stress.closed_form ? "closed form" : "influence tier");
+    r.frames.push_back({curve.samples.front().t, stress.start});
+    r.frames.push_back({curve.samples.back().t, stress.end});
     reports.push_back(std::move(r));
   }
   return reports;
 }
 
-int run(const Options &o, const PlotRunner &plot) {
-  // A [lubrication] table selects the mixed-lubrication run-in (doc/lubricated_journal_bearing.md).
-  if (is_lubricated_case(o.case_path))
-    return run_lubricated_bearing({o.case_path, o.output_dir, o.law_path, o.no_plot, o.stribeck}, plot);
-  if (o.stribeck) throw InputError("--stribeck: needs a lubricated case (a [lubrication] table in " + o.case_path + ")");
-  const JournalBearingCase c = read_journal_bearing_case(o.case_path, o.law_path);
-  const Curve main_curve = run_case(c, *c.friction, true, o.max_wear_updates);
+// The main run, the mu0 sweep and (two halves) the same case with one contact.
+struct Computed {
+  Curve main;
   std::vector<Curve> sweep;
-  for (double mu0 : c.sweep_mu0) sweep.push_back(run_case(c, friction_with_mu0(c, mu0), false, o.max_wear_updates));
-  // What the second bearing half changes: the same case with one contact (bearing.halves = 1).
   std::optional<Curve> one_contact;
+};
+
+Computed compute(const Options &o, const JournalBearingCase &c) {
+  Computed r;
+  r.main = run_case(c, *c.friction, true, o.max_wear_updates);
+  for (double mu0 : c.sweep_mu0) r.sweep.push_back(run_case(c, friction_with_mu0(c, mu0), false, o.max_wear_updates));
+  // What the second bearing half changes: the same case with one contact (bearing.halves = 1).
   if (c.parameters.halves == 2 && c.one_contact_comparison) {
     JournalBearingCase single = c;
     single.parameters.halves = 1;
     single.parameters.second_half_load = 0.0;
-    one_contact = run_case(single, *c.friction, false, o.max_wear_updates);
+    r.one_contact = run_case(single, *c.friction, false, o.max_wear_updates);
   }
+  return r;
+}
 
-  // Everything is computed; the output set is staged and moved in only when complete.
-  StagedOutput out(o.output_dir, {"journal_bearing.csv", "journal_bearing_summary.csv", "journal_bearing.png", "journal_bearing_sweep.csv",
-                                  "journal_bearing_sweep_summary.csv", "journal_bearing_mu0.png", "vtk/bore.pvd",
-                                  "vtk/bore_*.vts", "vtk/bore_upper.pvd", "vtk/subsurface.pvd", "vtk/subsurface_*.vts",
-                                  "vtk/subsurface_upper.pvd"});
-  const std::vector<LineStressReport> stress = subsurface_stress(c, main_curve);
+// The CSV files and the plots, staged; returns their names in order.
+std::vector<std::string> write_curves(StagedOutput &out, const Options &o, const JournalBearingCase &c,
+                                      const Computed &r, const PlotRunner &plot) {
   const int halves = c.parameters.halves;
-  const auto *law = c.friction->state_law();
-  std::string text = columns(halves, law != nullptr) + "\n";
-  for (const auto &s : main_curve.samples) text += row(s) + (law ? state_law_row(s) : std::string()) + "\n";
+  const bool law = c.friction->state_law() != nullptr;
+  std::string text = columns(halves, law) + "\n";
+  for (const auto &s : r.main.samples) text += row(s) + (law ? state_law_row(s) : std::string()) + "\n";
   out.write("journal_bearing.csv", text);
   out.write("journal_bearing_summary.csv",
-            std::string(kRunSummaryHeader) + "\n" + run_summary_row(key_numbers(main_curve.summary)) + "\n");
+            std::string(kRunSummaryHeader) + "\n" + run_summary_row(key_numbers(r.main.summary)) + "\n");
   std::vector<std::string> written = {"journal_bearing.csv", "journal_bearing_summary.csv"};
-
-  if (!sweep.empty()) {
+  if (!r.sweep.empty()) {
     std::string t = "mu0," + columns(halves) + "\n";
     std::string summary = std::string("mu0,") + kRunSummaryHeader + "\n";
-    for (std::size_t k = 0; k < sweep.size(); ++k) {
-      for (const auto &s : sweep[k].samples) t += fmt::format("{:.12g},", c.sweep_mu0[k]) + row(s) + "\n";
-      summary += fmt::format("{:.12g},", c.sweep_mu0[k]) + run_summary_row(key_numbers(sweep[k].summary)) + "\n";
+    for (std::size_t k = 0; k < r.sweep.size(); ++k) {
+      for (const auto &s : r.sweep[k].samples) t += fmt::format("{:.12g},", c.sweep_mu0[k]) + row(s) + "\n";
+      summary += fmt::format("{:.12g},", c.sweep_mu0[k]) + run_summary_row(key_numbers(r.sweep[k].summary)) + "\n";
     }
     out.write("journal_bearing_sweep.csv", t);
     out.write("journal_bearing_sweep_summary.csv", summary);
     written.push_back("journal_bearing_sweep.csv");  // (insert of an initializer list: a GCC 12 -Wuse-after-free false positive)
     written.push_back("journal_bearing_sweep_summary.csv");
   }
-  if (!o.no_plot) {
-    plot("plot_journal_bearing.py", {"curve", out.file("journal_bearing.csv").string(), out.file("journal_bearing.png").string(), "--title",
-              c.title});
-    written.push_back("journal_bearing.png");
-    if (!sweep.empty()) {
-      plot("plot_journal_bearing.py", {"sweep", out.file("journal_bearing_sweep.csv").string(), out.file("journal_bearing_mu0.png").string(),
-                "--title", c.title});
-      written.push_back("journal_bearing_mu0.png");
-    }
+  if (o.no_plot) return written;
+  plot("plot_journal_bearing.py", {"curve", out.file("journal_bearing.csv").string(), out.file("journal_bearing.png").string(), "--title",
+            c.title});
+  written.push_back("journal_bearing.png");
+  if (!r.sweep.empty()) {
+    plot("plot_journal_bearing.py", {"sweep", out.file("journal_bearing_sweep.csv").string(), out.file("journal_bearing_mu0.png").string(),
+              "--title", c.title});
+    written.push_back("journal_bearing_mu0.png");
   }
+  return written;
+}
+
+// The bore frames and the subsurface stress series; returns the summary's VTK note.
+std::string write_vtk(StagedOutput &out, const JournalBearingCase &c, const Curve &main,
+                      const std::vector<LineStressReport> &stress) {
   std::string vtk_note = "none (built without VTK)";
 #ifdef RUNIN_HAVE_VTK
   const continuum::ConformalContact contact(c.parameters.bore);
-  const auto vtk_written = coupling::write_surface_series(surface_frames(c, contact, main_curve.frames),
+  const auto vtk_written = coupling::write_surface_series(surface_frames(c, contact, main.frames),
                                                           (out.staging() / "vtk").string(), "bore");
-  vtk_note = fmt::format("{} ({} frame(s))", out.destination_of(vtk_written.back()).string(), main_curve.frames.size());
-  if (halves == 2) {
-    const auto upper_written = coupling::write_surface_series(surface_frames(c, contact, main_curve.frames, true),
+  vtk_note = fmt::format("{} ({} frame(s))", out.destination_of(vtk_written.back()).string(), main.frames.size());
+  if (c.parameters.halves == 2) {
+    const auto upper_written = coupling::write_surface_series(surface_frames(c, contact, main.frames, true),
                                                               (out.staging() / "vtk").string(), "bore_upper");
     vtk_note += fmt::format(", upper half {}", out.destination_of(upper_written.back()).string());
   }
@@ -344,19 +320,19 @@ int run(const Options &o, const PlotRunner &plot) {
     vtk_note += fmt::format("; subsurface stress{} {} ({} frames)", h == 0 ? "" : " (upper half)",
                             out.destination_of(written_stress.back()).string(), stress[h].frames.size());
   }
+#else
+  (void)out, (void)c, (void)main, (void)stress;
 #endif
-  out.commit();
+  return vtk_note;
+}
 
-  const auto &s = main_curve.summary;
+void print_set_up(const JournalBearingCase &c) {
   const auto &p = c.parameters;
-  const auto &r = main_curve.report;
-  const auto &last = main_curve.samples.back();
-  fmt::print("runin journal-bearing: {}\n  {}\n", c.path, c.title);
   fmt::print("  friction          {}\n", c.friction->description());
   fmt::print("  bearing           R = {:g} mm, c = {:g} um, L = {:g} mm, W = {:g} N; arc +-{:g} rad on {} nodes\n",
              1e3 * p.bore.shaft_radius, 1e6 * p.bore.clearance, 1e3 * p.bore.axial_width, p.load,
              p.bore.arc_half_angle, p.bore.nodes);
-  if (halves == 2)
+  if (p.halves == 2)
     fmt::print("  bearing halves    2, pressed on the shaft in opposite directions with W = {:g} N (lower) and {:g} N "
                "(upper): two contacts, each its own pressure, wear and friction state\n",
                p.half_load(0), p.half_load(1));
@@ -368,7 +344,13 @@ int run(const Options &o, const PlotRunner &plot) {
              "G = E / (2 (1 + nu)), J = pi d^4 / 32)\n",
              c.stiffness_overridden ? "drive.stiffness overrides the" : "from the", c.shaft_stiffness,
              1e3 * c.shaft_diameter, 1e3 * c.shaft_length);
-  const auto &first = main_curve.samples.front();
+}
+
+void print_results(const JournalBearingCase &c, const Curve &main) {
+  const auto &s = main.summary;
+  const auto &p = c.parameters;
+  const auto &r = main.report;
+  const auto &first = main.samples.front(), &last = main.samples.back();
   fmt::print("  break-away        {}{}\n", or_none(s.breakaway_time),
              s.breakaway_time == 0.0 && std::abs(first.coupling_torque) > std::abs(first.friction_torque)
                  ? fmt::format(" (at once: the coupling torque at the start, the damper's c w_d = {:.4g} N m, exceeds "
@@ -389,63 +371,96 @@ int run(const Options &o, const PlotRunner &plot) {
              c.friction->state_law() ? "2/(k_c max w/p)" : "2H/(k k_c)", r.stable_wear_step);
   fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", r.steps, r.breakaway_times.size(),
              r.restick_times.size());
-  if (halves == 2) {
+  if (p.halves == 2) {
     const auto &lower = last.half[0], &upper = last.half[1];
     fmt::print("  halves at end     lower: T_f = {:.6g} N m, N = {:.6g} N, wear {:.6g} mm^3, peak {:.4g} MPa; "
                "upper: T_f = {:.6g} N m, N = {:.6g} N, wear {:.6g} mm^3, peak {:.4g} MPa\n",
                lower.friction_torque, lower.normal_force, 1e9 * lower.wear_volume, 1e-6 * lower.peak_pressure,
                upper.friction_torque, upper.normal_force, 1e9 * upper.wear_volume, 1e-6 * upper.peak_pressure);
   }
-  std::vector<std::string> warnings;
-  if (law && r.range_use) {
-    const auto &first_sample = main_curve.samples.front();
-    fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m); the bore is the rough body\n", law->path,
-               law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
-    fmt::print("  mu_eff            {:.6g} -> {:.6g} (pressure-weighted per half, N-weighted over the halves); static "
-               "{:.6g} ({})\n",
-               first_sample.mu_eff, last.mu_eff, r.state_law_static,
-               law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
-    for (int h = 0; h < halves; ++h)
-      fmt::print("  {} h         mean {:.4g} m, max {:.4g} m; shaft worn volume under it {:.6g} mm^3 "
-                 "(counterface_wear_rate)\n",
-                 h ? "upper" : "lower", last.half[h].h_mean, last.half[h].h_max, 1e9 * last.half[h].counterface_volume);
-    fmt::print("  law lookups       {}\n", continuum::describe(*r.range_use, *law->law));
-    if (auto w = continuum::out_of_range_warning(*r.range_use, *law->law, law->policy); !w.empty())
-      warnings.push_back(std::move(w));
-    if (const auto cell = coupling::cell_scale(*law->law)) {
-      // narrowest: the unworn contact; a node spans the bearing's length
-      const coupling::ScaleSeparation sep{*cell, 2.0 * p.bore.shaft_radius * s.initial_half_angle,
-                                          p.bore.shaft_radius * 2.0 * p.bore.arc_half_angle / p.bore.nodes *
-                                              p.bore.axial_width};
-      fmt::print("  scale separation  {}\n", coupling::describe(sep));
-      if (auto w = coupling::scale_separation_warning(sep); !w.empty()) warnings.push_back(std::move(w));
-    }
+}
+
+void print_state_law(const JournalBearingCase &c, const Curve &main, std::vector<std::string> &warnings) {
+  const auto *law = c.friction->state_law();
+  const auto &r = main.report;
+  if (!law || !r.range_use) return;
+  const auto &p = c.parameters;
+  const auto &first = main.samples.front(), &last = main.samples.back();
+  fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m); the bore is the rough body\n", law->path,
+             law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
+  fmt::print("  mu_eff            {:.6g} -> {:.6g} (pressure-weighted per half, N-weighted over the halves); static "
+             "{:.6g} ({})\n",
+             first.mu_eff, last.mu_eff, r.state_law_static,
+             law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
+  for (int h = 0; h < p.halves; ++h)
+    fmt::print("  {} h         mean {:.4g} m, max {:.4g} m; shaft worn volume under it {:.6g} mm^3 "
+               "(counterface_wear_rate)\n",
+               h ? "upper" : "lower", last.half[h].h_mean, last.half[h].h_max, 1e9 * last.half[h].counterface_volume);
+  fmt::print("  law lookups       {}\n", continuum::describe(*r.range_use, *law->law));
+  if (auto w = continuum::out_of_range_warning(*r.range_use, *law->law, law->policy); !w.empty())
+    warnings.push_back(std::move(w));
+  if (const auto cell = coupling::cell_scale(*law->law)) {
+    // narrowest: the unworn contact; a node spans the bearing's length
+    const coupling::ScaleSeparation sep{*cell, 2.0 * p.bore.shaft_radius * main.summary.initial_half_angle,
+                                        p.bore.shaft_radius * 2.0 * p.bore.arc_half_angle / p.bore.nodes *
+                                            p.bore.axial_width};
+    fmt::print("  scale separation  {}\n", coupling::describe(sep));
+    if (auto w = coupling::scale_separation_warning(sep); !w.empty()) warnings.push_back(std::move(w));
   }
+}
+
+void print_one_contact(const Curve &main, const Curve &one) {
+  const auto &s = main.summary, &o1 = one.summary;
+  const auto ratio = [](double a, double b) { return b != 0.0 ? fmt::format("x{:.4g}", a / b) : std::string("n/a"); };
+  const auto initial_normal = [](const Curve &k) { return k.samples.front().normal_force; };
+  fmt::print("  second half       vs one contact (same case, bearing.halves = 1): N {:.6g} -> {:.6g} N ({}), "
+             "peak friction {:.6g} -> {:.6g} N ({}), break-away {} -> {}, steady state {} -> {}, "
+             "steady mu {:.6g} -> {:.6g}, wear volume {:.6g} -> {:.6g} mm^3 ({}), re-sticks {} -> {}\n",
+             initial_normal(one), initial_normal(main), ratio(initial_normal(main), initial_normal(one)),
+             o1.peak_friction_force, s.peak_friction_force, ratio(s.peak_friction_force, o1.peak_friction_force),
+             or_none(o1.breakaway_time), or_none(s.breakaway_time), or_none(o1.steady_time), or_none(s.steady_time),
+             o1.steady_mu, s.steady_mu, 1e9 * o1.wear_volume, 1e9 * s.wear_volume, ratio(s.wear_volume, o1.wear_volume),
+             one.report.restick_times.size(), main.report.restick_times.size());
+}
+
+void print_sweep(const JournalBearingCase &c, const std::vector<Curve> &sweep) {
+  if (sweep.empty()) return;
+  fmt::print("  mu0 sweep         {:>6} {:>12} {:>12} {:>12} {:>10}\n", "mu0", "peak F (N)", "break-away", "steady",
+             "steady mu");
+  for (std::size_t k = 0; k < sweep.size(); ++k) {
+    const auto &m = sweep[k].summary;
+    fmt::print("                    {:>6.3g} {:>12.6g} {:>12} {:>12} {:>10.4g}\n", c.sweep_mu0[k],
+               m.peak_friction_force, or_none(m.breakaway_time), or_none(m.steady_time), m.steady_mu);
+  }
+}
+
+int run(const Options &o, const PlotRunner &plot) {
+  // A [lubrication] table selects the mixed-lubrication run-in (doc/lubricated_journal_bearing.md).
+  if (is_lubricated_case(o.case_path))
+    return run_lubricated_bearing({o.case_path, o.output_dir, o.law_path, o.no_plot, o.stribeck}, plot);
+  if (o.stribeck) throw InputError("--stribeck: needs a lubricated case (a [lubrication] table in " + o.case_path + ")");
+  const JournalBearingCase c = read_journal_bearing_case(o.case_path, o.law_path);
+  const Computed r = compute(o, c);
+
+  // Everything is computed; the output set is staged and moved in only when complete.
+  StagedOutput out(o.output_dir, {"journal_bearing.csv", "journal_bearing_summary.csv", "journal_bearing.png", "journal_bearing_sweep.csv",
+                                  "journal_bearing_sweep_summary.csv", "journal_bearing_mu0.png", "vtk/bore.pvd",
+                                  "vtk/bore_*.vts", "vtk/bore_upper.pvd", "vtk/subsurface.pvd", "vtk/subsurface_*.vts",
+                                  "vtk/subsurface_upper.pvd"});
+  const std::vector<LineStressReport> stress = subsurface_stress(c, r.main);
+  const std::vector<std::string> written = write_curves(out, o, c, r, plot);
+  const std::string vtk_note = write_vtk(out, c, r.main, stress);
+  out.commit();
+
+  fmt::print("runin journal-bearing: {}\n  {}\n", c.path, c.title);
+  print_set_up(c);
+  print_results(c, r.main);
+  std::vector<std::string> warnings;
+  print_state_law(c, r.main, warnings);
   for (const auto &report : stress) print_line_stress(report, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);
-  if (one_contact) {
-    const auto &o1 = one_contact->summary;
-    const auto ratio = [](double a, double b) { return b != 0.0 ? fmt::format("x{:.4g}", a / b) : std::string("n/a"); };
-    const auto initial_normal = [](const Curve &k) { return k.samples.front().normal_force; };
-    fmt::print("  second half       vs one contact (same case, bearing.halves = 1): N {:.6g} -> {:.6g} N ({}), "
-               "peak friction {:.6g} -> {:.6g} N ({}), break-away {} -> {}, steady state {} -> {}, "
-               "steady mu {:.6g} -> {:.6g}, wear volume {:.6g} -> {:.6g} mm^3 ({}), re-sticks {} -> {}\n",
-               initial_normal(*one_contact), initial_normal(main_curve),
-               ratio(initial_normal(main_curve), initial_normal(*one_contact)), o1.peak_friction_force,
-               s.peak_friction_force, ratio(s.peak_friction_force, o1.peak_friction_force), or_none(o1.breakaway_time),
-               or_none(s.breakaway_time), or_none(o1.steady_time), or_none(s.steady_time), o1.steady_mu, s.steady_mu,
-               1e9 * o1.wear_volume, 1e9 * s.wear_volume, ratio(s.wear_volume, o1.wear_volume),
-               one_contact->report.restick_times.size(), r.restick_times.size());
-  }
-  if (!sweep.empty()) {
-    fmt::print("  mu0 sweep         {:>6} {:>12} {:>12} {:>12} {:>10}\n", "mu0", "peak F (N)", "break-away", "steady",
-               "steady mu");
-    for (std::size_t k = 0; k < sweep.size(); ++k) {
-      const auto &m = sweep[k].summary;
-      fmt::print("                    {:>6.3g} {:>12.6g} {:>12} {:>12} {:>10.4g}\n", c.sweep_mu0[k],
-                 m.peak_friction_force, or_none(m.breakaway_time), or_none(m.steady_time), m.steady_mu);
-    }
-  }
+  if (r.one_contact) print_one_contact(r.main, *r.one_contact);
+  print_sweep(c, r.sweep);
   fmt::print("  wrote            ");
   for (std::size_t i = 0; i < written.size(); ++i)
     fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());

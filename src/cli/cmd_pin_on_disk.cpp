@@ -15,6 +15,9 @@
 #include "continuum/axisymmetric_contact.h"
 #include "continuum/node_state_law.h"
 #include "continuum/pin_on_disk.h"
+#include "continuum/pin_on_disk_wear.h"
+#include "continuum/pin_state_law.h"
+#include "continuum/state_law_splitting.h"
 #include "coupling/scale_separation.h"
 #ifdef RUNIN_HAVE_VTK
 #include "coupling/vtk_export.h"
@@ -22,6 +25,11 @@
 
 namespace runin::cli {
 namespace {
+
+namespace fs = std::filesystem;
+using continuum::PinOnDiskSample;
+using DiskTrack = continuum::DiskTrackSummary;
+using Frame = continuum::PinFaceFrame;
 
 // The pin's wear stepper settings from [contact] (the grid radius is the caller's: it depends on the wear law).
 continuum::PinWearParameters pin_wear_parameters(const PinContactCase &k) {
@@ -34,28 +42,11 @@ continuum::PinWearParameters pin_wear_parameters(const PinContactCase &k) {
   return wp;
 }
 
-namespace fs = std::filesystem;
-using continuum::PinOnDiskSample;
-
 struct Row {
   PinOnDiskSample s;
   double wear_volume = 0.0, contact_radius = 0.0, peak_pressure = 0.0, mean_pressure = 0.0;
   double disk_wear_volume = 0.0, disk_track_depth = 0.0;  // 0 without wear.disk_k
   double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0;         // friction.model = "state_law" only
-};
-
-// The disk's worn track at the end of a run, and how it compares with the contact it is left out of.
-struct DiskTrack {
-  double volume = 0.0, depth = 0.0, width = 0.0, length = 0.0, passes = 0.0;
-  double pin_depth = 0.0;            // m, largest wear depth of the pin face
-  double approach_ratio = 0.0;       // max over the run of h_d / (elastic approach)
-  double approach_ratio_time = 0.0;  // s, where that maximum is
-};
-
-struct Frame {  // pin face at one time, for VTK
-  double time;
-  std::vector<double> radius, height, pressure, depth;
-  std::vector<double> mu;  // state law: mu(p_i, h_i) per ring (h_i is `depth`)
 };
 
 struct Curve {
@@ -72,281 +63,151 @@ struct Curve {
   double smallest_node_area = 0.0;  // m^2, smallest loaded ring of the pin face at the start (state law)
 };
 
+// A wear failure's message, with the key that helps when the worn face left the grid.
+std::string with_grid_hint(const std::string &message) {
+  return message + (message.find("edge of the grid") != std::string::npos ? " (raise contact.grid_radius)" : "");
+}
+
+// The dynamics' failure, explained where velocity weakening runs away under a held torque (thesis eq. 4.5, minus sign).
+std::string dynamics_error(const PinOnDiskCase &c, const continuum::SolveReport &report,
+                           const std::vector<PinOnDiskSample> &samples) {
+  std::string message = std::string(continuum::to_string(report.status)) + ": " + report.message;
+  const std::size_t n = samples.size();
+  if (message.find("[CV_TOO_MUCH_WORK]") != std::string::npos && c.friction->speed_coefficient() < 0.0 && n >= 2 &&
+      samples[n - 1].speed > samples[n - 2].speed && samples[n - 1].speed > 0.0)
+    message = fmt::format(
+        "CVODE could not advance past t = {:.6g} s (too much work): the sliding speed runs away under "
+        "velocity-weakening friction (alpha < 0; V = {:.4g} m/s at t = {:.6g} s and rising)",
+        report.end_time, samples[n - 1].speed, samples[n - 1].t);
+  return message;
+}
+
 Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames);
 
-// Dynamics first (CVODE), then the wear stepper driven by the sliding distance of each output
-// sample. The coupling is one-way: none of the friction laws depends on contact pressure.
+// Dynamics first (CVODE), then the library's wear pass driven by the sliding distance of each output sample.
 Curve run_case(const PinOnDiskCase &c, bool with_frames) {
   if (c.friction->state_law()) return run_state_law_case(c, with_frames);
   Curve curve;
   const continuum::PinOnDiskSystem system(c.parameters, *c.friction);
   std::vector<PinOnDiskSample> samples;
   curve.report = continuum::simulate(system, c.run, [&](const PinOnDiskSample &s) { samples.push_back(s); });
-  if (!curve.report.ok()) {
-    std::string message = std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message;
-    // Friction falling with speed under a held torque: V grows without bound (thesis eq. 4.5, minus sign).
-    const std::size_t n = samples.size();
-    if (message.find("[CV_TOO_MUCH_WORK]") != std::string::npos && c.friction->speed_coefficient() < 0.0 && n >= 2 &&
-        samples[n - 1].speed > samples[n - 2].speed && samples[n - 1].speed > 0.0)
-      message = fmt::format(
-          "CVODE could not advance past t = {:.6g} s (too much work): the sliding speed runs away under "
-          "velocity-weakening friction (alpha < 0; V = {:.4g} m/s at t = {:.6g} s and rising)",
-          curve.report.end_time, samples[n - 1].speed, samples[n - 1].t);
-    throw std::runtime_error(message);
-  }
+  if (!curve.report.ok()) throw std::runtime_error(dynamics_error(c, curve.report, samples));
   curve.summary = continuum::summarise(samples);
   curve.rows.reserve(samples.size());
   for (const auto &s : samples) curve.rows.push_back({s});
   if (!c.contact) return curve;
 
   const auto &k = *c.contact;
-  const double load = c.parameters.normal_load;
-  continuum::PinWearParameters wp = pin_wear_parameters(k);
-  wp.grid_radius = k.grid_radius ? *k.grid_radius
-                                 : continuum::suggested_grid_radius(wp.tip_radius, wp.effective_modulus, load,
-                                                                    k.wear ? &*k.wear : nullptr,
-                                                                    samples.back().distance);
-  curve.grid_radius = wp.grid_radius;
-  // Without [wear] the pin is worn at k = 0: contact only.
-  const tribo::ArchardWear archard = k.wear ? *k.wear : tribo::ArchardWear(0.0, 1.0);
-  std::optional<continuum::PinWear> pin;
+  continuum::PinWearPassSettings settings{pin_wear_parameters(k), k.grid_radius, k.wear, k.disk_wear,
+                                          c.parameters.normal_load, c.parameters.track_radius,
+                                          with_frames ? c.vtk_times : std::vector<double>{}};
+  continuum::PinWearPass pass;
   try {
-    pin.emplace(wp, archard, load);
+    pass = continuum::pin_wear_pass(samples, settings);
   } catch (const std::invalid_argument &e) {
     throw std::runtime_error(std::string(e.what()) + " (raise contact.grid_radius)");
+  } catch (const continuum::PinWearError &e) {
+    throw std::runtime_error(with_grid_hint(e.what()));
   }
-  std::optional<continuum::DiskTrackWear> disk;
-  if (k.disk_wear) disk.emplace(*k.disk_wear, c.parameters.track_radius);
-  DiskTrack track;
-  std::size_t next_frame = 0;
-  std::vector<double> frame_times = c.vtk_times;
-  std::sort(frame_times.begin(), frame_times.end());
-  for (auto &row : curve.rows) {
-    if (!pin->advance(std::max(row.s.distance - pin->slid(), 0.0)))
-      throw std::runtime_error(fmt::format("pin wear at t = {:g} s: {}{}", row.s.t, pin->message(),
-                                           pin->message().find("edge of the grid") != std::string::npos
-                                               ? " (raise contact.grid_radius)"
-                                               : ""));
-    const auto &contact = pin->contact();
-    row.wear_volume = pin->wear_volume();
-    row.contact_radius = contact.contact_radius;
-    row.peak_pressure = contact.peak_pressure;
-    row.mean_pressure = contact.mean_pressure;
-    if (disk) {
-      disk->slide(load, std::max(row.s.distance - disk->slid(), 0.0), 2.0 * contact.contact_radius);
-      row.disk_wear_volume = disk->volume();
-      row.disk_track_depth = disk->depth();
-      // Elastic approach: the rigid approach beyond first touch of the (worn) profile, the scale of the gap
-      // that sets the pressure. A groove much shallower than it leaves the pressure as solved on the flat.
-      double touch = pin->profile_height(0);
-      for (int i = 1; i < pin->grid().rings(); ++i) touch = std::min(touch, pin->profile_height(i));
-      const double elastic = contact.approach - touch;
-      if (elastic > 0.0 && disk->depth() / elastic > track.approach_ratio) {
-        track.approach_ratio = disk->depth() / elastic;
-        track.approach_ratio_time = row.s.t;
-      }
-    }
-    while (with_frames && next_frame < frame_times.size() && row.s.t >= frame_times[next_frame] - 1e-12) {
-      Frame f{row.s.t, {}, {}, {}, {}, {}};
-      for (int i = 0; i < pin->grid().rings(); ++i) {
-        f.radius.push_back(pin->grid().ring_radius(i));
-        f.height.push_back(pin->profile_height(i));
-        f.pressure.push_back(contact.pressure[i]);
-        f.depth.push_back(pin->wear_depth()[i]);
-      }
-      curve.frames.push_back(std::move(f));
-      ++next_frame;
-    }
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const auto &w = pass.rows[i];
+    auto &row = curve.rows[i];
+    row.wear_volume = w.wear_volume, row.contact_radius = w.contact_radius;
+    row.peak_pressure = w.peak_pressure, row.mean_pressure = w.mean_pressure;
+    row.disk_wear_volume = w.disk_wear_volume, row.disk_track_depth = w.disk_track_depth;
   }
-  curve.wear_steps = pin->steps();
-  curve.final_pressure = pin->contact().pressure;
-  curve.ring_width = pin->grid().ring_width();
-  if (disk) {
-    track.volume = disk->volume();
-    track.depth = disk->depth();
-    track.width = disk->track_width();
-    track.length = disk->worn_length();
-    track.passes = disk->passes();
-    track.pin_depth = *std::max_element(pin->wear_depth().begin(), pin->wear_depth().end());
-    curve.disk = track;
-  }
+  curve.frames = std::move(pass.frames);
+  curve.grid_radius = pass.grid_radius;
+  curve.wear_steps = pass.wear_steps;
+  curve.final_pressure = std::move(pass.final_pressure);
+  curve.ring_width = pass.ring_width;
+  curve.disk = pass.disk;
   return curve;
 }
 
-// friction.model = "state_law" (doc/state_law_continuum.md): two-way coupling by operator splitting at
-// the output interval. CVODE integrates one interval with mu_eff held; after it, the node states h_i and the
-// pin's worn profile advance by the distance slid (the same dh_i: the law's wear_rate is the pin's only wear
-// law), the disk by the law's counterface_wear_rate, the contact pressure is re-solved, mu_eff recomputed and
-// CVODE restarted.
+// The one-line message of a failed split (the library's status and message, with the case keys that help).
+std::string split_error(const continuum::SplitReport &r, const continuum::StateLawFriction &law) {
+  switch (r.status) {
+    case continuum::SplitStatus::FastFailure:
+      return std::string(continuum::to_string(r.fast.status)) + ": " + r.fast.message;
+    case continuum::SplitStatus::TooManySlowSteps:
+      return r.message + "; raise wear.max_steps or lower contact.rings";
+    case continuum::SplitStatus::SlowFailure:
+      return with_grid_hint(r.message);
+    default:
+      return fmt::format("state law at t = {:g} s: {}{}", r.time, r.message,
+                         r.status == continuum::SplitStatus::LawOutOfRange && law.policy == coupling::OutOfRange::Error
+                             ? " (friction.out_of_range = \"archard\" takes friction at the nearest grid pressure, "
+                               "keeps wear proportional to p and counts it)"
+                             : "");
+  }
+}
+
+continuum::PinStateLawSettings state_law_settings(const PinOnDiskCase &c) {
+  const auto &k = *c.contact;
+  continuum::PinStateLawSettings s;
+  if (k.flat) s.flat_radius = k.flat_radius;
+  s.tip = pin_wear_parameters(k);
+  s.grid_radius = k.grid_radius;
+  s.load = c.parameters.normal_load;
+  s.track_radius = c.parameters.track_radius;
+  s.slid_estimate = c.parameters.drive == continuum::PinDrive::Speed ? c.parameters.sliding_speed * c.run.t_end : 0.0;
+  return s;
+}
+
+// The pin face as the state law left it at time t: per ring h_i, mu(p_i, h_i) and the profile.
+Frame state_law_frame(const continuum::PinStateLaw &pin, double t) {
+  const auto &p = pin.pressure();
+  const auto &h = pin.nodes().state();
+  Frame f{t, {}, {}, {}, {}, pin.nodes().node_mu(p)};
+  for (int i = 0; i < pin.grid().rings(); ++i) {
+    f.radius.push_back(pin.grid().ring_radius(i));
+    f.height.push_back(pin.profile_height(i));
+    f.pressure.push_back(p[i]);
+    f.depth.push_back(h[i]);
+  }
+  return f;
+}
+
+// friction.model = "state_law" (doc/state_law_continuum.md): the library's splitting driver couples the dynamics
+// (CVODE with mu_eff held over each output interval) with the pin face's node states (continuum::PinStateLaw).
 Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
   auto *law = c.friction->state_law();
-  const auto &k = *c.contact;
-  const double load = c.parameters.normal_load;
   Curve curve;
-
-  // Geometry: rings of the spherical tip (elastic solve) or of the flat end (uniform nominal pressure).
-  std::optional<continuum::PinWear> pin;
-  std::optional<continuum::AxisymmetricContact> flat_grid;
-  if (k.flat) {
-    flat_grid.emplace(k.flat_radius, k.rings, k.effective_modulus());
-  } else {
-    continuum::PinWearParameters wp = pin_wear_parameters(k);
-    // Grid size: Hertz, and the cap an Archard wear at the law's largest w/p would flatten over the run.
-    double factor = 0.0;
-    const auto &w = law->law->table(coupling::StateField::WearRate).mean;
-    for (std::size_t i = 0; i < w.size(); ++i)
-      for (double x : w[i]) factor = std::max(factor, x / law->law->pressure()[i]);
-    const double slid_estimate =
-        c.parameters.drive == continuum::PinDrive::Speed ? c.parameters.sliding_speed * c.run.t_end : 0.0;
-    const tribo::ArchardWear equivalent(factor, 1.0);
-    wp.grid_radius = k.grid_radius ? *k.grid_radius
-                                   : continuum::suggested_grid_radius(wp.tip_radius, wp.effective_modulus, load,
-                                                                      &equivalent, slid_estimate);
-    curve.grid_radius = wp.grid_radius;
-    try {
-      pin.emplace(wp, tribo::ArchardWear(0.0, 1.0), load);
-    } catch (const std::invalid_argument &e) {
-      throw std::runtime_error(std::string(e.what()) + " (raise contact.grid_radius)");
-    }
-  }
-  const continuum::AxisymmetricContact &grid = pin ? pin->grid() : *flat_grid;
-  if (k.flat) curve.grid_radius = k.flat_radius;
-  const int n = grid.rings();
-  std::vector<double> area(n);
-  for (int i = 0; i < n; ++i) area[i] = grid.ring_area(i);
-  double flat_area = 0.0;
-  for (double a : area) flat_area += a;
-  const std::vector<double> uniform(n, load / flat_area);
-  auto pressure = [&]() -> const std::vector<double> & { return pin ? pin->contact().pressure : uniform; };
-  for (int i = 0; i < n; ++i)
-    if (pressure()[i] > 0.0 && (curve.smallest_node_area == 0.0 || area[i] < curve.smallest_node_area))
-      curve.smallest_node_area = area[i];
-  auto contact_radius = [&] { return pin ? pin->contact().contact_radius : k.flat_radius; };
-
-  continuum::NodeStateLaw nodes(law->law, law->policy, n);
-  continuum::DiskTrackWear disk(tribo::ArchardWear(0.0, 1.0), c.parameters.track_radius);
-  double slid = 0.0, disk_volume = 0.0;
-  long wear_steps = 0;
-  double t_now = 0.0;
-  auto where = [&](const std::exception &e) {
-    return std::runtime_error(fmt::format("state law at t = {:g} s: {}{}", t_now, e.what(),
-                                          law->policy == coupling::OutOfRange::Error &&
-                                                  dynamic_cast<const std::out_of_range *>(&e)
-                                              ? " (friction.out_of_range = \"archard\" takes friction at the nearest grid pressure, keeps "
- "wear proportional to p and counts it)"
-                                              : ""));
-  };
+  std::optional<continuum::PinStateLaw> pin;
   try {
-    law->held_static = law->mu_static ? *law->mu_static : nodes.peak_mu(pressure(), area);
-    law->held_kinetic = nodes.mu_effective(pressure(), area);
-  } catch (const std::exception &e) {
-    throw where(e);
+    pin.emplace(state_law_settings(c), *law);
+  } catch (const std::invalid_argument &e) {
+    if (c.contact->flat) throw;
+    throw std::runtime_error(std::string(e.what()) + " (raise contact.grid_radius)");
   }
-
-  // Slides ds: outer steps bounded by the pressure-wear stability of the tip (flat: one step, p stays uniform).
-  auto wear = [&](double ds) {
-    double remaining = ds;
-    while (remaining > 0.0) {
-      double step = remaining;
-      if (pin) {
-        if (wear_steps >= k.max_wear_steps)
-          throw std::runtime_error(fmt::format("pin wear at t = {:g} s: more than {} wear updates; raise "
-                                               "wear.max_steps or lower contact.rings", t_now, k.max_wear_steps));
-        step = std::min(remaining, nodes.stable_contact_step(pressure(), pin->contact_stiffness(), k.step_safety));
-        if (remaining - step < 1e-9 * ds) step = remaining;
-      }
-      const double width = 2.0 * contact_radius();
-      const auto inc = nodes.advance(pressure(), step);
-      double volume = 0.0;
-      for (int i = 0; i < n; ++i) volume += inc.counterface[i] * area[i];
-      disk.slide_volume(volume, step, width);
-      disk_volume += volume;
-      if (pin && !pin->apply(inc.body, step))
-        throw std::runtime_error(fmt::format("pin wear at t = {:g} s: {}{}", t_now, pin->message(),
-                                             pin->message().find("edge of the grid") != std::string::npos
-                                                 ? " (raise contact.grid_radius)"
-                                                 : ""));
-      ++wear_steps;
-      remaining -= step;
-    }
-  };
-
-  bool changed = false;
   std::size_t next_frame = 0;
   std::vector<double> frame_times = c.vtk_times;
   std::sort(frame_times.begin(), frame_times.end());
   std::vector<PinOnDiskSample> samples;
   const continuum::PinOnDiskSystem system(c.parameters, *c.friction);
-  auto observer = [&](const PinOnDiskSample &s) {
-    t_now = s.t;
+  const auto observer = [&](const PinOnDiskSample &s) {
     samples.push_back(s);
-    Row row{s};
-    try {
-      const double ds = s.distance - slid;
-      if (ds > 0.0) {
-        wear(ds);
-        slid = s.distance;
-        law->held_kinetic = nodes.mu_effective(pressure(), area);
-        changed = true;
-      }
-    } catch (const std::out_of_range &e) {
-      throw where(e);
-    } catch (const std::invalid_argument &e) {
-      throw where(e);
-    }
-    const auto &p = pressure();
-    const auto &h = nodes.state();
-    double loaded = 0.0, volume = 0.0;
-    for (int i = 0; i < n; ++i) {
-      volume += h[i] * area[i];
-      if (p[i] > 0.0) {
-        row.h_mean += h[i] * area[i];
-        loaded += area[i];
-      }
-      row.h_max = std::max(row.h_max, h[i]);
-    }
-    row.h_mean = loaded > 0.0 ? row.h_mean / loaded : 0.0;
-    row.mu_eff = law->held_kinetic;
-    row.wear_volume = volume;
-    row.contact_radius = contact_radius();
-    row.peak_pressure = *std::max_element(p.begin(), p.end());
-    row.mean_pressure = pin ? pin->contact().mean_pressure : load / flat_area;
-    row.disk_wear_volume = disk.volume();
-    row.disk_track_depth = disk.depth();
-    curve.rows.push_back(row);
-    while (with_frames && next_frame < frame_times.size() && s.t >= frame_times[next_frame] - 1e-12) {
-      Frame f{s.t, {}, {}, {}, {}, nodes.node_mu(p)};
-      for (int i = 0; i < n; ++i) {
-        f.radius.push_back(grid.ring_radius(i));
-        f.height.push_back(pin ? pin->profile_height(i) : h[i]);
-        f.pressure.push_back(p[i]);
-        f.depth.push_back(h[i]);
-      }
-      curve.frames.push_back(std::move(f));
-      ++next_frame;
-    }
+    const auto st = pin->state();
+    curve.rows.push_back({s, st.wear_volume, st.contact_radius, st.peak_pressure, st.mean_pressure,
+                          st.disk_wear_volume, st.disk_track_depth, st.mu_eff, st.h_mean, st.h_max});
+    for (; with_frames && next_frame < frame_times.size() && s.t >= frame_times[next_frame] - 1e-12; ++next_frame)
+      curve.frames.push_back(state_law_frame(*pin, s.t));
   };
-  auto refresh = [&] {
-    const bool was = changed;
-    changed = false;
-    return was;
-  };
-  curve.report = continuum::simulate(system, c.run, observer, refresh);
-  if (!curve.report.ok())
-    throw std::runtime_error(std::string(continuum::to_string(curve.report.status)) + ": " + curve.report.message);
+  const auto split = continuum::split_run<PinOnDiskSample>(
+      *pin, [&](const auto &on_sample, const auto &refresh) { return continuum::simulate(system, c.run, on_sample, refresh); },
+      observer);
+  if (!split.ok()) throw std::runtime_error(split_error(split, *law));
+  curve.report = split.fast;
   curve.summary = continuum::summarise(samples);
-  curve.wear_steps = wear_steps;
-  curve.final_pressure = pressure();
-  curve.ring_width = grid.ring_width();
-  curve.range_use = nodes.use();
-  DiskTrack track;
-  track.volume = disk.volume();
-  track.depth = disk.depth();
-  track.width = disk.track_width();
-  track.length = disk.worn_length();
-  track.passes = disk.passes();
-  track.pin_depth = *std::max_element(nodes.state().begin(), nodes.state().end());
-  curve.disk = track;
+  curve.grid_radius = pin->grid_radius();
+  curve.smallest_node_area = pin->smallest_node_area();
+  curve.wear_steps = pin->wear_steps();
+  curve.final_pressure = pin->pressure();
+  curve.ring_width = pin->grid().ring_width();
+  curve.range_use = pin->nodes().use();
+  const auto &h = pin->nodes().state();
+  curve.disk = continuum::summarise(pin->disk(), *std::max_element(h.begin(), h.end()));
   return curve;
 }
 
@@ -371,25 +232,18 @@ std::string csv_text(const std::vector<Row> &rows, bool state_law) {
   return text;
 }
 
-// Subsurface stress at the start (unworn tip: Hertz, Hamilton's closed form, mu of break-away) and at the end
-// (solved pressure of the worn profile: influence functions, the final mu). doc/subsurface_stress.md.
+// Subsurface stress at the start and the end of the run (continuum::pin_start_end_stress, doc/subsurface_stress.md).
 struct StressFrame {
   double time;
   continuum::ContactStress stress;
 };
 std::vector<StressFrame> subsurface_stress(const PinOnDiskCase &c, const Curve &curve) {
-  std::vector<StressFrame> frames;
-  if (!c.contact || c.contact->flat) return frames;  // flat end: no Hertz start, nominal pressure only
+  if (!c.contact || c.contact->flat) return {};  // flat end: no Hertz start, nominal pressure only
   const auto &k = *c.contact;
-  const double load = c.parameters.normal_load;
-  const auto hertz = continuum::hertz_sphere_on_flat(k.tip_radius, k.effective_modulus(), load);
-  const double mu_start = curve.summary.start_friction_force / load;
-  frames.push_back({curve.rows.front().s.t, continuum::hertz_contact_stress(hertz.peak_pressure, hertz.contact_radius,
-                                                                            mu_start, k.pin, k.disk)});
-  const double mu_end = std::abs(curve.rows.back().s.mu);
-  frames.push_back({curve.rows.back().s.t, continuum::ring_contact_stress(curve.final_pressure, curve.ring_width,
-                                                                          mu_end, k.pin, k.disk)});
-  return frames;
+  const auto [start, end] = continuum::pin_start_end_stress(
+      pin_wear_parameters(k), c.parameters.normal_load, curve.summary.start_friction_force, curve.final_pressure,
+      curve.ring_width, curve.rows.back().s.mu, k.pin, k.disk);
+  return {{curve.rows.front().s.t, start}, {curve.rows.back().s.t, end}};
 }
 
 #ifdef RUNIN_HAVE_VTK
@@ -450,98 +304,70 @@ constexpr double kGrooveTolerance = 0.05;
 
 std::string or_none(double t) { return t < 0.0 ? std::string("none") : fmt::format("{:.6g} s", t); }
 
-}  // namespace
+struct SweepRun {
+  double mu0, torque;
+  Curve curve;
+};
 
-CLI::App *add_pin_on_disk_command(CLI::App &app, PinOnDiskOptions &o) {
-  auto *cmd = app.add_subcommand("pin-on-disk", "Pin-on-disk run-in curve with contact and wear (thesis ch. 4)");
-  cmd->add_option("case", o.case_path, "case file (TOML, or JSON if it ends in .json)")->required();
-  cmd->add_option("--law", o.law_path,
-                  "law file: from fit-law (friction.model = \"law_file\"), or from homogenise (\"state_law\", overrides friction.law)");
-  cmd->add_option("--output-dir", o.output_dir,
-                  "directory for pin_on_disk.csv/.png, pin_face_*.vts/.pvd and the mu0 sweep files")
-      ->required()
-      ->check(output_directory());
-  cmd->add_flag("--no-plot", o.no_plot, "write the CSV (and VTK) only");
-  return cmd;
+std::string summary_csv_text(const Curve &curve) {
+  const auto &m = curve.summary;
+  return std::string(kRunSummaryHeader) + "\n" +
+         run_summary_row({m.peak_friction_force, m.peak_time, m.breakaway_time, m.steady_time, m.steady_mu,
+                          curve.rows.back().wear_volume}) +
+         "\n";
 }
 
-int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
-  const PinOnDiskCase c = read_pin_on_disk_case(o.case_path, o.law_path);
-#ifndef RUNIN_HAVE_VTK
-  if (!c.vtk_times.empty())
-    throw std::runtime_error("output.vtk_times: this runin was built without VTK (configure with -DRUNIN_WITH_VTK=ON)");
-#endif
-  const Curve curve = run_case(c, true);
-  struct SweepRun {
-    double mu0, torque;
-    Curve curve;
-  };
-  std::vector<SweepRun> sweep;
-  for (double mu0 : c.sweep_mu0) {
-    const PinOnDiskCase variant = with_mu0(c, mu0);
-    sweep.push_back({mu0, variant.parameters.applied_torque, run_case(variant, false)});
+// The mu0 sweep's curves and its summary table.
+std::pair<std::string, std::string> sweep_csv_text(const std::vector<SweepRun> &sweep) {
+  std::string curves = "mu0,t_s,friction_force_N,mu,speed_m_s,sliding_distance_m,wear_volume_m3\n";
+  std::string table =
+      "mu0,applied_torque_N_m,breakaway_s,peak_friction_force_N,peak_time_s,steady_time_s,steady_mu,"
+      "wear_volume_m3\n";
+  for (const auto &run : sweep) {
+    for (const auto &r : run.curve.rows)
+      curves += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", run.mu0, r.s.t,
+                            r.s.friction_force, r.s.mu, r.s.speed, r.s.distance, r.wear_volume);
+    const auto &s = run.curve.summary;
+    table += fmt::format("{:.12g},{:.12g},{},{:.12g},{:.12g},{},{:.12g},{:.12g}\n", run.mu0, run.torque,
+                         time_cell(s.breakaway_time), s.peak_friction_force, s.peak_time, time_cell(s.steady_time),
+                         s.steady_mu, run.curve.rows.back().wear_volume);
   }
+  return {curves, table};
+}
 
-  // Everything is computed; the output set is staged and moved in only when complete.
-  StagedOutput out(o.output_dir, {"pin_on_disk.csv", "pin_on_disk_summary.csv", "pin_on_disk.png", "pin_on_disk_mu0.csv", "pin_on_disk_mu0.png",
-                                  "pin_on_disk_mu0_summary.csv", "pin_face.pvd", "pin_face_*.vts", "subsurface.pvd",
-                                  "subsurface_*.vts"});
-  const std::vector<StressFrame> stress = subsurface_stress(c, curve);
+// The CSV files and the plots, staged; returns their names in order.
+std::vector<std::string> write_curves(StagedOutput &out, const PinOnDiskCase &c, const Curve &curve,
+                                      const std::vector<SweepRun> &sweep, bool no_plot, const PlotRunner &plot) {
   out.write("pin_on_disk.csv", csv_text(curve.rows, c.friction->state_law() != nullptr));
-  {
-    const auto &m = curve.summary;
-    out.write("pin_on_disk_summary.csv",
-              std::string(kRunSummaryHeader) + "\n" +
-                  run_summary_row({m.peak_friction_force, m.peak_time, m.breakaway_time, m.steady_time, m.steady_mu,
-                                   curve.rows.back().wear_volume}) +
-                  "\n");
-  }
+  out.write("pin_on_disk_summary.csv", summary_csv_text(curve));
   std::vector<std::string> written = {"pin_on_disk.csv", "pin_on_disk_summary.csv"};
   if (!sweep.empty()) {
-    std::string curves = "mu0,t_s,friction_force_N,mu,speed_m_s,sliding_distance_m,wear_volume_m3\n";
-    std::string table =
-        "mu0,applied_torque_N_m,breakaway_s,peak_friction_force_N,peak_time_s,steady_time_s,steady_mu,"
-        "wear_volume_m3\n";
-    for (const auto &run : sweep) {
-      for (const auto &r : run.curve.rows)
-        curves += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", run.mu0, r.s.t,
-                              r.s.friction_force, r.s.mu, r.s.speed, r.s.distance, r.wear_volume);
-      const auto &s = run.curve.summary;
-      table += fmt::format("{:.12g},{:.12g},{},{:.12g},{:.12g},{},{:.12g},{:.12g}\n", run.mu0, run.torque,
-                           time_cell(s.breakaway_time), s.peak_friction_force, s.peak_time, time_cell(s.steady_time),
-                           s.steady_mu, run.curve.rows.back().wear_volume);
-    }
+    const auto [curves, table] = sweep_csv_text(sweep);
     out.write("pin_on_disk_mu0.csv", curves);
     out.write("pin_on_disk_mu0_summary.csv", table);
     written.insert(written.end(), {"pin_on_disk_mu0.csv", "pin_on_disk_mu0_summary.csv"});
   }
-  if (!o.no_plot) {
-    plot("plot_curves.py",
-         {out.file("pin_on_disk.csv").string(), out.file("pin_on_disk.png").string(), "--title", c.title});
-    written.push_back("pin_on_disk.png");
-    if (!sweep.empty()) {
-      plot("plot_curves.py", {"--overlay", out.file("pin_on_disk_mu0.csv").string(),
-                              out.file("pin_on_disk_mu0.png").string(), "--title", c.title + ": mu0 sweep"});
-      written.push_back("pin_on_disk_mu0.png");
-    }
+  if (no_plot) return written;
+  plot("plot_curves.py",
+       {out.file("pin_on_disk.csv").string(), out.file("pin_on_disk.png").string(), "--title", c.title});
+  written.push_back("pin_on_disk.png");
+  if (!sweep.empty()) {
+    plot("plot_curves.py", {"--overlay", out.file("pin_on_disk_mu0.csv").string(),
+                            out.file("pin_on_disk_mu0.png").string(), "--title", c.title + ": mu0 sweep"});
+    written.push_back("pin_on_disk_mu0.png");
   }
-  std::string vtk_index, stress_index;
-#ifdef RUNIN_HAVE_VTK
-  if (!curve.frames.empty()) vtk_index = out.destination_of(write_frames(curve.frames, out.staging()).back()).string();
-  if (!stress.empty()) stress_index = out.destination_of(write_stress(stress, out.staging()).back()).string();
-#endif
-  out.commit();
+  return written;
+}
 
+void print_dynamics(const PinOnDiskCase &c, const Curve &curve) {
   const auto &s = curve.summary;
   const auto &p = c.parameters;
   const auto &first = curve.rows.front(), &last = curve.rows.back();
-  fmt::print("runin pin-on-disk: {}\n  {}\n", o.case_path, c.title);
   fmt::print("  friction          {}\n", c.friction->description());
   fmt::print("  applied torque    {:.6g} N m ({}), ramp {:g} s\n", p.applied_torque, c.torque_origin, p.ramp_time);
   fmt::print("  static limit      {:.6g} N m (mu_static = {:.6g})\n", c.friction->static_coefficient() *
                                                                           p.normal_load * p.track_radius,
              c.friction->static_coefficient());
-  std::string scale_warning;  // state law: the contact narrower than 3 homogenisation cells
   fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
   fmt::print("  peak friction     {:.6g} N at t = {:.6g} s\n", s.peak_friction_force, s.peak_time);
   fmt::print("  steady state      {} (friction force and speed within {:g} % of final values from then on)\n",
@@ -550,59 +376,75 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
              s.steady_mu, s.steady_mu_law, first.s.mu_law);
   fmt::print("  final speed       {:.6g} m/s, sliding distance {:.6g} m at t = {:g} s\n", s.final_speed,
              last.s.distance, last.s.t);
-  if (c.contact) {
-    if (c.contact->flat)
-      fmt::print("  contact           flat end a = {:g} m at the uniform nominal pressure W / (pi a^2) = {:.4g} Pa, "
-                 "{} rings\n",
-                 c.contact->flat_radius, first.mean_pressure, c.contact->rings);
-    else
-      fmt::print("  contact           tip R = {:g} m, E* = {:.4g} Pa, {} rings to {:.4g} m\n", c.contact->tip_radius,
-                 c.contact->effective_modulus(), c.contact->rings, curve.grid_radius);
-    fmt::print("  contact radius    {:.4g} m -> {:.4g} m\n", first.contact_radius, last.contact_radius);
-    fmt::print("  pressure          peak {:.4g} -> {:.4g} Pa, mean {:.4g} -> {:.4g} Pa\n", first.peak_pressure,
-               last.peak_pressure, first.mean_pressure, last.mean_pressure);
-    if (c.contact->wear)
-      fmt::print("  wear volume       {:.6g} m^3 (Archard k W s / {}H = {:.6g}), {} adaptive wear steps\n",
-                 last.wear_volume, c.contact->wear->form() == tribo::ArchardForm::thesis ? "3" : "",
-                 c.contact->wear->volume(p.normal_load, last.s.distance), curve.wear_steps);
-    if (const auto *law = c.friction->state_law()) {
-      const auto &d = *curve.disk;
-      fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m)\n", law->path,
-                 law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
-      fmt::print("  mu_eff            {:.6g} -> {:.6g} (pressure-weighted over the rings); static limit {:.6g} ({})\n",
-                 first.mu_eff, last.mu_eff, law->held_static,
-                 law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
-      fmt::print("  pin wear          h mean {:.4g} m, max {:.4g} m, volume {:.6g} m^3 (law wear_rate), {} wear steps\n",
-                 last.h_mean, last.h_max, last.wear_volume, curve.wear_steps);
-      fmt::print("  disk wear         {:.6g} m^3 (law counterface_wear_rate), track depth {:.4g} m over {:.4g} m x "
-                 "{:.4g} m\n",
-                 d.volume, d.depth, d.width, d.length);
-      fmt::print("  law lookups       {}\n", continuum::describe(*curve.range_use, *law->law));
-      if (const auto cell = coupling::cell_scale(*law->law)) {
-        const coupling::ScaleSeparation sep{*cell, 2.0 * first.contact_radius, curve.smallest_node_area};
-        fmt::print("  scale separation  {}\n", coupling::describe(sep));
-        scale_warning = coupling::scale_separation_warning(sep);
-      }
-    } else if (curve.disk) {
-      const auto &d = *curve.disk;
-      const auto &w = *c.contact->disk_wear;
-      const bool thesis = w.form() == tribo::ArchardForm::thesis;
-      fmt::print("  disk wear         {:.6g} m^3 (Archard k_d W s / {}H_d = {:.6g}), k_d = {:g}, H_d = {:.4g} Pa ({})\n",
-                 d.volume, thesis ? "3" : "", w.volume(p.normal_load, last.s.distance), w.coefficient(), w.hardness(),
-                 c.contact->disk_hardness_origin);
-      fmt::print("  pin + disk        {:.6g} m^3 worn, the pin's part {:.4g}\n", last.wear_volume + d.volume,
-                 last.wear_volume + d.volume > 0.0 ? last.wear_volume / (last.wear_volume + d.volume) : 0.0);
-      fmt::print("  disk track        mean depth {:.4g} m, {:.4g} m wide x {:.4g} m long ({:.3g} passes of 2 pi r); "
-                 "pin wear depth {:.4g} m\n",
-                 d.depth, d.width, d.length, d.passes, d.pin_depth);
-      fmt::print("  groove            track depth / elastic approach <= {:.3g} (t = {:g} s); the contact is solved "
-                 "on the flat disk{}\n",
-                 d.approach_ratio, d.approach_ratio_time,
-                 d.approach_ratio <= kGrooveTolerance ? fmt::format(" (negligible: <= {:g})", kGrooveTolerance) : "");
-    }
-  }
-  std::vector<std::string> warnings;
-  if (!scale_warning.empty()) warnings.push_back(scale_warning);
+}
+
+// The state law's lines; returns the scale-separation warning (empty if none).
+std::string print_state_law(const PinOnDiskCase &c, const Curve &curve) {
+  const auto *law = c.friction->state_law();
+  const auto &first = curve.rows.front(), &last = curve.rows.back();
+  const auto &d = *curve.disk;
+  fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m)\n", law->path,
+             law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
+  fmt::print("  mu_eff            {:.6g} -> {:.6g} (pressure-weighted over the rings); static limit {:.6g} ({})\n",
+             first.mu_eff, last.mu_eff, law->held_static,
+             law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
+  fmt::print("  pin wear          h mean {:.4g} m, max {:.4g} m, volume {:.6g} m^3 (law wear_rate), {} wear steps\n",
+             last.h_mean, last.h_max, last.wear_volume, curve.wear_steps);
+  fmt::print("  disk wear         {:.6g} m^3 (law counterface_wear_rate), track depth {:.4g} m over {:.4g} m x "
+             "{:.4g} m\n",
+             d.volume, d.depth, d.width, d.length);
+  fmt::print("  law lookups       {}\n", continuum::describe(*curve.range_use, *law->law));
+  const auto cell = coupling::cell_scale(*law->law);
+  if (!cell) return {};
+  const coupling::ScaleSeparation sep{*cell, 2.0 * first.contact_radius, curve.smallest_node_area};
+  fmt::print("  scale separation  {}\n", coupling::describe(sep));
+  return coupling::scale_separation_warning(sep);
+}
+
+void print_disk_track(const PinOnDiskCase &c, const Curve &curve) {
+  const auto &d = *curve.disk;
+  const auto &w = *c.contact->disk_wear;
+  const auto &last = curve.rows.back();
+  const bool thesis = w.form() == tribo::ArchardForm::thesis;
+  fmt::print("  disk wear         {:.6g} m^3 (Archard k_d W s / {}H_d = {:.6g}), k_d = {:g}, H_d = {:.4g} Pa ({})\n",
+             d.volume, thesis ? "3" : "", w.volume(c.parameters.normal_load, last.s.distance), w.coefficient(),
+             w.hardness(), c.contact->disk_hardness_origin);
+  fmt::print("  pin + disk        {:.6g} m^3 worn, the pin's part {:.4g}\n", last.wear_volume + d.volume,
+             last.wear_volume + d.volume > 0.0 ? last.wear_volume / (last.wear_volume + d.volume) : 0.0);
+  fmt::print("  disk track        mean depth {:.4g} m, {:.4g} m wide x {:.4g} m long ({:.3g} passes of 2 pi r); "
+             "pin wear depth {:.4g} m\n",
+             d.depth, d.width, d.length, d.passes, d.pin_depth);
+  fmt::print("  groove            track depth / elastic approach <= {:.3g} (t = {:g} s); the contact is solved "
+             "on the flat disk{}\n",
+             d.approach_ratio, d.approach_ratio_time,
+             d.approach_ratio <= kGrooveTolerance ? fmt::format(" (negligible: <= {:g})", kGrooveTolerance) : "");
+}
+
+// The contact and wear lines; returns the scale-separation warning of a state law (empty if none).
+std::string print_contact(const PinOnDiskCase &c, const Curve &curve) {
+  const auto &k = *c.contact;
+  const auto &first = curve.rows.front(), &last = curve.rows.back();
+  if (k.flat)
+    fmt::print("  contact           flat end a = {:g} m at the uniform nominal pressure W / (pi a^2) = {:.4g} Pa, "
+               "{} rings\n",
+               k.flat_radius, first.mean_pressure, k.rings);
+  else
+    fmt::print("  contact           tip R = {:g} m, E* = {:.4g} Pa, {} rings to {:.4g} m\n", k.tip_radius,
+               k.effective_modulus(), k.rings, curve.grid_radius);
+  fmt::print("  contact radius    {:.4g} m -> {:.4g} m\n", first.contact_radius, last.contact_radius);
+  fmt::print("  pressure          peak {:.4g} -> {:.4g} Pa, mean {:.4g} -> {:.4g} Pa\n", first.peak_pressure,
+             last.peak_pressure, first.mean_pressure, last.mean_pressure);
+  if (k.wear)
+    fmt::print("  wear volume       {:.6g} m^3 (Archard k W s / {}H = {:.6g}), {} adaptive wear steps\n",
+               last.wear_volume, k.wear->form() == tribo::ArchardForm::thesis ? "3" : "",
+               k.wear->volume(c.parameters.normal_load, last.s.distance), curve.wear_steps);
+  if (c.friction->state_law()) return print_state_law(c, curve);
+  if (curve.disk) print_disk_track(c, curve);
+  return {};
+}
+
+// The subsurface stress lines; the yield warnings go to `warnings`.
+void print_stress(const PinOnDiskCase &c, const std::vector<StressFrame> &stress, std::vector<std::string> &warnings) {
   for (std::size_t i = 0; i < stress.size(); ++i) {
     const auto &f = stress[i].stress;
     fmt::print("  subsurface stress {} (t = {:g} s): {}, p0 = {:.4g} Pa, a = {:.4g} m, mu = {:.3g}\n",
@@ -626,14 +468,17 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
                                        b->peak.von_mises / b->yield_strength, b->peak.z));
     }
   }
-  if (!stress.empty()) {
-    // The frictionless Hertz field for reference (0.62 p0 at 0.48 a for nu = 0.3).
-    const auto &k = *c.contact;
-    const auto &h = stress.front().stress;
-    const auto f0 = continuum::hertz_contact_stress(h.peak_pressure, h.contact_radius, 0.0, k.pin, k.disk);
-    fmt::print("    frictionless: disk peak von Mises {:.4g} Pa at depth {:.3g} m, pin {:.4g} Pa at depth {:.3g} m\n",
-               f0.disk.peak.von_mises, f0.disk.peak.z, f0.pin.peak.von_mises, f0.pin.peak.z);
-  }
+  if (stress.empty()) return;
+  // The frictionless Hertz field for reference (0.62 p0 at 0.48 a for nu = 0.3).
+  const auto &k = *c.contact;
+  const auto &h = stress.front().stress;
+  const auto f0 = continuum::hertz_contact_stress(h.peak_pressure, h.contact_radius, 0.0, k.pin, k.disk);
+  fmt::print("    frictionless: disk peak von Mises {:.4g} Pa at depth {:.3g} m, pin {:.4g} Pa at depth {:.3g} m\n",
+             f0.disk.peak.von_mises, f0.disk.peak.z, f0.pin.peak.von_mises, f0.pin.peak.z);
+}
+
+// The out-of-range and groove warnings.
+void add_warnings(const PinOnDiskCase &c, const Curve &curve, std::vector<std::string> &warnings) {
   if (curve.range_use)
     if (auto w = continuum::out_of_range_warning(*curve.range_use, *c.friction->state_law()->law,
                                                   c.friction->state_law()->policy);
@@ -644,20 +489,73 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
                                    "> {:g}): the worn groove, left out of the contact solve, would change the "
                                    "contact pressure",
                                    curve.disk->approach_ratio, curve.disk->approach_ratio_time, kGrooveTolerance));
+}
+
+void print_sweep(const std::vector<SweepRun> &sweep) {
+  if (sweep.empty()) return;
+  fmt::print("  mu0 sweep         (torque from eq. 4.11 per mu0 when targeted)\n");
+  fmt::print("    {:>6} {:>11} {:>11} {:>11} {:>11} {:>11} {:>12}\n", "mu0", "T_app N m", "break-away", "peak F N",
+             "steady at", "steady mu", "wear m^3");
+  for (const auto &run : sweep) {
+    const auto &r = run.curve.summary;
+    fmt::print("    {:>6.3g} {:>11.5g} {:>11} {:>11.5g} {:>11} {:>11.5g} {:>12.4g}\n", run.mu0, run.torque,
+               or_none(r.breakaway_time), r.peak_friction_force, or_none(r.steady_time), r.steady_mu,
+               run.curve.rows.back().wear_volume);
+  }
+}
+
+}  // namespace
+
+CLI::App *add_pin_on_disk_command(CLI::App &app, PinOnDiskOptions &o) {
+  auto *cmd = app.add_subcommand("pin-on-disk", "Pin-on-disk run-in curve with contact and wear (thesis ch. 4)");
+  cmd->add_option("case", o.case_path, "case file (TOML, or JSON if it ends in .json)")->required();
+  cmd->add_option("--law", o.law_path,
+                  "law file: from fit-law (friction.model = \"law_file\"), or from homogenise (\"state_law\", overrides friction.law)");
+  cmd->add_option("--output-dir", o.output_dir,
+                  "directory for pin_on_disk.csv/.png, pin_face_*.vts/.pvd and the mu0 sweep files")
+      ->required()
+      ->check(output_directory());
+  cmd->add_flag("--no-plot", o.no_plot, "write the CSV (and VTK) only");
+  return cmd;
+}
+
+int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
+  const PinOnDiskCase c = read_pin_on_disk_case(o.case_path, o.law_path);
+#ifndef RUNIN_HAVE_VTK
+  if (!c.vtk_times.empty())
+    throw std::runtime_error("output.vtk_times: this runin was built without VTK (configure with -DRUNIN_WITH_VTK=ON)");
+#endif
+  const Curve curve = run_case(c, true);
+  std::vector<SweepRun> sweep;
+  for (double mu0 : c.sweep_mu0) {
+    const PinOnDiskCase variant = with_mu0(c, mu0);
+    sweep.push_back({mu0, variant.parameters.applied_torque, run_case(variant, false)});
+  }
+
+  // Everything is computed; the output set is staged and moved in only when complete.
+  StagedOutput out(o.output_dir, {"pin_on_disk.csv", "pin_on_disk_summary.csv", "pin_on_disk.png", "pin_on_disk_mu0.csv", "pin_on_disk_mu0.png",
+                                  "pin_on_disk_mu0_summary.csv", "pin_face.pvd", "pin_face_*.vts", "subsurface.pvd",
+                                  "subsurface_*.vts"});
+  const std::vector<StressFrame> stress = subsurface_stress(c, curve);
+  const std::vector<std::string> written = write_curves(out, c, curve, sweep, o.no_plot, plot);
+  std::string vtk_index, stress_index;
+#ifdef RUNIN_HAVE_VTK
+  if (!curve.frames.empty()) vtk_index = out.destination_of(write_frames(curve.frames, out.staging()).back()).string();
+  if (!stress.empty()) stress_index = out.destination_of(write_stress(stress, out.staging()).back()).string();
+#endif
+  out.commit();
+
+  fmt::print("runin pin-on-disk: {}\n  {}\n", o.case_path, c.title);
+  print_dynamics(c, curve);
+  std::vector<std::string> warnings;
+  if (c.contact)
+    if (auto w = print_contact(c, curve); !w.empty()) warnings.push_back(std::move(w));
+  print_stress(c, stress, warnings);
+  add_warnings(c, curve, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);
   fmt::print("  CVODE             {} steps, {} break-away, {} re-stick events\n", curve.report.steps,
              curve.report.breakaway_times.size(), curve.report.restick_times.size());
-  if (!sweep.empty()) {
-    fmt::print("  mu0 sweep         (torque from eq. 4.11 per mu0 when targeted)\n");
-    fmt::print("    {:>6} {:>11} {:>11} {:>11} {:>11} {:>11} {:>12}\n", "mu0", "T_app N m", "break-away", "peak F N",
-               "steady at", "steady mu", "wear m^3");
-    for (const auto &run : sweep) {
-      const auto &r = run.curve.summary;
-      fmt::print("    {:>6.3g} {:>11.5g} {:>11} {:>11.5g} {:>11} {:>11.5g} {:>12.4g}\n", run.mu0, run.torque,
-                 or_none(r.breakaway_time), r.peak_friction_force, or_none(r.steady_time), r.steady_mu,
-                 run.curve.rows.back().wear_volume);
-    }
-  }
+  print_sweep(sweep);
   fmt::print("  wrote            ");
   for (std::size_t i = 0; i < written.size(); ++i)
     fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());

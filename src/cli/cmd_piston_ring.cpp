@@ -20,6 +20,8 @@
 #include "cli/run_summary.h"
 #include "cli/staged_file.h"
 #include "continuum/piston_ring.h"
+#include "continuum/piston_ring_wear.h"
+#include "continuum/state_law_splitting.h"
 #include "coupling/scale_separation.h"
 #include "continuum/ring_liner_wear.h"
 #ifdef RUNIN_HAVE_VTK
@@ -45,17 +47,9 @@ struct Options {
   bool no_plot = false;
 };
 
-struct WearRow {
-  double ring = 0.0, liner = 0.0, width = 0.0, peak = 0.0, mean = 0.0;
-  double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0;  // friction.model = "state_law"
-};
-
-// Profiles and pressures at one output time, for the VTK frames.
-struct WearSnapshot {
-  double time = 0.0, ring_position = 0.0;
-  std::vector<double> liner_wear, liner_pressure, ring_wear, ring_pressure;
-  std::vector<double> ring_mu;  // state law: mu(p_i, h_i) per face cell (h_i = ring_wear)
-};
+using WearRow = continuum::RingWearRow;
+using WearSnapshot = continuum::RingWearSnapshot;
+using WearPass = continuum::RingWearPass;
 
 struct Curve {
   std::vector<PistonRingSample> samples;
@@ -63,14 +57,17 @@ struct Curve {
   continuum::PistonRingSummary summary;
 };
 
+continuum::PistonRingSystem ring_system(const PistonRingCase &c, const PistonRingOfPack &ring,
+                                        const continuum::SlidingFriction &friction) {
+  try {
+    return continuum::PistonRingSystem(ring.parameters, friction);
+  } catch (const std::invalid_argument &e) {
+    throw InputError(c.path + ": key '" + (c.rings.size() > 1 ? "ring_pack" : "ring") + "': " + e.what());
+  }
+}
+
 Curve run_dynamics(const PistonRingCase &c, const PistonRingOfPack &ring, const continuum::SlidingFriction &friction) {
-  const continuum::PistonRingSystem system = [&] {
-    try {
-      return continuum::PistonRingSystem(ring.parameters, friction);
-    } catch (const std::invalid_argument &e) {
-      throw InputError(c.path + ": key '" + (c.rings.size() > 1 ? "ring_pack" : "ring") + "': " + e.what());
-    }
-  }();
+  const auto system = ring_system(c, ring, friction);
   Curve curve;
   curve.report = continuum::simulate(system, c.run, [&](const PistonRingSample &s) { curve.samples.push_back(s); });
   if (!curve.report.ok())
@@ -80,114 +77,6 @@ Curve run_dynamics(const PistonRingCase &c, const PistonRingOfPack &ring, const 
   curve.summary = continuum::summarise(system, curve.samples);
   for (auto &sample : curve.samples) sample.ring_position += ring.position;  // groove centre on the piston
   return curve;
-}
-
-// The rings' samples on one time grid: the union of their sample times (each ring's events are its
-// samples), every ring linearly interpolated between its own samples (no event in between, so the
-// ring moves monotonically and stays in one phase there). One ring: its own samples, unchanged.
-std::vector<std::vector<PistonRingSample>> common_grid(const std::vector<const std::vector<PistonRingSample> *> &rings) {
-  if (rings.size() == 1) return {*rings.front()};
-  std::vector<double> times;
-  for (const auto *r : rings)
-    for (const auto &s : *r) times.push_back(s.t);
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
-  std::vector<std::vector<PistonRingSample>> out(rings.size());
-  for (std::size_t k = 0; k < rings.size(); ++k) {
-    const auto &own = *rings[k];
-    std::size_t j = 0;
-    for (double t : times) {
-      while (j + 1 < own.size() && own[j + 1].t <= t) ++j;
-      if (own[j].t == t || j + 1 >= own.size()) {
-        out[k].push_back(own[j]);
-        out[k].back().t = t;
-        continue;
-      }
-      const auto &a = own[j], &b = own[j + 1];
-      const double f = (t - a.t) / (b.t - a.t);
-      auto mix = [f](double x, double y) { return x + f * (y - x); };
-      PistonRingSample s = a;
-      s.t = t;
-      s.crank_angle = mix(a.crank_angle, b.crank_angle);
-      s.piston_position = mix(a.piston_position, b.piston_position);
-      s.piston_velocity = mix(a.piston_velocity, b.piston_velocity);
-      s.ring_position = mix(a.ring_position, b.ring_position);
-      s.speed = mix(a.speed, b.speed);
-      s.distance = mix(a.distance, b.distance);
-      s.friction_force = mix(a.friction_force, b.friction_force);
-      s.land_force = mix(a.land_force, b.land_force);
-      s.normal_load = mix(a.normal_load, b.normal_load);
-      s.mu = s.normal_load > 0.0 ? std::abs(s.friction_force) / s.normal_load : 0.0;
-      s.mu_law = mix(a.mu_law, b.mu_law);
-      s.roughness = mix(a.roughness, b.roughness);
-      s.state = a.speed == 0.0 && b.speed == 0.0 ? continuum::ContactState::Stick : continuum::ContactState::Slip;
-      if (s.state == continuum::ContactState::Stick) s.speed = 0.0;
-      out[k].push_back(s);
-    }
-  }
-  return out;
-}
-
-// Wear along the computed trajectory (wear changes the pressure distribution, not W or mu, so it
-// does not feed back into the dynamics).
-struct WearPass {
-  std::vector<WearRow> rows;
-  std::vector<WearSnapshot> snapshots;
-  double initial_peak = 0.0;
-  std::vector<double> initial_pressure, final_pressure;  // Pa per ring cell, first and last sample
-};
-
-WearSnapshot snapshot(const continuum::RingLinerWear &wear, const PistonRingSample &s) {
-  WearSnapshot snap;
-  snap.time = s.t;
-  snap.ring_position = s.ring_position;
-  snap.liner_wear = wear.liner_wear();
-  snap.liner_pressure = wear.liner_pressure(s.ring_position, s.normal_load);
-  snap.ring_wear = wear.ring_wear();
-  snap.ring_pressure = wear.pressure(s.ring_position, s.normal_load).pressure;
-  if (const auto *law = wear.state_law()) snap.ring_mu = law->node_mu(snap.ring_pressure);
-  return snap;
-}
-
-// All rings slide sample by sample (they share the liner, so they wear it in time order).
-std::vector<WearPass> run_wear(std::vector<continuum::RingLinerWear> &wear,
-                               const std::vector<std::vector<PistonRingSample>> &rings,
-                               const std::vector<double> &vtk_times, const std::vector<PistonRingOfPack> &names) {
-  std::vector<WearPass> passes(rings.size());
-  std::vector<double> times = vtk_times;
-  std::sort(times.begin(), times.end());
-  std::size_t next_frame = 0;
-  const auto &grid = rings.front();
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    for (std::size_t k = 0; k < rings.size(); ++k) {
-      const auto &s = rings[k][i];
-      auto &w = wear[k];
-      const std::string which = rings.size() > 1 ? "ring " + names[k].name + ": " : std::string();
-      if (i > 0) {
-        const auto &prev = rings[k][i - 1];
-        bool ok = true;
-        try {
-          ok = w.slide(prev.ring_position, s.ring_position, prev.normal_load, s.normal_load);
-        } catch (const std::out_of_range &e) {
-          throw std::runtime_error(fmt::format("{}wear at t = {:.6g} s: {}", which, s.t, e.what()));
-        }
-        if (!ok)
-          throw std::runtime_error(fmt::format("{}{} at t = {:.6g} s: {} (wear.k = {:g}; not a run-in any more)", which,
-                                               continuum::to_string(w.status()), s.t, w.message(),
-                                               w.archard().coefficient()));
-      }
-      const auto contact = w.pressure(s.ring_position, s.normal_load);
-      if (i == 0) passes[k].initial_peak = contact.peak, passes[k].initial_pressure = contact.pressure;
-      if (i + 1 == grid.size()) passes[k].final_pressure = contact.pressure;
-      passes[k].rows.push_back({w.ring_volume(), w.liner_volume(), contact.width, contact.peak, contact.mean});
-    }
-    const double t = grid[i].t;
-    while (next_frame < times.size() && t >= times[next_frame] - 1e-12 * std::max(1.0, t)) {
-      for (std::size_t k = 0; k < rings.size(); ++k) passes[k].snapshots.push_back(snapshot(wear[k], rings[k][i]));
-      ++next_frame;
-    }
-  }
-  return passes;
 }
 
 const char *kColumns =
@@ -302,46 +191,6 @@ void announce_large_wear_pass(const PistonRingCase &c, std::size_t samples) {
 
 std::string or_none(double t) { return t < 0.0 ? std::string("none") : fmt::format("{:.6g} s", t); }
 
-// Wear run-in (crank motion): per cycle the largest peak contact pressure; settled from the first
-// cycle after which every cycle's value is within 1 % of the last full cycle's. -1: not settled.
-double pressure_settling_time(const continuum::PistonRingParameters &p, const std::vector<PistonRingSample> &samples,
-                              const std::vector<WearRow> &rows) {
-  if (p.motion != continuum::PistonMotion::Crank) return -1.0;
-  const double period = (p.gas.empty() ? 2.0 * kPi : p.gas.cycle) / p.crank_speed;
-  const long cycles = static_cast<long>(std::floor(samples.back().t / period + 1e-9));
-  if (cycles < 3) return -1.0;
-  std::vector<double> peak(cycles, 0.0);
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const long cycle = static_cast<long>(std::floor(samples[i].t / period));
-    if (cycle < cycles) peak[cycle] = std::max(peak[cycle], rows[i].peak);
-  }
-  long first = cycles - 1;
-  while (first > 0 && std::abs(peak[first - 1] - peak.back()) <= 0.01 * peak.back()) --first;
-  return first < cycles - 1 ? first * period : -1.0;
-}
-
-// The piston's friction: the rings' sums on the common grid (friction, land force, W; mean sliding
-// speed; slip if any ring slips). One ring: its own samples.
-std::vector<PistonRingSample> pack_samples(const std::vector<std::vector<PistonRingSample>> &grid) {
-  if (grid.size() == 1) return grid.front();
-  std::vector<PistonRingSample> out = grid.front();
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    auto &s = out[i];
-    s.friction_force = s.land_force = s.normal_load = s.speed = 0.0;
-    bool slip = false;
-    for (const auto &ring : grid) {
-      s.friction_force += ring[i].friction_force;
-      s.land_force += ring[i].land_force;
-      s.normal_load += ring[i].normal_load;
-      s.speed += ring[i].speed / static_cast<double>(grid.size());
-      slip = slip || ring[i].state == continuum::ContactState::Slip;
-    }
-    s.state = slip ? continuum::ContactState::Slip : continuum::ContactState::Stick;
-    s.mu = s.normal_load > 0.0 ? std::abs(s.friction_force) / s.normal_load : 0.0;
-  }
-  return out;
-}
-
 struct PackRun {
   std::vector<Curve> rings;                          // per ring, own samples and summary
   std::vector<std::vector<PistonRingSample>> grid;   // per ring on the common grid
@@ -360,8 +209,8 @@ void assemble_pack(PackRun &r, const PistonRingCase &c, const continuum::Sliding
     r.breakaways += curve.report.breakaway_times.size();
     r.resticks += curve.report.restick_times.size();
   }
-  r.grid = common_grid(own);
-  r.pack = pack_samples(r.grid);
+  r.grid = continuum::common_grid(own);
+  r.pack = continuum::pack_samples(r.grid);
   if (c.rings.size() == 1) {
     r.summary = r.rings.front().summary;
   } else {
@@ -378,12 +227,9 @@ PackRun run_pack(const PistonRingCase &c, const continuum::SlidingFriction &fric
 }
 
 // friction.model = "state_law" (doc/state_law_continuum.md): each ring's dynamics and its face/liner wear advance
-// together by operator splitting at the output interval: CVODE integrates one interval with the ring's mu_eff
-// held, the ring then slides its face over the liner along that interval (the law's dh_i on its face cells, the
-// counterface rate on the liner under it), mu_eff is recomputed at the new pressures and CVODE restarts.
-// The rings of a pack run one after the other on the shared liner: ring B sees the liner as ring A left it at
-// the end of the run, not at the same time (the liner is the counter body: it changes the faces' pressure only
-// through its own small wear).
+// together through the library's splitting driver (continuum::simulate_state_law). The rings of a pack run one after
+// the other on the shared liner: ring B sees the liner as ring A left it at the end of the run, not at the same time
+// (the liner is the counter body: it changes the faces' pressure only through its own small wear).
 struct StateLawPack {
   PackRun run;
   std::vector<WearPass> passes;
@@ -391,111 +237,64 @@ struct StateLawPack {
   std::vector<double> mu_static;  // per ring
 };
 
+// A ring's failed split as one line (`which` names the ring in a pack).
+std::string split_error(const continuum::SplitReport &r, const continuum::StateLawFriction &law,
+                        const std::string &which) {
+  switch (r.status) {
+    case continuum::SplitStatus::FastFailure:
+      return which + continuum::to_string(r.fast.status) + ": " + r.fast.message + events_hint(r.fast.status);
+    case continuum::SplitStatus::LawOutOfRange:
+      return fmt::format("{}state law at t = {:g} s: {}{}", which, r.time, r.message,
+                         law.policy == coupling::OutOfRange::Error
+                             ? " (friction.out_of_range = \"archard\" takes friction at the nearest grid pressure, keeps "
+                               "wear proportional to p and counts it)"
+                             : "");
+    case continuum::SplitStatus::InvalidState: return r.message;
+    default: return which + r.message + " (not a run-in any more)";
+  }
+}
+
+// Wear rows on the common grid: each ring's row of its last own sample at or before the grid time.
+std::vector<WearRow> rows_on_grid(const std::vector<PistonRingSample> &own, const std::vector<WearRow> &own_rows,
+                                  const std::vector<PistonRingSample> &grid) {
+  std::vector<WearRow> rows;
+  std::size_t j = 0;
+  for (const auto &g : grid) {
+    while (j + 1 < own.size() && own[j + 1].t <= g.t) ++j;
+    rows.push_back(own_rows[j]);
+  }
+  return rows;
+}
+
 StateLawPack run_pack_state_law(const PistonRingCase &c, std::vector<continuum::RingLinerWear> &wear) {
   StateLawPack out;
   const auto *law = c.friction->state_law();
-  std::vector<double> times = c.vtk_times;
-  std::sort(times.begin(), times.end());
-  std::vector<std::vector<WearRow>> own_rows(c.rings.size());
-  out.passes.resize(c.rings.size());
   for (std::size_t k = 0; k < c.rings.size(); ++k) {
     const auto &ring = c.rings[k];
-    auto &w = wear[k];
-    auto &pass = out.passes[k];
     auto held = std::make_shared<continuum::StateLawFriction>(*law);  // this ring's own held values
-    const continuum::PistonRingSystem system = [&] {
-      try {
-        return continuum::PistonRingSystem(ring.parameters,
-                                           continuum::SlidingFriction::state_law(held, c.friction->speed_coefficient()));
-      } catch (const std::invalid_argument &e) {
-        throw InputError(c.path + ": key '" + (c.rings.size() > 1 ? "ring_pack" : "ring") + "': " + e.what());
-      }
-    }();
-    const std::string which = c.rings.size() > 1 ? "ring " + ring.name + ": " : std::string();
-    double t_now = 0.0;
-    auto where = [&](const std::exception &e) {
-      return std::runtime_error(fmt::format("{}state law at t = {:g} s: {}{}", which, t_now, e.what(),
-                                            law->policy == coupling::OutOfRange::Error
-                                                ? " (friction.out_of_range = \"archard\" takes friction at the nearest grid pressure, keeps "
- "wear proportional to p and counts it)"
-                                                : ""));
-    };
-    {
-      const double x0 = system.piston_position(0.0) + ring.position, w0 = system.normal_load(0.0);
-      try {
-        held->held_static = law->mu_static ? *law->mu_static : w.peak_mu(x0, w0);
-        held->held_kinetic = w.mu_effective(x0, w0);
-      } catch (const std::out_of_range &e) {
-        throw where(e);
-      }
-      out.mu_static.push_back(held->held_static);
-    }
+    const auto system =
+        ring_system(c, ring, continuum::SlidingFriction::state_law(held, c.friction->speed_coefficient()));
+    auto split = continuum::simulate_state_law(system, c.run, wear[k], *held, ring.position, c.vtk_times);
+    if (!split.report.ok())
+      throw std::runtime_error(split_error(split.report, *law, c.rings.size() > 1 ? "ring " + ring.name + ": " : ""));
+    out.mu_static.push_back(split.mu_static);
     Curve curve;
-    std::size_t next_frame = 0;
-    bool changed = false;
-    std::optional<PistonRingSample> prev;
-    auto observer = [&](const PistonRingSample &sample) {
-      t_now = sample.t;
-      PistonRingSample s = sample;
-      s.ring_position += ring.position;  // groove centre on the piston
-      try {
-        if (prev && s.distance > prev->distance) {
-          bool ok = w.slide(prev->ring_position, s.ring_position, prev->normal_load, s.normal_load);
-          if (!ok)
-            throw std::runtime_error(fmt::format("{}{} at t = {:.6g} s: {} (not a run-in any more)", which,
-                                                 continuum::to_string(w.status()), s.t, w.message()));
-          held->held_kinetic = w.mu_effective(s.ring_position, s.normal_load);
-          changed = true;
-        }
-        const auto contact = w.pressure(s.ring_position, s.normal_load);
-        WearRow row{w.ring_volume(), w.liner_volume(), contact.width, contact.peak, contact.mean};
-        row.mu_eff = held->held_kinetic;
-        const auto &h = w.state_law()->state();
-        int loaded = 0;
-        for (std::size_t i = 0; i < h.size(); ++i) {
-          row.h_max = std::max(row.h_max, h[i]);
-          if (contact.pressure[i] > 0.0) row.h_mean += h[i], ++loaded;
-        }
-        row.h_mean = loaded ? row.h_mean / loaded : 0.0;
-        if (!prev) pass.initial_peak = contact.peak, pass.initial_pressure = contact.pressure;
-        pass.final_pressure = contact.pressure;
-        own_rows[k].push_back(row);
-        while (next_frame < times.size() && s.t >= times[next_frame] - 1e-12 * std::max(1.0, s.t)) {
-          pass.snapshots.push_back(snapshot(w, s));
-          ++next_frame;
-        }
-      } catch (const std::out_of_range &e) {
-        throw where(e);
-      }
-      prev = s;
-      curve.samples.push_back(s);
-    };
-    auto refresh = [&] { return std::exchange(changed, false); };
-    curve.report = continuum::simulate(system, c.run, observer, refresh);
-    if (!curve.report.ok())
-      throw std::runtime_error(which + continuum::to_string(curve.report.status) + ": " + curve.report.message +
-                               events_hint(curve.report.status));
+    curve.report = split.report.fast;
+    curve.samples = std::move(split.samples);
     std::vector<PistonRingSample> unshifted = curve.samples;  // summarise() expects the ring's own coordinate
     for (auto &sample : unshifted) sample.ring_position -= ring.position;
     curve.summary = continuum::summarise(system, unshifted);
     out.run.rings.push_back(std::move(curve));
-    const auto &use = w.state_law()->use();
+    out.passes.push_back(std::move(split.pass));
+    const auto &use = wear[k].state_law()->use();
     out.use.lookups += use.lookups;
     out.use.below_pressure += use.below_pressure;
     out.use.above_pressure += use.above_pressure;
     out.use.beyond_depth += use.beyond_depth;
   }
-  auto &r = out.run;
-  assemble_pack(r, c, *c.friction);
-  // Wear rows on the common grid: each ring's row of its last own sample at or before the grid time.
-  for (std::size_t k = 0; k < c.rings.size(); ++k) {
-    const auto &samples = r.rings[k].samples;
-    std::size_t j = 0;
-    for (const auto &g : r.grid[k]) {
-      while (j + 1 < samples.size() && samples[j + 1].t <= g.t) ++j;
-      out.passes[k].rows.push_back(own_rows[k][j]);
-    }
-  }
+  assemble_pack(out.run, c, *c.friction);
+  for (std::size_t k = 0; k < c.rings.size(); ++k)
+    out.passes[k].rows = rows_on_grid(out.run.rings[k].samples, out.passes[k].rows, out.run.grid[k]);
   return out;
 }
 
@@ -531,11 +330,8 @@ std::string pack_csv_text(const PistonRingCase &c, const PackRun &run, const std
   return text;
 }
 
-// Subsurface stress below each ring face (doc/subsurface_stress.md). Start: the unworn face; McEwen's closed form
-// on the Hertz contact of the crowned face when it is Hertzian (the Hertz width inside the face and the solved
-// peak within 5 % of Hertz p0), else the influence tier; mu at break-away (largest |F| / W up to the first slip
-// sample). End: the influence tier on the last sample's (worn) pressure, with the |mu| of the last slip sample.
-// The sign of the shear follows the ring's sliding direction on the liner.
+// Subsurface stress below each ring face (doc/subsurface_stress.md): the library's start and end frames
+// (continuum::ring_face_start_end_stress), named for the summary and the VTK series.
 std::vector<LineStressReport> subsurface_stress(const PistonRingCase &c, const PackRun &run,
                                                 const std::vector<continuum::RingLinerWear> &wear,
                                                 const std::vector<WearPass> &passes) {
@@ -544,22 +340,12 @@ std::vector<LineStressReport> subsurface_stress(const PistonRingCase &c, const P
   continuum::verdict_yield_strength(c.liner_material, &tabor_liner);
   continuum::verdict_yield_strength(c.ring_material, &tabor_ring);
   const tribo::Material liner = verdict_material(c.liner_material), ring = verdict_material(c.ring_material);
-  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
   for (std::size_t k = 0; k < c.rings.size(); ++k) {
     const auto &samples = run.grid[k];
     const auto &pass = passes[k];
     if (samples.empty() || pass.initial_pressure.empty() || pass.final_pressure.empty()) continue;
-    const PistonRingSample *first_slip = nullptr, *last_slip = nullptr;
-    for (const auto &s : samples)
-      if (s.state == continuum::ContactState::Slip) {
-        if (!first_slip) first_slip = &s;
-        last_slip = &s;
-      }
-    const auto &first = samples.front();
-    const PistonRingSample &end = last_slip ? *last_slip : samples.back();
-    const double mu_start = (first_slip ? sign(first_slip->speed) : 1.0) *
-                            run.rings[k].summary.start_friction_force / first.normal_load;
-    const double mu_end = sign(end.speed) * end.mu;
+    const auto stress = continuum::ring_face_start_end_stress(wear[k], samples, run.rings[k].summary.start_friction_force,
+                                                              pass.initial_pressure, pass.final_pressure, liner, ring);
     LineStressReport r;
     r.contact = c.rings.size() > 1 ? "ring " + c.rings[k].name + " face" : "ring face";
     r.label_a = body_label("liner", c.liner_material_name);
@@ -567,171 +353,184 @@ std::vector<LineStressReport> subsurface_stress(const PistonRingCase &c, const P
     r.field_a = "liner", r.field_b = "ring";
     r.materials_hint = "material.materials";
     r.tabor_a = tabor_liner, r.tabor_b = tabor_ring;
-    const auto &p_start = pass.initial_pressure;
-    const double solved_peak = *std::max_element(p_start.begin(), p_start.end());
-    const auto hertz = continuum::ring_face_hertz_stress(wear[k].settings(), first.normal_load, mu_start, liner, ring);
-    const bool hertzian = hertz && std::abs(solved_peak / hertz->peak_pressure - 1.0) <= 0.05;
-    if (hertz)
+    if (stress.hertz_peak > 0.0)
       r.cross_check = fmt::format("solved unworn pressure: p0 = {:.4g} Pa ({:+.2f} % from Hertz): start from the {}",
-                                  solved_peak, 100.0 * (solved_peak / hertz->peak_pressure - 1.0),
-                                  hertzian ? "closed form" : "influence tier");
+                                  stress.solved_peak, 100.0 * (stress.solved_peak / stress.hertz_peak - 1.0),
+                                  stress.closed_form ? "closed form" : "influence tier");
     else
       r.cross_check = "the unworn face is not Hertzian (no crown, or the Hertz width reaches the face width): start "
                       "from the influence tier";
-    r.frames.push_back({first.t, hertzian ? *hertz : continuum::ring_face_stress(wear[k], p_start, mu_start, liner, ring)});
-    r.frames.push_back({samples.back().t, continuum::ring_face_stress(wear[k], pass.final_pressure, mu_end, liner, ring)});
+    r.frames.push_back({samples.front().t, stress.start});
+    r.frames.push_back({samples.back().t, stress.end});
     reports.push_back(std::move(r));
   }
   return reports;
 }
 
-int run(const Options &o, const PlotRunner &plot) {
-  if (is_lubricated_ring_case(o.case_path))   // [lubrication]: the mixed-lubrication run-in
-    return run_lubricated_piston_ring(o.case_path, o.output_dir, o.law_path, o.no_plot, plot);
-  const PistonRingCase c = read_piston_ring_case(o.case_path, o.law_path);
-  const auto &p = c.parameters;
-  const bool pack = c.rings.size() > 1;
-  const auto *law = c.friction->state_law();
+// The one-way wear pass of the library, its failures as one line naming the ring.
+std::vector<WearPass> wear_pass(const PistonRingCase &c, std::vector<continuum::RingLinerWear> &wear, const PackRun &run) {
+  try {
+    return continuum::ring_wear_pass(wear, run.grid, c.vtk_times);
+  } catch (const continuum::RingWearError &e) {
+    const std::string which = c.rings.size() > 1 ? "ring " + c.rings[e.ring].name + ": " : std::string();
+    if (e.kind == continuum::RingWearError::Kind::LeftTheLiner)
+      throw std::runtime_error(fmt::format("{}wear at t = {:.6g} s: {}", which, e.time, e.what()));
+    const auto &w = wear[e.ring];
+    throw std::runtime_error(fmt::format("{}{} at t = {:.6g} s: {} (wear.k = {:g}; not a run-in any more)", which,
+                                         continuum::to_string(w.status()), e.time, w.message(),
+                                         w.archard().coefficient()));
+  }
+}
+
+struct SweepRow {
+  double mu0;
+  PackRun run;
+};
+
+// Everything a case computes: the rings' wear models, the main run (split on a state law), the wear passes, the sweep.
+struct Computed {
   std::vector<continuum::RingLinerWear> wear;
-  wear.reserve(c.rings.size());
-  for (const auto &ring : c.rings) wear.emplace_back(ring.wear_settings, *c.archard);
-  for (std::size_t k = 1; k < wear.size(); ++k) wear[k].share_liner(wear.front());
   std::optional<StateLawPack> coupled;
-  if (law) {
-    for (auto &w : wear) w.attach_state_law(law->law, law->policy);
-    coupled = run_pack_state_law(c, wear);
-  }
-  const PackRun main = law ? coupled->run : run_pack(c, *c.friction);
-  if (!law) announce_large_wear_pass(c, main.pack.size() * c.rings.size());
-  const std::vector<WearPass> passes = law ? coupled->passes : run_wear(wear, main.grid, c.vtk_times, c.rings);
-
-  struct SweepRow {
-    double mu0;
-    PackRun run;
-  };
+  PackRun main;
+  std::vector<WearPass> passes;
   std::vector<SweepRow> sweep;
-  for (double mu0 : c.sweep_mu0) sweep.push_back({mu0, run_pack(c, piston_ring_friction_with_mu0(c, mu0))});
+};
 
-  // Everything is computed; the output set is staged and moved in only when complete.
-  StagedOutput out(o.output_dir, {"piston_ring.csv", "piston_ring_summary.csv", "piston_ring_?.csv", "piston_ring_rings.csv",
-                                  "piston_ring_liner.csv", "piston_ring_face.csv", "piston_ring_face_?.csv",
-                                  "piston_ring_mu0.csv", "piston_ring.png", "piston_ring_mu0.png", "vtk/liner.pvd",
-                                  "vtk/liner_*.vts", "vtk/ring_face.pvd", "vtk/ring_face_*.vts", "vtk/ring_face_?.pvd",
-                                  "vtk/subsurface.pvd", "vtk/subsurface_*.vts", "vtk/subsurface_?.pvd"});
-  const std::vector<LineStressReport> stress = subsurface_stress(c, main, wear, passes);
+Computed compute(const PistonRingCase &c) {
+  const auto *law = c.friction->state_law();
+  Computed r;
+  r.wear.reserve(c.rings.size());
+  for (const auto &ring : c.rings) r.wear.emplace_back(ring.wear_settings, *c.archard);
+  for (std::size_t k = 1; k < r.wear.size(); ++k) r.wear[k].share_liner(r.wear.front());
+  if (law) {
+    for (auto &w : r.wear) w.attach_state_law(law->law, law->policy);
+    r.coupled = run_pack_state_law(c, r.wear);
+  }
+  r.main = law ? r.coupled->run : run_pack(c, *c.friction);
+  if (!law) announce_large_wear_pass(c, r.main.pack.size() * c.rings.size());
+  r.passes = law ? r.coupled->passes : wear_pass(c, r.wear, r.main);
+  for (double mu0 : c.sweep_mu0) r.sweep.push_back({mu0, run_pack(c, piston_ring_friction_with_mu0(c, mu0))});
+  return r;
+}
+
+std::string summary_csv_text(const Computed &r) {
+  double wear_volume = 0.0;  // ring faces and liner at the end of the run
+  for (const auto &pass : r.passes) wear_volume += pass.rows.back().ring + pass.rows.back().liner;
+  const auto &m = r.main.summary;
+  return std::string(kRunSummaryHeader) + "\n" +
+         run_summary_row({m.peak_friction_force, m.peak_time, m.breakaway_time, m.steady_time, m.steady_mu,
+                          wear_volume}) +
+         "\n";
+}
+
+std::string rings_csv_text(const PistonRingCase &c) {
+  std::string text =
+      "ring,groove_position_m,groove_diameter_m,land_width_m,land_stiffness_land_N_m,land_stiffness_ring_N_m,"
+      "land_stiffness_N_m,land_damping_N_s_m,mass_kg,elastic_pressure_Pa,normal_load_N,crown_height_m\n";
+  for (const auto &ring : c.rings) {
+    const auto &rp = ring.parameters;
+    text += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n",
+                        ring.name, ring.position, ring.groove_diameter, ring.land_width,
+                        ring.land ? ring.land->land : 0.0, ring.land ? ring.land->ring : 0.0, rp.land_stiffness,
+                        rp.land_damping, rp.ring_mass, rp.elastic_pressure, rp.elastic_pressure * rp.contact_area(),
+                        ring.wear_settings.crown_height);
+  }
+  return text;
+}
+
+std::string liner_csv_text(const PistonRingCase &c, const continuum::RingLinerWear &wear) {
+  const double tdc = c.parameters.crank.top_dead_centre();
+  std::string text = "x_m,distance_from_tdc_m,wear_depth_m\n";
+  for (int j = 0; j < c.wear_settings.liner_cells; ++j) {
+    const double x = wear.liner_cell_centre(j);
+    text += fmt::format("{:.12g},{:.12g},{:.12g}\n", x, tdc - x, wear.liner_wear()[j]);
+  }
+  return text;
+}
+
+std::string face_csv_text(const PistonRingCase &c, const continuum::RingLinerWear &w, const PistonRingSample &last) {
+  const auto contact = w.pressure(last.ring_position, last.normal_load);
+  std::string text = "z_m,crown_m,wear_depth_m,final_pressure_Pa\n";
+  for (int i = 0; i < w.settings().ring_cells; ++i) {
+    const double z = w.ring_cell_centre(i), u = 2.0 * z / c.parameters.ring_width;
+    text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g}\n", z, w.settings().crown_height * u * u, w.ring_wear()[i],
+                        contact.pressure[i]);
+  }
+  return text;
+}
+
+std::string sweep_csv_text(const std::vector<SweepRow> &sweep) {
+  std::string text = "mu0,t_s,friction_force_N,land_force_N,speed_m_s,state_slip\n";
+  for (const auto &row : sweep)
+    for (const auto &s : row.run.pack)
+      text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{}\n", row.mu0, s.t, s.friction_force,
+                          s.land_force, s.speed, s.state == continuum::ContactState::Slip ? 1 : 0);
+  return text;
+}
+
+// The CSV files, staged; returns their names in order.
+std::vector<std::string> write_csv(StagedOutput &out, const PistonRingCase &c, const Computed &r) {
+  const bool pack = c.rings.size() > 1, law = c.friction->state_law() != nullptr;
   std::vector<std::string> written;
-  if (pack) {
-    out.write("piston_ring.csv", pack_csv_text(c, main, passes));
-    written.push_back("piston_ring.csv");
-    for (std::size_t k = 0; k < c.rings.size(); ++k) {
-      const std::string name = "piston_ring_" + c.rings[k].name + ".csv";
-      out.write(name, csv_text(main.grid[k], passes[k].rows, law != nullptr));
-      written.push_back(name);
-    }
-  } else {
-    out.write("piston_ring.csv", csv_text(main.grid.front(), passes.front().rows, law != nullptr));
-    written.push_back("piston_ring.csv");
-  }
-  {
-    double wear_volume = 0.0;  // ring faces and liner at the end of the run
-    for (const auto &pass : passes) wear_volume += pass.rows.back().ring + pass.rows.back().liner;
-    const auto &m = main.summary;
-    out.write("piston_ring_summary.csv",
-              std::string(kRunSummaryHeader) + "\n" +
-                  run_summary_row({m.peak_friction_force, m.peak_time, m.breakaway_time, m.steady_time, m.steady_mu,
-                                   wear_volume}) +
-                  "\n");
-    written.push_back("piston_ring_summary.csv");
-  }
-  {
-    std::string text =
-        "ring,groove_position_m,groove_diameter_m,land_width_m,land_stiffness_land_N_m,land_stiffness_ring_N_m,"
-        "land_stiffness_N_m,land_damping_N_s_m,mass_kg,elastic_pressure_Pa,normal_load_N,crown_height_m\n";
-    for (const auto &ring : c.rings) {
-      const auto &rp = ring.parameters;
-      text += fmt::format("{},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n",
-                          ring.name, ring.position, ring.groove_diameter, ring.land_width,
-                          ring.land ? ring.land->land : 0.0, ring.land ? ring.land->ring : 0.0, rp.land_stiffness,
-                          rp.land_damping, rp.ring_mass, rp.elastic_pressure, rp.elastic_pressure * rp.contact_area(),
-                          ring.wear_settings.crown_height);
-    }
-    out.write("piston_ring_rings.csv", text);
-    written.push_back("piston_ring_rings.csv");
-  }
-  {
-    const double tdc = p.crank.top_dead_centre();
-    std::string text = "x_m,distance_from_tdc_m,wear_depth_m\n";
-    for (int j = 0; j < c.wear_settings.liner_cells; ++j) {
-      const double x = wear.front().liner_cell_centre(j);
-      text += fmt::format("{:.12g},{:.12g},{:.12g}\n", x, tdc - x, wear.front().liner_wear()[j]);
-    }
-    out.write("piston_ring_liner.csv", text);
-    written.push_back("piston_ring_liner.csv");
-  }
-  for (std::size_t k = 0; k < c.rings.size(); ++k) {
-    const auto &last = main.grid[k].back();
-    const auto &w = wear[k];
-    const auto contact = w.pressure(last.ring_position, last.normal_load);
-    std::string text = "z_m,crown_m,wear_depth_m,final_pressure_Pa\n";
-    for (int i = 0; i < w.settings().ring_cells; ++i) {
-      const double z = w.ring_cell_centre(i), u = 2.0 * z / p.ring_width;
-      text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g}\n", z, w.settings().crown_height * u * u, w.ring_wear()[i],
-                          contact.pressure[i]);
-    }
-    const std::string name = k == 0 ? "piston_ring_face.csv" : "piston_ring_face_" + c.rings[k].name + ".csv";
+  const auto write = [&](const std::string &name, const std::string &text) {
     out.write(name, text);
     written.push_back(name);
+  };
+  if (pack) {
+    write("piston_ring.csv", pack_csv_text(c, r.main, r.passes));
+    for (std::size_t k = 0; k < c.rings.size(); ++k)
+      write("piston_ring_" + c.rings[k].name + ".csv", csv_text(r.main.grid[k], r.passes[k].rows, law));
+  } else {
+    write("piston_ring.csv", csv_text(r.main.grid.front(), r.passes.front().rows, law));
   }
-  if (!sweep.empty()) {
-    std::string text = "mu0,t_s,friction_force_N,land_force_N,speed_m_s,state_slip\n";
-    for (const auto &row : sweep)
-      for (const auto &s : row.run.pack)
-        text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{}\n", row.mu0, s.t, s.friction_force,
-                            s.land_force, s.speed, s.state == continuum::ContactState::Slip ? 1 : 0);
-    out.write("piston_ring_mu0.csv", text);
-    written.push_back("piston_ring_mu0.csv");
-  }
-  if (!o.no_plot) {
-    // The six panels show ring A (its own CSV in a pack) with the shared liner.
-    const std::string curve_csv = pack ? "piston_ring_A.csv" : "piston_ring.csv";
-    plot("plot_piston_ring.py", {"curve", out.file(curve_csv).string(), out.file("piston_ring_liner.csv").string(),
-                                 out.file("piston_ring_face.csv").string(), out.file("piston_ring.png").string(),
-                                 "--title", c.title + (pack ? " - ring A" : "")});
-    written.push_back("piston_ring.png");
-    if (!sweep.empty()) {
-      plot("plot_piston_ring.py", {"sweep", out.file("piston_ring_mu0.csv").string(),
-                                   out.file("piston_ring_mu0.png").string(), "--title",
-                                   c.title + (pack ? " - ring pack (sum)" : "")});
-      written.push_back("piston_ring_mu0.png");
-    }
-  }
-  std::vector<std::string> vtk_files;
+  write("piston_ring_summary.csv", summary_csv_text(r));
+  write("piston_ring_rings.csv", rings_csv_text(c));
+  write("piston_ring_liner.csv", liner_csv_text(c, r.wear.front()));
+  for (std::size_t k = 0; k < c.rings.size(); ++k)
+    write(k == 0 ? "piston_ring_face.csv" : "piston_ring_face_" + c.rings[k].name + ".csv",
+          face_csv_text(c, r.wear[k], r.main.grid[k].back()));
+  if (!r.sweep.empty()) write("piston_ring_mu0.csv", sweep_csv_text(r.sweep));
+  return written;
+}
+
+void plot_curves(const PistonRingCase &c, const Computed &r, StagedOutput &out, const PlotRunner &plot,
+                 std::vector<std::string> &written) {
+  // The six panels show ring A (its own CSV in a pack) with the shared liner.
+  const bool pack = c.rings.size() > 1;
+  const std::string curve_csv = pack ? "piston_ring_A.csv" : "piston_ring.csv";
+  plot("plot_piston_ring.py", {"curve", out.file(curve_csv).string(), out.file("piston_ring_liner.csv").string(),
+                               out.file("piston_ring_face.csv").string(), out.file("piston_ring.png").string(),
+                               "--title", c.title + (pack ? " - ring A" : "")});
+  written.push_back("piston_ring.png");
+  if (r.sweep.empty()) return;
+  plot("plot_piston_ring.py", {"sweep", out.file("piston_ring_mu0.csv").string(),
+                               out.file("piston_ring_mu0.png").string(), "--title",
+                               c.title + (pack ? " - ring pack (sum)" : "")});
+  written.push_back("piston_ring_mu0.png");
+}
+
+struct VtkWritten {
+  std::vector<std::string> frames, stress;  // staged names; stress: the destination of each series' index
+};
+
+VtkWritten write_vtk(const PistonRingCase &c, const Computed &r, const std::vector<LineStressReport> &stress,
+                     StagedOutput &out) {
+  VtkWritten v;
 #ifdef RUNIN_HAVE_VTK
-  vtk_files = write_frames(wear, passes, c.rings, c.circumferential_points, out.staging());
-  std::vector<std::string> stress_files;
+  v.frames = write_frames(r.wear, r.passes, c.rings, c.circumferential_points, out.staging());
   for (std::size_t k = 0; k < stress.size(); ++k) {
     const auto more = write_line_stress(stress[k], out.staging() / "vtk", k == 0 ? "subsurface" : "subsurface_" + c.rings[k].name);
-    stress_files.push_back(out.destination_of(more.back()).string());
+    v.stress.push_back(out.destination_of(more.back()).string());
   }
+#else
+  (void)c, (void)r, (void)stress, (void)out;
 #endif
-  out.commit();
+  return v;
+}
 
-  // One-screen summary.
-  const auto &s = main.summary;
+void print_kinematics(const PistonRingCase &c, const Computed &r) {
+  const auto &p = c.parameters;
   const double stroke = 2.0 * p.crank.crank_radius;
-  const auto &liner_wear = wear.front().liner_wear();
-  const auto max_liner = std::max_element(liner_wear.begin(), liner_wear.end());
-  const int max_j = static_cast<int>(max_liner - liner_wear.begin());
-  double ring_volume = 0.0, liner_volume = 0.0, archard = 0.0;
-  long updates = 0;
-  for (const auto &w : wear) {
-    ring_volume += w.ring_volume();
-    liner_volume += w.liner_volume();
-    archard += w.archard_volume();
-    updates += w.updates();
-  }
-  fmt::print("runin piston-ring: {}\n  {}\n", o.case_path, c.title);
-  fmt::print("  friction          {}\n", c.friction->description());
   if (p.motion == continuum::PistonMotion::Ramp)
     fmt::print("  kinematics        ramp: x from eq. 6.1 at {:g} deg before TDC to TDC ({:.6g} mm) in {:g} s; "
                "r = {:g} mm, l = {:g} mm\n",
@@ -741,15 +540,15 @@ int run(const Options &o, const PlotRunner &plot) {
     fmt::print("  kinematics        crank: eq. 6.1 at {:.6g} rpm from {:g} deg before TDC; r = {:g} mm, l = {:g} mm, "
                "stroke {:g} mm, {:.4g} revolutions\n",
                p.crank_speed * 60.0 / (2.0 * kPi), p.start_angle * 180.0 / kPi, 1e3 * p.crank.crank_radius,
-               1e3 * p.crank.link_length, 1e3 * stroke, main.pack.back().t * p.crank_speed / (2.0 * kPi));
+               1e3 * p.crank.link_length, 1e3 * stroke,
+               r.main.pack.back().t * p.crank_speed / (2.0 * kPi));
   fmt::print("  ring face         {}\n",
              c.wear_settings.contact == continuum::FaceContact::HalfPlane
                  ? fmt::format("elastic half-plane line contact (BEM, E* = {:.4g} GPa)", 1e-9 * c.wear_settings.contact_modulus)
                  : fmt::format("Winkler layer k_c = {:.4g} Pa/m", c.wear_settings.foundation_modulus));
-  fmt::print("  ring model        {}\n", pack ? fmt::format("ring pack of {} rings; friction = their sum", c.rings.size())
-                                            : std::string("one ring"));
-  for (std::size_t k = 0; k < c.rings.size(); ++k) {
-    const auto &ring = c.rings[k];
+  fmt::print("  ring model        {}\n", c.rings.size() > 1 ? fmt::format("ring pack of {} rings; friction = their sum", c.rings.size())
+                                                        : std::string("one ring"));
+  for (const auto &ring : c.rings) {
     const auto &rp = ring.parameters;
     const double natural = std::sqrt(rp.land_stiffness / rp.ring_mass) / (2.0 * kPi);
     const std::string land =
@@ -764,6 +563,12 @@ int run(const Options &o, const PlotRunner &plot) {
                1e-6 * rp.elastic_pressure, p.gas.empty() ? "" : " + gas table", rp.ring_mass, land,
                c.land_damping_ratio, natural, 1e3 * ring.position, 1e6 * ring.wear_settings.crown_height);
   }
+}
+
+void print_friction_and_wear(const PistonRingCase &c, const Computed &r) {
+  const auto &p = c.parameters;
+  const auto &s = r.main.summary;
+  const bool pack = c.rings.size() > 1;
   fmt::print("  break-away        {}\n", or_none(s.breakaway_time));
   fmt::print("  peak friction     {:.6g} N at t = {:.6g} s (liner{}); peak land force {:.6g} N\n", s.peak_friction_force,
              s.peak_time, pack ? ", sum of the rings" : "", s.peak_land_force);
@@ -772,73 +577,121 @@ int run(const Options &o, const PlotRunner &plot) {
   fmt::print("  steady mu         {:.6g}, friction force {:.6g} N\n", s.steady_mu, s.steady_friction_force);
   if (p.motion == continuum::PistonMotion::Crank)
     fmt::print("  pressure run-in   {} (cycle-max peak contact pressure within 1 % of the last cycle's from then on)\n",
-               or_none(pressure_settling_time(p, main.grid.front(), passes.front().rows)));
+               or_none(continuum::pressure_settling_time(p, r.main.grid.front(), r.passes.front().rows)));
   fmt::print("  sliding           {:.6g} m (ring A) in {} break-away and {} re-stick events\n",
-             main.grid.front().back().distance, main.breakaways, main.resticks);
-  if (law)
+             r.main.grid.front().back().distance, r.main.breakaways, r.main.resticks);
+  double ring_volume = 0.0, liner_volume = 0.0, archard = 0.0;
+  for (const auto &w : r.wear) {
+    ring_volume += w.ring_volume();
+    liner_volume += w.liner_volume();
+    archard += w.archard_volume();
+  }
+  if (c.friction->state_law())
     fmt::print("  wear volume       {:.6g} m^3 (ring{} {:.6g} by the law's wear_rate, liner {:.6g} by its "
                "counterface_wear_rate)\n",
                ring_volume + liner_volume, pack ? "s" : "", ring_volume, liner_volume);
   else
     fmt::print("  wear volume       {:.6g} m^3 (ring{} {:.6g}, liner {:.6g}); Archard k W s / H = {:.6g} m^3\n",
                ring_volume + liner_volume, pack ? "s" : "", ring_volume, liner_volume, archard);
+  const auto &liner_wear = r.wear.front().liner_wear();
+  const auto max_liner = std::max_element(liner_wear.begin(), liner_wear.end());
   fmt::print("  liner wear        max {:.6g} um at {:.6g} mm from TDC\n", 1e6 * *max_liner,
-             1e3 * (p.crank.top_dead_centre() - wear.front().liner_cell_centre(max_j)));
+             1e3 * (p.crank.top_dead_centre() -
+                    r.wear.front().liner_cell_centre(static_cast<int>(max_liner - liner_wear.begin()))));
   for (std::size_t k = 0; k < c.rings.size(); ++k)
     fmt::print("  ring {} pressure   peak {:.6g} MPa at start -> {:.6g} MPa at end, contact width {:.4g} -> {:.4g} mm\n",
-               c.rings[k].name, 1e-6 * passes[k].initial_peak, 1e-6 * passes[k].rows.back().peak,
-               1e3 * passes[k].rows.front().width, 1e3 * passes[k].rows.back().width);
-  std::vector<std::string> warnings;
-  if (law) {
-    fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m); the ring face is the rough body, the "
-               "liner the counterface\n",
-               law->path, law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
-    for (std::size_t k = 0; k < c.rings.size(); ++k) {
-      const auto &rows = passes[k].rows;
-      fmt::print("  ring {} mu_eff     {:.6g} -> {:.6g} (pressure-weighted over the face cells); static {:.6g} ({}); "
-                 "h mean {:.4g} m, max {:.4g} m\n",
-                 c.rings[k].name, rows.front().mu_eff, rows.back().mu_eff, coupled->mu_static[k],
-                 law->mu_static ? "friction.mu_static" : "the law's peak at the initial pressures", rows.back().h_mean,
-                 rows.back().h_max);
-    }
-    fmt::print("  law lookups       {}\n", continuum::describe(coupled->use, *law->law));
-    if (auto w = continuum::out_of_range_warning(coupled->use, *law->law, law->policy); !w.empty())
-      warnings.push_back(std::move(w));
-    if (const auto cell = coupling::cell_scale(*law->law)) {
-      // narrowest: the unworn crowned face's contact; a face cell spans the bore's circumference
-      double width = passes.front().rows.front().width, node = 0.0;
-      for (std::size_t k = 0; k < c.rings.size(); ++k) {
-        width = std::min(width, passes[k].rows.front().width);
-        const double area = wear[k].ring_cell_width() * std::acos(-1.0) * c.rings[k].wear_settings.bore;
-        node = k == 0 ? area : std::min(node, area);
-      }
-      const coupling::ScaleSeparation sep{*cell, width, node};
-      fmt::print("  scale separation  {}\n", coupling::describe(sep));
-      if (auto w = coupling::scale_separation_warning(sep); !w.empty()) warnings.push_back(std::move(w));
-    }
+               c.rings[k].name, 1e-6 * r.passes[k].initial_peak, 1e-6 * r.passes[k].rows.back().peak,
+               1e3 * r.passes[k].rows.front().width, 1e3 * r.passes[k].rows.back().width);
+}
+
+void print_state_law(const PistonRingCase &c, const Computed &r, std::vector<std::string> &warnings) {
+  const auto *law = c.friction->state_law();
+  fmt::print("  state law         {} (p {:.4g} .. {:.4g} Pa, h 0 .. {:.4g} m); the ring face is the rough body, the "
+             "liner the counterface\n",
+             law->path, law->law->pressure().front(), law->law->pressure().back(), law->law->worn_depth().back());
+  for (std::size_t k = 0; k < c.rings.size(); ++k) {
+    const auto &rows = r.passes[k].rows;
+    fmt::print("  ring {} mu_eff     {:.6g} -> {:.6g} (pressure-weighted over the face cells); static {:.6g} ({}); "
+               "h mean {:.4g} m, max {:.4g} m\n",
+               c.rings[k].name, rows.front().mu_eff, rows.back().mu_eff, r.coupled->mu_static[k],
+               law->mu_static ? "friction.mu_static" : "the law's peak at the initial pressures", rows.back().h_mean,
+               rows.back().h_max);
   }
+  fmt::print("  law lookups       {}\n", continuum::describe(r.coupled->use, *law->law));
+  if (auto w = continuum::out_of_range_warning(r.coupled->use, *law->law, law->policy); !w.empty())
+    warnings.push_back(std::move(w));
+  if (const auto cell = coupling::cell_scale(*law->law)) {
+    // narrowest: the unworn crowned face's contact; a face cell spans the bore's circumference
+    double width = r.passes.front().rows.front().width, node = 0.0;
+    for (std::size_t k = 0; k < c.rings.size(); ++k) {
+      width = std::min(width, r.passes[k].rows.front().width);
+      const double area = r.wear[k].ring_cell_width() * std::acos(-1.0) * c.rings[k].wear_settings.bore;
+      node = k == 0 ? area : std::min(node, area);
+    }
+    const coupling::ScaleSeparation sep{*cell, width, node};
+    fmt::print("  scale separation  {}\n", coupling::describe(sep));
+    if (auto w = coupling::scale_separation_warning(sep); !w.empty()) warnings.push_back(std::move(w));
+  }
+}
+
+void print_sweep(const PistonRingCase &c, const std::vector<SweepRow> &sweep) {
+  if (sweep.empty()) return;
+  fmt::print("  mu0 sweep{}    {:>6} {:>12} {:>12} {:>12} {:>10}\n", c.rings.size() > 1 ? " (sum)" : "      ", "mu0",
+             "peak F (N)", "break-away", "steady", "steady mu");
+  for (const auto &row : sweep)
+    fmt::print("                    {:>6g} {:>12.6g} {:>12} {:>12} {:>10.4g}\n", row.mu0,
+               row.run.summary.peak_friction_force, or_none(row.run.summary.breakaway_time),
+               or_none(row.run.summary.steady_time), row.run.summary.steady_mu);
+}
+
+// One-screen summary.
+void print_summary(const Options &o, const PistonRingCase &c, const Computed &r,
+                   const std::vector<LineStressReport> &stress) {
+  fmt::print("runin piston-ring: {}\n  {}\n", o.case_path, c.title);
+  fmt::print("  friction          {}\n", c.friction->description());
+  print_kinematics(c, r);
+  print_friction_and_wear(c, r);
+  std::vector<std::string> warnings;
+  if (c.friction->state_law()) print_state_law(c, r, warnings);
   for (const auto &report : stress) print_line_stress(report, warnings);
   for (const auto &w : warnings) fmt::print("  {}\n", w);
-  fmt::print("  wear updates      {} (step {:.4g} m = {} x stable_slip_step)\n", updates, wear.front().step(),
+  long updates = 0;
+  for (const auto &w : r.wear) updates += w.updates();
+  fmt::print("  wear updates      {} (step {:.4g} m = {} x stable_slip_step)\n", updates, r.wear.front().step(),
              c.wear_settings.fixed_step > 0.0 ? std::string("fixed, not") : fmt::format("{:g}", c.wear_settings.step_safety));
-  fmt::print("  CVODE             {} steps\n", main.cvode_steps);
-  if (!sweep.empty()) {
-    fmt::print("  mu0 sweep{}    {:>6} {:>12} {:>12} {:>12} {:>10}\n", pack ? " (sum)" : "      ", "mu0", "peak F (N)",
-               "break-away", "steady", "steady mu");
-    for (const auto &row : sweep)
-      fmt::print("                    {:>6g} {:>12.6g} {:>12} {:>12} {:>10.4g}\n", row.mu0,
-                 row.run.summary.peak_friction_force, or_none(row.run.summary.breakaway_time),
-                 or_none(row.run.summary.steady_time), row.run.summary.steady_mu);
-  }
+  fmt::print("  CVODE             {} steps\n", r.main.cvode_steps);
+  print_sweep(c, r.sweep);
+}
+
+void print_written(const StagedOutput &out, const std::vector<std::string> &written, const VtkWritten &vtk) {
   fmt::print("  wrote            ");
   for (std::size_t i = 0; i < written.size(); ++i)
     fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());
-  if (!vtk_files.empty())
-    fmt::print(", {} VTK files ({})", vtk_files.size(), out.destination_of(vtk_files.back()).string());
-#ifdef RUNIN_HAVE_VTK
-  for (const auto &f : stress_files) fmt::print(", {} (subsurface stress, 2 frames)", f);
-#endif
+  if (!vtk.frames.empty())
+    fmt::print(", {} VTK files ({})", vtk.frames.size(), out.destination_of(vtk.frames.back()).string());
+  for (const auto &f : vtk.stress) fmt::print(", {} (subsurface stress, 2 frames)", f);
   fmt::print("\n");
+}
+
+int run(const Options &o, const PlotRunner &plot) {
+  if (is_lubricated_ring_case(o.case_path))   // [lubrication]: the mixed-lubrication run-in
+    return run_lubricated_piston_ring(o.case_path, o.output_dir, o.law_path, o.no_plot, plot);
+  const PistonRingCase c = read_piston_ring_case(o.case_path, o.law_path);
+  const Computed r = compute(c);
+
+  // Everything is computed; the output set is staged and moved in only when complete.
+  StagedOutput out(o.output_dir, {"piston_ring.csv", "piston_ring_summary.csv", "piston_ring_?.csv", "piston_ring_rings.csv",
+                                  "piston_ring_liner.csv", "piston_ring_face.csv", "piston_ring_face_?.csv",
+                                  "piston_ring_mu0.csv", "piston_ring.png", "piston_ring_mu0.png", "vtk/liner.pvd",
+                                  "vtk/liner_*.vts", "vtk/ring_face.pvd", "vtk/ring_face_*.vts", "vtk/ring_face_?.pvd",
+                                  "vtk/subsurface.pvd", "vtk/subsurface_*.vts", "vtk/subsurface_?.pvd"});
+  const std::vector<LineStressReport> stress = subsurface_stress(c, r.main, r.wear, r.passes);
+  std::vector<std::string> written = write_csv(out, c, r);
+  if (!o.no_plot) plot_curves(c, r, out, plot, written);
+  const VtkWritten vtk = write_vtk(c, r, stress, out);
+  out.commit();
+  print_summary(o, c, r, stress);
+  print_written(out, written, vtk);
   return 0;
 }
 

@@ -97,31 +97,27 @@ std::vector<std::string> write_face_series(const continuum::MixedPistonRing &rin
 
 }  // namespace
 
-int run_lubricated_piston_ring(const std::string &case_path, const std::string &output_dir,
-                               const std::optional<std::string> &law_path, bool no_plot, const PlotRunner &plot) {
-  const LubricatedRingCase c = read_lubricated_ring_case(case_path, law_path);
-  const auto &p = c.parameters;
-  continuum::MixedPistonRing ring(p, c.law, c.policy);
-  const auto t_start = std::chrono::steady_clock::now();
+namespace {
 
-  // Stribeck curve of the unworn ring first (steady sliding at fixed load)
+// Stribeck curve of the unworn ring (steady sliding at fixed load); empty without [stribeck].
+std::vector<continuum::RingStribeckPoint> ring_stribeck(const LubricatedRingCase &c, const continuum::MixedPistonRing &ring) {
   std::vector<continuum::RingStribeckPoint> stribeck;
+  if (!c.stribeck) return stribeck;
   coupling::RangeUse stribeck_use;
-  if (c.stribeck) {
-    stribeck = continuum::stribeck_sweep(ring, c.stribeck->load, c.stribeck->speed_min, c.stribeck->speed_max,
-                                         c.stribeck->points, &stribeck_use);
-    for (const auto &s : stribeck)
-      if (s.status != continuum::RingFilmStatus::Ok)
-        throw std::runtime_error(fmt::format("stribeck: {} at U = {:.6g} m/s", continuum::to_string(s.status), s.speed));
-  }
+  stribeck = continuum::stribeck_sweep(ring, c.stribeck->load, c.stribeck->speed_min, c.stribeck->speed_max,
+                                       c.stribeck->points, &stribeck_use);
+  for (const auto &s : stribeck)
+    if (s.status != continuum::RingFilmStatus::Ok)
+      throw std::runtime_error(fmt::format("stribeck: {} at U = {:.6g} m/s", continuum::to_string(s.status), s.speed));
+  return stribeck;
+}
 
-  // run-in with progress (every 10 % of the cycles or 5 s)
-  std::vector<continuum::CycleSample> rows;
+// The run-in with progress lines (every 10 % of the cycles or 5 s).
+continuum::RunInReport ring_run_in(const LubricatedRingCase &c, continuum::MixedPistonRing &ring,
+                                       std::vector<continuum::CycleSample> &rows) {
   auto last_print = std::chrono::steady_clock::now();
   long next_tenth = 1;
-  fmt::print("runin piston-ring (lubricated): {}\n  {}\n", case_path, c.title);
-  std::fflush(stdout);
-  const auto report = continuum::run_in(ring, c.run, [&](const continuum::CycleSample &s) {
+  auto report = continuum::run_in(ring, c.run, [&](const continuum::CycleSample &s) {
     rows.push_back(s);
     const long done = s.cycle + s.jump;
     const auto now = std::chrono::steady_clock::now();
@@ -134,11 +130,14 @@ int run_lubricated_piston_ring(const std::string &case_path, const std::string &
     }
   });
   if (!report.ok()) throw std::runtime_error("lubricated run-in: " + report.message);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  return report;
+}
 
-  StagedOutput out(output_dir, {"lubricated.csv", "lubricated_cycle.csv", "stribeck.csv", "lubricated.png",
-                                "stribeck.png", "vtk/lubricated_first.pvd", "vtk/lubricated_first_*.vts",
-                                "vtk/lubricated_last.pvd", "vtk/lubricated_last_*.vts"});
+// The CSV files, the plots and the VTK face series, staged; returns the names written and the VTK files.
+std::pair<std::vector<std::string>, std::vector<std::string>> write_ring_outputs(
+    StagedOutput &out, const LubricatedRingCase &c, const continuum::MixedPistonRing &ring,
+    const continuum::RunInReport &report, const std::vector<continuum::CycleSample> &rows,
+    const std::vector<continuum::RingStribeckPoint> &stribeck, bool no_plot, const PlotRunner &plot) {
   std::vector<std::string> written;
   out.write("lubricated.csv", cycle_csv(rows));
   written.push_back("lubricated.csv");
@@ -161,19 +160,20 @@ int run_lubricated_piston_ring(const std::string &case_path, const std::string &
   }
   std::vector<std::string> vtk_files;
 #ifdef RUNIN_HAVE_VTK
-  {
-    // the first cycle's frames hold the unworn face, the last cycle's the face at its start
-    auto first = write_face_series(ring, report.first.frames, rows.front().time, out.staging(), "lubricated_first");
-    auto last = write_face_series(ring, report.last.frames, rows.back().time, out.staging(), "lubricated_last");
-    vtk_files.insert(vtk_files.end(), first.begin(), first.end());
-    vtk_files.insert(vtk_files.end(), last.begin(), last.end());
-  }
+  // the first cycle's frames hold the unworn face, the last cycle's the face at its start
+  auto first = write_face_series(ring, report.first.frames, rows.front().time, out.staging(), "lubricated_first");
+  auto last = write_face_series(ring, report.last.frames, rows.back().time, out.staging(), "lubricated_last");
+  vtk_files.insert(vtk_files.end(), first.begin(), first.end());
+  vtk_files.insert(vtk_files.end(), last.begin(), last.end());
+#else
+  (void)ring;
 #endif
-  out.commit();
+  return {written, vtk_files};
+}
 
-  const auto &first = rows.front(), &last = rows.back();
+void print_ring_set_up(const LubricatedRingCase &c, const continuum::CycleSample &first) {
+  const auto &p = c.parameters;
   const double circ = p.circumference();
-  const auto &law = *c.law;
   fmt::print("  ring              D = {:g} mm, face width {:g} mm, crown {:g} um, {:g} MPa ring tension "
              "(W = {:.4g} N){}; {} face nodes\n",
              1e3 * p.bore, 1e3 * p.face_width, 1e6 * p.crown_height, 1e-6 * p.elastic_pressure,
@@ -190,6 +190,12 @@ int run_lubricated_piston_ring(const std::string &case_path, const std::string &
              p.liner == continuum::LinerRoughness::Law ? "sqrt(2) rq(p, h) (liner runs in like the ring)"
                                                        : fmt::format("sqrt(rq(p, h)^2 + {:g} nm^2)", 1e9 * p.liner_sigma),
              1e9 * first.sigma);
+}
+
+void print_ring_run_in(const LubricatedRingCase &c, const continuum::MixedPistonRing &ring,
+                       const continuum::RunInReport &report, const std::vector<continuum::CycleSample> &rows) {
+  const auto &first = rows.front(), &last = rows.back();
+  const auto &law = *c.law;
   fmt::print("  regime            initial: min lambda over the cycle {:.3g}, asperity share {:.3g}, peak film "
              "pressure {:.4g} MPa, peak asperity pressure {:.4g} MPa\n",
              first.min_lambda, first.asperity_share, 1e-6 * first.peak_film_pressure,
@@ -214,16 +220,43 @@ int run_lubricated_piston_ring(const std::string &case_path, const std::string &
              ring.worn_volume(), report.booked_wear_volume);
   fmt::print("  law lookups       {} (friction.out_of_range = \"{}\")\n", continuum::describe(report.use, law),
              coupling::to_string(c.policy));
-  if (c.stribeck) {
-    std::size_t best = 0;
-    for (std::size_t k = 1; k < stribeck.size(); ++k)
-      if (stribeck[k].mu < stribeck[best].mu) best = k;
-    fmt::print("  stribeck          {} speeds {:g} .. {:g} m/s at W' = {:g} N/m: mu {:.4g} (share {:.3g}) -> min {:.4g} "
-               "at lambda {:.3g} (U {:.4g} m/s) -> {:.4g} (lambda {:.3g})\n",
-               stribeck.size(), c.stribeck->speed_min, c.stribeck->speed_max, c.stribeck->load, stribeck.front().mu,
-               stribeck.front().asperity_share, stribeck[best].mu, stribeck[best].lambda, stribeck[best].speed,
-               stribeck.back().mu, stribeck.back().lambda);
-  }
+}
+
+void print_ring_stribeck(const LubricatedRingCase &c, const std::vector<continuum::RingStribeckPoint> &stribeck) {
+  if (!c.stribeck) return;
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < stribeck.size(); ++k)
+    if (stribeck[k].mu < stribeck[best].mu) best = k;
+  fmt::print("  stribeck          {} speeds {:g} .. {:g} m/s at W' = {:g} N/m: mu {:.4g} (share {:.3g}) -> min {:.4g} "
+             "at lambda {:.3g} (U {:.4g} m/s) -> {:.4g} (lambda {:.3g})\n",
+             stribeck.size(), c.stribeck->speed_min, c.stribeck->speed_max, c.stribeck->load, stribeck.front().mu,
+             stribeck.front().asperity_share, stribeck[best].mu, stribeck[best].lambda, stribeck[best].speed,
+             stribeck.back().mu, stribeck.back().lambda);
+}
+
+}  // namespace
+
+int run_lubricated_piston_ring(const std::string &case_path, const std::string &output_dir,
+                               const std::optional<std::string> &law_path, bool no_plot, const PlotRunner &plot) {
+  const LubricatedRingCase c = read_lubricated_ring_case(case_path, law_path);
+  continuum::MixedPistonRing ring(c.parameters, c.law, c.policy);
+  const auto t_start = std::chrono::steady_clock::now();
+  const auto stribeck = ring_stribeck(c, ring);
+  std::vector<continuum::CycleSample> rows;
+  fmt::print("runin piston-ring (lubricated): {}\n  {}\n", case_path, c.title);
+  std::fflush(stdout);
+  const auto report = ring_run_in(c, ring, rows);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+
+  StagedOutput out(output_dir, {"lubricated.csv", "lubricated_cycle.csv", "stribeck.csv", "lubricated.png",
+                                "stribeck.png", "vtk/lubricated_first.pvd", "vtk/lubricated_first_*.vts",
+                                "vtk/lubricated_last.pvd", "vtk/lubricated_last_*.vts"});
+  const auto [written, vtk_files] = write_ring_outputs(out, c, ring, report, rows, stribeck, no_plot, plot);
+  out.commit();
+
+  print_ring_set_up(c, rows.front());
+  print_ring_run_in(c, ring, report, rows);
+  print_ring_stribeck(c, stribeck);
   fmt::print("  run time          {:.3g} s\n", seconds);
   fmt::print("  wrote            ");
   for (std::size_t i = 0; i < written.size(); ++i) fmt::print("{} {}", i ? "," : "", out.destination(written[i]).string());

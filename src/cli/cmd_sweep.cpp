@@ -157,6 +157,88 @@ std::string csv_quote(const std::string &text) {
   return quoted + "\"";
 }
 
+// The keys to vary: --key, else the element's free parameters the case sets; each a positive number or array.
+std::vector<std::string> sweep_keys(const Options &o, const Element &element, const toml::table &base) {
+  std::vector<std::string> keys = o.keys;
+  if (keys.empty())
+    for (const char *key : element.free_parameters)
+      if (number_at(base, key)) keys.emplace_back(key);
+  if (keys.empty())
+    throw InputError(fmt::format("{}: sets none of the {} free parameters; name keys with --key", o.case_path,
+                                 element.command));
+  for (const auto &key : keys) {
+    const toml::node *node = base.at_path(key).node();
+    if (!node)
+      throw InputError(fmt::format("{}: key '{}': not set in the case file; a sweep varies a value the case sets",
+                                   o.case_path, key));
+    const auto values = numbers_at(base, key);
+    if (values.empty())
+      throw InputError(fmt::format(
+          "{}: key '{}': is {}, a sweep varies a real number or an array of them (write it with a decimal point)",
+          o.case_path, key, type_name(*node)));
+    for (double v : values)
+      if (!(v > 0.0))
+        throw InputError(fmt::format("{}: key '{}': a sweep over decades needs positive values", o.case_path, key));
+  }
+  return keys;
+}
+
+// Runs every case (the base case first: it validates every key, so a bad case stops there with the element's own
+// message) and reads its summary; a failed run keeps its last log line.
+void run_cases(const Options &o, const Element &element, const toml::table &base, std::vector<Run> &runs,
+               StagedOutput &out) {
+  for (std::size_t n = 0; n < runs.size(); ++n) {
+    Run &r = runs[n];
+    toml::table variant = base;
+    if (!r.key.empty()) scale_key(variant, r.key, r.factor);
+    out.write(r.case_name, to_toml(variant));
+    const fs::path run_dir = out.scratch(fmt::format("runs/{}", n)), log = out.scratch(fmt::format("runs/{}.log", n));
+    fs::create_directories(run_dir.parent_path());
+    const auto start = std::chrono::steady_clock::now();
+    const int status = run_element(o, out.file(r.case_name), run_dir, log);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (status == 0) {
+      r.summary = read_summary(run_dir / (std::string(element.prefix) + "_summary.csv"));
+    } else {
+      r.problem = last_line(log);
+      if (r.key.empty()) {
+        if (status == 2) throw InputError("sweep: the base case: " + r.problem);
+        throw std::runtime_error("sweep: the base case failed: " + r.problem);
+      }
+    }
+    fmt::print("runin sweep: [{}/{}] {} {} ({:.2f} s)\n", n + 1, runs.size(),
+               r.key.empty() ? std::string("base case") : fmt::format("{} = {:.6g} (x {:.4g})", r.key, r.value, r.factor),
+               r.summary ? "ok" : "FAILED: " + r.problem, r.seconds);
+    std::fflush(stdout);
+  }
+
+}
+
+// The table: the runs were queued key by key, smallest value first, after the base case; the table takes them in that
+// order, with the base case's row in the middle of each key's rows. Returns the number of failed runs.
+int sweep_table(const Options &o, const std::vector<std::string> &keys, const toml::table &base,
+                const std::vector<Run> &runs, std::string &csv) {
+  csv = std::string("key,factor,value,") + kRunSummaryHeader + ",case,status\n";
+  int failed = 0;
+  auto add_row = [&](const std::string &key, double factor, double value, const Run &r) {
+    csv += fmt::format("{},{:.12g},{:.12g},", key, factor, value);
+    csv += r.summary ? run_summary_row(*r.summary) : std::string(",,,,,");
+    csv += fmt::format(",{},{}\n", r.case_name, r.summary ? std::string("ok") : csv_quote("failed: " + r.problem));
+  };
+  std::size_t next = 1;
+  for (const auto &key : keys)
+    for (int i = 0; i < o.points; ++i) {
+      if (i == o.points / 2) {
+        add_row(key, 1.0, *number_at(base, key), runs.front());
+      } else {
+        const Run &r = runs[next++];
+        add_row(key, r.factor, r.value, r);
+        failed += !r.summary;
+      }
+    }
+  return failed;
+}
+
 int run_sweep(const Options &o, const PlotRunner &plot) {
   const Element *element = nullptr;
   for (const auto &e : elements())
@@ -174,27 +256,7 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
                      "run `runin piston-ring` once per value");
   base.erase("sweep");  // one run per case file: the element's own mu0 sweep is not part of this study
   absolute_file_paths(base, fs::absolute(o.case_path).parent_path());
-  std::vector<std::string> keys = o.keys;
-  if (keys.empty())
-    for (const char *key : element->free_parameters)
-      if (number_at(base, key)) keys.emplace_back(key);
-  if (keys.empty())
-    throw InputError(fmt::format("{}: sets none of the {} free parameters; name keys with --key", o.case_path,
-                                 element->command));
-  for (const auto &key : keys) {
-    const toml::node *node = base.at_path(key).node();
-    if (!node)
-      throw InputError(fmt::format("{}: key '{}': not set in the case file; a sweep varies a value the case sets",
-                                   o.case_path, key));
-    const auto values = numbers_at(base, key);
-    if (values.empty())
-      throw InputError(fmt::format(
-          "{}: key '{}': is {}, a sweep varies a real number or an array of them (write it with a decimal point)",
-          o.case_path, key, type_name(*node)));
-    for (double v : values)
-      if (!(v > 0.0))
-        throw InputError(fmt::format("{}: key '{}': a sweep over decades needs positive values", o.case_path, key));
-  }
+  const std::vector<std::string> keys = sweep_keys(o, *element, base);
 
   std::vector<double> factors;  // log-spaced over one span, centred on 1
   for (int i = 0; i < o.points; ++i)
@@ -208,53 +270,10 @@ int run_sweep(const Options &o, const PlotRunner &plot) {
       if (i != o.points / 2)
         runs.push_back({key, factors[i], *number_at(base, key) * factors[i], fmt::format("cases/{}_{}.toml", key, i),
                         std::nullopt, "", 0.0});
+  run_cases(o, *element, base, runs, out);
 
-  // The base case first: it validates every key, so a bad case stops here with the element's own message.
-  for (std::size_t n = 0; n < runs.size(); ++n) {
-    Run &r = runs[n];
-    toml::table variant = base;
-    if (!r.key.empty()) scale_key(variant, r.key, r.factor);
-    out.write(r.case_name, to_toml(variant));
-    const fs::path run_dir = out.scratch(fmt::format("runs/{}", n)), log = out.scratch(fmt::format("runs/{}.log", n));
-    fs::create_directories(run_dir.parent_path());
-    const auto start = std::chrono::steady_clock::now();
-    const int status = run_element(o, out.file(r.case_name), run_dir, log);
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (status == 0) {
-      r.summary = read_summary(run_dir / (std::string(element->prefix) + "_summary.csv"));
-    } else {
-      r.problem = last_line(log);
-      if (r.key.empty()) {
-        if (status == 2) throw InputError("sweep: the base case: " + r.problem);
-        throw std::runtime_error("sweep: the base case failed: " + r.problem);
-      }
-    }
-    fmt::print("runin sweep: [{}/{}] {} {} ({:.2f} s)\n", n + 1, runs.size(),
-               r.key.empty() ? std::string("base case") : fmt::format("{} = {:.6g} (x {:.4g})", r.key, r.value, r.factor),
-               r.summary ? "ok" : "FAILED: " + r.problem, r.seconds);
-    std::fflush(stdout);
-  }
-
-  std::string csv = std::string("key,factor,value,") + kRunSummaryHeader + ",case,status\n";
-  int failed = 0;
-  auto add_row = [&](const std::string &key, double factor, double value, const Run &r) {
-    csv += fmt::format("{},{:.12g},{:.12g},", key, factor, value);
-    csv += r.summary ? run_summary_row(*r.summary) : std::string(",,,,,");
-    csv += fmt::format(",{},{}\n", r.case_name, r.summary ? std::string("ok") : csv_quote("failed: " + r.problem));
-  };
-  // the runs were queued key by key, smallest value first, after the base case: the table takes them in that
-  // order, with the base case's row in the middle of each key's rows
-  std::size_t next = 1;
-  for (const auto &key : keys)
-    for (int i = 0; i < o.points; ++i) {
-      if (i == o.points / 2) {
-        add_row(key, 1.0, *number_at(base, key), runs.front());
-      } else {
-        const Run &r = runs[next++];
-        add_row(key, r.factor, r.value, r);
-        failed += !r.summary;
-      }
-    }
+  std::string csv;
+  const int failed = sweep_table(o, keys, base, runs, csv);
   out.write("sweep.csv", csv);
   std::vector<std::string> written = {"sweep.csv"};
   if (!o.no_plot) {

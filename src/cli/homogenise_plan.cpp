@@ -85,16 +85,11 @@ void check_summit_list(const CaseReader &reader, const fs::path &file, Homogenis
 
 long derived_seed(long j) { return 4711 + 7919 * j; }
 
-HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
-  const toml::table root = parse_toml(path);
-  CaseReader reader(path, root, schema());
-  reader.reject_unknown_keys();
-  HomogeniseCase c;
-  c.path = path;
-  c.title = reader.text("title", "");
+namespace {
 
-  // [material]: a RunIn coefficient file (relative: beside the case file, else the current directory, else the
-  // RunIn source tree, the last two with a note; find_case_file)
+// [material]: a RunIn coefficient file (relative: beside the case file, else the current directory, else the RunIn
+// source tree, the last two with a note; find_case_file) and the two bodies' materials in it.
+void read_cell_materials(const CaseReader &reader, HomogeniseCase &c) {
   const std::string file = required_text(reader, "material.file");
   const fs::path resolved = find_case_file(reader, "material.file", file);
   c.material_file = fs::absolute(resolved).lexically_normal().string();
@@ -110,6 +105,41 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
       reader.fail(key, e.what());
     }
   }
+}
+
+// grid.acceleration: one number, or one per pressure; 1 (none) when absent.
+void read_acceleration(const CaseReader &reader, const toml::table &root, HomogeniseCase &c) {
+  const bool is_array = root.at_path("grid.acceleration").is_array();
+  if (!reader.has("grid.acceleration")) {
+    c.acceleration.assign(c.pressures.size(), 1.0);
+  } else {
+    // one number, or one per pressure
+    if (is_array)
+      c.acceleration = reader.numbers("grid.acceleration");
+    else
+      c.acceleration.assign(c.pressures.size(), reader.number("grid.acceleration"));
+    if (is_array && c.acceleration.size() != c.pressures.size())
+      reader.fail("grid.acceleration", fmt::format("has {} values; give one number or one per pressure ({})",
+                                                   c.acceleration.size(), c.pressures.size()));
+    for (std::size_t i = 0; i < c.acceleration.size(); ++i)
+      if (!(c.acceleration[i] >= 1.0))
+        reader.fail("grid.acceleration", fmt::format("{}must be >= 1 (a factor on the Archard k), got {:g}",
+                                                     is_array ? fmt::format("element {}: ", i) : std::string(),
+                                                     c.acceleration[i]));
+  }
+}
+
+}  // namespace
+
+HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
+  const toml::table root = parse_toml(path);
+  CaseReader reader(path, root, schema());
+  reader.reject_unknown_keys();
+  HomogeniseCase c;
+  c.path = path;
+  c.title = reader.text("title", "");
+
+  read_cell_materials(reader, c);
 
   // [surface]
   c.R = reader.positive("surface.R", c.R);
@@ -139,24 +169,7 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   const long seeds = reader.positive_integer("grid.seeds", 3, 100);
   for (long j = 0; j < seeds; ++j) c.seeds.push_back(derived_seed(j));
 
-  const bool is_array = root.at_path("grid.acceleration").is_array();
-  if (!reader.has("grid.acceleration")) {
-    c.acceleration.assign(c.pressures.size(), 1.0);
-  } else {
-    // one number, or one per pressure
-    if (is_array)
-      c.acceleration = reader.numbers("grid.acceleration");
-    else
-      c.acceleration.assign(c.pressures.size(), reader.number("grid.acceleration"));
-    if (is_array && c.acceleration.size() != c.pressures.size())
-      reader.fail("grid.acceleration", fmt::format("has {} values; give one number or one per pressure ({})",
-                                                   c.acceleration.size(), c.pressures.size()));
-    for (std::size_t i = 0; i < c.acceleration.size(); ++i)
-      if (!(c.acceleration[i] >= 1.0))
-        reader.fail("grid.acceleration", fmt::format("{}must be >= 1 (a factor on the Archard k), got {:g}",
-                                                     is_array ? fmt::format("element {}: ", i) : std::string(),
-                                                     c.acceleration[i]));
-  }
+  read_acceleration(reader, root, c);
   c.depth = reader.positive("grid.depth");
   if (c.depth >= c.R) reader.fail("grid.depth", "must be below surface.R");
   c.depth_points = reader.positive_integer("grid.depth_points", c.depth_points, 10000);

@@ -29,13 +29,10 @@ continuum::SlidingFriction friction_with_mu0(const JournalBearingCase &c, double
   return friction_with_static_coefficient(*c.friction, c.friction_model, mu0);
 }
 
-JournalBearingCase read_journal_bearing_case(const std::string &path, const std::optional<std::string> &law_path) {
-  const CaseReader reader(path, parse_toml(path), kSchema);
-  reader.reject_unknown_keys();
+namespace {
 
-  JournalBearingCase c;
-  c.path = path;
-  c.title = reader.text("title", path);
+// [bearing] and [contact]: the bore, the load on each half, the contact arc and its nodes, the named materials.
+void read_bearing(const CaseReader &reader, const std::string &path, JournalBearingCase &c) {
   auto &p = c.parameters;
   auto &b = p.bore;
   b.shaft_radius = reader.positive("bearing.shaft_radius");
@@ -70,7 +67,12 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
     c.shaft_material_name = named->name_b;
     named->copy_strengths(c.bearing_material, c.shaft_material);
   }
+}
 
+// [drive] and [shaft]: the prescribed rotation and the torsional coupling (the shaft's G J / L unless overridden).
+void read_drive(const CaseReader &reader, JournalBearingCase &c) {
+  auto &p = c.parameters;
+  const auto &b = p.bore;
   p.ramp_angle = reader.number("drive.ramp_angle", 1.0);
   p.ramp_time = reader.positive("drive.ramp_time", 2.0);
   p.run_speed = reader.number("drive.run_speed", 0.0);
@@ -93,8 +95,11 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   p.coupling_stiffness = c.stiffness_overridden ? reader.positive("drive.stiffness") : c.shaft_stiffness;
   const double damping_ratio = reader.non_negative("drive.damping_ratio", 0.0);
   p.coupling_damping = 2.0 * damping_ratio * std::sqrt(p.coupling_stiffness * p.inertia);
+}
 
-  const bool state_law = reader.has("friction.model") && reader.text("friction.model", "") == "state_law";
+// [wear]: Archard's law of the bore, or none besides the state law's; the wear step.
+void read_bearing_wear(const CaseReader &reader, JournalBearingCase &c, bool state_law) {
+  auto &p = c.parameters;
   if (state_law) {
     // One wear law: the state law's wear_rate wears the bore (doc/state_law_continuum.md).
     for (const char *key : {"wear.coefficient", "wear.hardness", "wear.form"})
@@ -116,18 +121,9 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
     reader.fail("wear.step_fraction", "must be in [0.01, 1) (the explicit wear step is unstable from 1 on), got " +
                                           CaseReader::format(c.run.wear_step_fraction));
   c.run.fixed_wear_step = reader.has("wear.fixed_step") ? reader.positive("wear.fixed_step") : 0.0;
+}
 
-  c.friction_model =
-      reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
-  c.friction = read_friction(reader, law_path);
-  check_law_materials(reader, *c.friction, law_path, "contact.bearing_material", c.bearing_material_name, "contact.shaft_material", c.shaft_material_name);
-  c.alpha = c.friction->speed_coefficient();
-  if (c.friction_model == "static_kinetic") {
-    const double mu_static = reader.number("friction.mu_static");
-    c.kinetic_to_static = mu_static > 0.0 ? reader.number("friction.mu_kinetic") / mu_static : 1.0;
-  }
-
-  auto &run = c.run;
+void read_bearing_run(const CaseReader &reader, continuum::JournalBearingRun &run) {
   run.t_end = reader.positive("run.t_end");
   run.output_interval = reader.positive("run.output_interval", 1e-3);
   if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
@@ -141,29 +137,56 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
   defaults.atol = 1e-10;
   defaults.max_steps = 100000;
   run.integrator = read_solver(reader, defaults);
+}
 
-  if (reader.has("sweep.mu0")) {
-    if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
-    if (c.friction_model == "law_file")
-      reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
-    c.sweep_mu0 = reader.numbers_at_most("sweep.mu0", CaseReader::kMaxSweepValues);
-    for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
-      if (c.sweep_mu0[i] < 0.0)
-        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0, got " + CaseReader::format(c.sweep_mu0[i]));
-      try {
-        friction_with_mu0(c, c.sweep_mu0[i]);
-      } catch (const std::invalid_argument &e) {
-        reader.fail("sweep.mu0", "element " + std::to_string(i) + ": " + e.what());
-      }
+void read_bearing_sweep(const CaseReader &reader, JournalBearingCase &c, bool state_law) {
+  if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
+  if (c.friction_model == "law_file")
+    reader.fail("sweep.mu0", "needs friction.model 'constant', 'static_kinetic' or 'feedback'");
+  c.sweep_mu0 = reader.numbers_at_most("sweep.mu0", CaseReader::kMaxSweepValues);
+  for (std::size_t i = 0; i < c.sweep_mu0.size(); ++i) {
+    if (c.sweep_mu0[i] < 0.0)
+      reader.fail("sweep.mu0", "element " + std::to_string(i) + ": must be >= 0, got " + CaseReader::format(c.sweep_mu0[i]));
+    try {
+      friction_with_mu0(c, c.sweep_mu0[i]);
+    } catch (const std::invalid_argument &e) {
+      reader.fail("sweep.mu0", "element " + std::to_string(i) + ": " + e.what());
     }
   }
+}
+
+}  // namespace
+
+JournalBearingCase read_journal_bearing_case(const std::string &path, const std::optional<std::string> &law_path) {
+  const CaseReader reader(path, parse_toml(path), kSchema);
+  reader.reject_unknown_keys();
+
+  JournalBearingCase c;
+  c.path = path;
+  c.title = reader.text("title", path);
+  read_bearing(reader, path, c);
+  read_drive(reader, c);
+  const bool state_law = reader.has("friction.model") && reader.text("friction.model", "") == "state_law";
+  read_bearing_wear(reader, c, state_law);
+
+  c.friction_model =
+      reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
+  c.friction = read_friction(reader, law_path);
+  check_law_materials(reader, *c.friction, law_path, "contact.bearing_material", c.bearing_material_name, "contact.shaft_material", c.shaft_material_name);
+  c.alpha = c.friction->speed_coefficient();
+  if (c.friction_model == "static_kinetic") {
+    const double mu_static = reader.number("friction.mu_static");
+    c.kinetic_to_static = mu_static > 0.0 ? reader.number("friction.mu_kinetic") / mu_static : 1.0;
+  }
+  read_bearing_run(reader, c.run);
+  if (reader.has("sweep.mu0")) read_bearing_sweep(reader, c, state_law);
   c.axial_points = static_cast<int>(reader.positive_integer("output.axial_points", 11));
   c.one_contact_comparison = reader.choice("output.one_contact_comparison", {"run", "skip"}, std::string("run")) == "run";
   if (c.axial_points < 2 || c.axial_points > 1000) reader.fail("output.axial_points", "must be in [2, 1000]");
 
   try {
-    p.validate();
-    run.validate();
+    c.parameters.validate();
+    c.run.validate();
   } catch (const std::invalid_argument &e) {
     reader.fail("bearing", e.what());  // every field is checked above; this is a safety net
   }

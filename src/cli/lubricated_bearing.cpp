@@ -43,22 +43,8 @@ struct LubricatedCase {
   int points = 50;
 };
 
-LubricatedCase read_case(const LubricatedOptions &o) {
-  const CaseReader reader(o.case_path, parse_toml(o.case_path), kSchema);
-  reader.reject_unknown_keys();
-  LubricatedCase c;
-  c.path = o.case_path;
-  c.title = reader.text("title", o.case_path);
-  auto &p = c.parameters;
-  p.radius = reader.positive("bearing.shaft_radius");
-  p.clearance = reader.positive("bearing.clearance");
-  p.length = reader.positive("bearing.length");
-  p.load = reader.positive("bearing.load");
-  const double E = reader.positive("bearing.youngs_modulus");
-  const double nu = reader.number("bearing.poisson_ratio");
-  if (!(nu > -1.0 && nu < 0.5)) reader.fail("bearing.poisson_ratio", "must be in (-1, 0.5), got " + CaseReader::format(nu));
-  p.effective_modulus = E / (2.0 * (1.0 - nu * nu));   // bore and journal of the same steel
-
+// [lubrication]: the oil, its supply, the sliding speed (constant or a table) and the film grid.
+void read_lubrication(const CaseReader &reader, continuum::MixedJournalBearingParameters &p) {
   p.viscosity = reader.positive("lubrication.viscosity");
   p.supply_pressure = reader.non_negative("lubrication.supply_pressure", 0.0);
   p.groove_angle = reader.number("lubrication.groove_angle", M_PI);
@@ -87,11 +73,11 @@ LubricatedCase read_case(const LubricatedOptions &o) {
     p.n_theta = static_cast<int>(grid[0]);
     p.n_axial = static_cast<int>(grid[1]);
   }
-  p.flow_factors = reader.choice("lubrication.flow_factors", {"on", "off"}, std::string("on")) == "on";
-  p.gamma = reader.positive("lubrication.gamma", 1.0);
-  if (p.gamma < 1.0 / 9.0 || p.gamma > 9.0) reader.fail("lubrication.gamma", "must be in [1/9, 9] (Patir & Cheng's fits)");
-  p.counterface_rough = reader.choice("lubrication.counterface", {"rough", "smooth"}, std::string("rough")) == "rough";
+}
 
+// [friction]: the state law (the only model) and its asperity statistics.
+void read_law(const CaseReader &reader, const LubricatedOptions &o, LubricatedCase &c) {
+  auto &p = c.parameters;
   const std::string model = reader.choice("friction.model", {"state_law"});
   (void)model;
   const std::string file = o.law_path ? *o.law_path : reader.text("friction.law", "");
@@ -111,6 +97,31 @@ LubricatedCase read_case(const LubricatedOptions &o) {
   p.policy = policy == "clamp" ? coupling::OutOfRange::Clamp
              : policy == "error" ? coupling::OutOfRange::Error
                                  : coupling::OutOfRange::Archard;
+}
+
+LubricatedCase read_case(const LubricatedOptions &o) {
+  const CaseReader reader(o.case_path, parse_toml(o.case_path), kSchema);
+  reader.reject_unknown_keys();
+  LubricatedCase c;
+  c.path = o.case_path;
+  c.title = reader.text("title", o.case_path);
+  auto &p = c.parameters;
+  p.radius = reader.positive("bearing.shaft_radius");
+  p.clearance = reader.positive("bearing.clearance");
+  p.length = reader.positive("bearing.length");
+  p.load = reader.positive("bearing.load");
+  const double E = reader.positive("bearing.youngs_modulus");
+  const double nu = reader.number("bearing.poisson_ratio");
+  if (!(nu > -1.0 && nu < 0.5)) reader.fail("bearing.poisson_ratio", "must be in (-1, 0.5), got " + CaseReader::format(nu));
+  p.effective_modulus = E / (2.0 * (1.0 - nu * nu));   // bore and journal of the same steel
+
+  read_lubrication(reader, p);
+  p.flow_factors = reader.choice("lubrication.flow_factors", {"on", "off"}, std::string("on")) == "on";
+  p.gamma = reader.positive("lubrication.gamma", 1.0);
+  if (p.gamma < 1.0 / 9.0 || p.gamma > 9.0) reader.fail("lubrication.gamma", "must be in [1/9, 9] (Patir & Cheng's fits)");
+  p.counterface_rough = reader.choice("lubrication.counterface", {"rough", "smooth"}, std::string("rough")) == "rough";
+
+  read_law(reader, o, c);
 
   c.run.depth_step_fraction = reader.number("wear.step_fraction", 0.5);
   if (!(c.run.depth_step_fraction > 0.0 && c.run.depth_step_fraction <= 1.0))
@@ -195,14 +206,12 @@ bool is_lubricated_case(const std::string &path) {
   return root.contains("lubrication");
 }
 
-int run_lubricated_bearing(const LubricatedOptions &o, const PlotRunner &plot) {
-  const LubricatedCase c = read_case(o);
-  const auto &p = c.parameters;
-  const continuum::MixedJournalBearingSystem system(p);
+namespace {
 
-  // Progress on stderr (a 1 h run takes tens of seconds): every 10 % of the simulated time.
-  std::vector<continuum::MixedSample> samples;
-  std::vector<continuum::MixedFrame> frames;
+// The run-in with progress on stderr (a 1 h run takes tens of seconds): every 10 % of the simulated time.
+continuum::MixedRunReport bearing_run_in(const LubricatedCase &c, const continuum::MixedJournalBearingSystem &system,
+                                         std::vector<continuum::MixedSample> &samples,
+                                         std::vector<continuum::MixedFrame> &frames) {
   const auto start = std::chrono::steady_clock::now();
   int next_tenth = 1;
   const auto report = continuum::run_in(
@@ -218,63 +227,52 @@ int run_lubricated_bearing(const LubricatedOptions &o, const PlotRunner &plot) {
         }
       },
       [&](const continuum::MixedFrame &f) { frames.push_back(f); });
-  if (!report.ok()) {
-    if (report.status == continuum::MixedRunStatus::EquilibriumFailed && samples.empty() &&
-        report.equilibrium_status == continuum::MixedStatus::GapCloses)
-      throw InputError(c.path + ": key 'bearing.load': the film and asperities cannot carry it before the gap closes "
-                       "(eccentricity would reach 1): " + report.equilibrium_message +
-                       "; lower the load or raise the speed or viscosity");
-    throw std::runtime_error(std::string("lubricated journal bearing: ") + continuum::to_string(report.status) + ": " +
-                             report.message);
-  }
-  const double run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (report.ok()) return report;
+  if (report.status == continuum::MixedRunStatus::EquilibriumFailed && samples.empty() &&
+      report.equilibrium_status == continuum::MixedStatus::GapCloses)
+    throw InputError(c.path + ": key 'bearing.load': the film and asperities cannot carry it before the gap closes "
+                     "(eccentricity would reach 1): " + report.equilibrium_message +
+                     "; lower the load or raise the speed or viscosity");
+  throw std::runtime_error(std::string("lubricated journal bearing: ") + continuum::to_string(report.status) + ": " +
+                           report.message);
+}
 
-  continuum::StribeckResult stribeck;
-  double stribeck_seconds = 0.0;
-  if (c.stribeck) {
-    const auto t0 = std::chrono::steady_clock::now();
-    stribeck = continuum::stribeck_sweep(system, system.initial_state(), c.speed_min, c.speed_max, c.points);
-    stribeck_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!stribeck.ok())
-      throw std::runtime_error(std::string("Stribeck sweep: ") + continuum::to_string(stribeck.status) + ": " +
-                               stribeck.message);
-  }
+std::string stribeck_text(const continuum::StribeckResult &stribeck) {
+  std::string t = "speed_m_s,hersey,sommerfeld,mu,mu_viscous,mu_boundary,lambda,asperity_share,eccentricity,"
+                  "attitude_rad,h_min_m\n";
+  for (const auto &q : stribeck.points)
+    t += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", q.speed,
+                     q.hersey, q.sommerfeld, q.mu, q.mu_viscous, q.mu_boundary, q.lambda, q.asperity_share,
+                     q.eccentricity, q.attitude, q.h_min);
+  return t;
+}
 
-  StagedOutput out(o.output_dir, {"lubricated.csv", "stribeck.csv", "lubricated.png", "stribeck.png",
-                                  "vtk/bore_film.pvd", "vtk/bore_film_*.vts"});
+// The CSV files and the plots, staged; returns their names in order.
+std::vector<std::string> write_bearing_csv(StagedOutput &out, const LubricatedOptions &o, const LubricatedCase &c,
+                                           const std::vector<continuum::MixedSample> &samples,
+                                           const continuum::StribeckResult &stribeck, const PlotRunner &plot) {
   std::string text = std::string(kColumns) + "\n";
   for (const auto &s : samples) text += row(s) + "\n";
   out.write("lubricated.csv", text);
   std::vector<std::string> written = {"lubricated.csv"};
   if (c.stribeck) {
-    std::string t = "speed_m_s,hersey,sommerfeld,mu,mu_viscous,mu_boundary,lambda,asperity_share,eccentricity,"
-                    "attitude_rad,h_min_m\n";
-    for (const auto &q : stribeck.points)
-      t += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g}\n", q.speed,
-                       q.hersey, q.sommerfeld, q.mu, q.mu_viscous, q.mu_boundary, q.lambda, q.asperity_share,
-                       q.eccentricity, q.attitude, q.h_min);
-    out.write("stribeck.csv", t);
+    out.write("stribeck.csv", stribeck_text(stribeck));
     written.push_back("stribeck.csv");
   }
-  if (!o.no_plot) {
+  if (o.no_plot) return written;
+  plot("plot_lubricated_bearing.py",
+       {"runin", out.file("lubricated.csv").string(), out.file("lubricated.png").string(), "--title", c.title});
+  written.push_back("lubricated.png");
+  if (c.stribeck) {
     plot("plot_lubricated_bearing.py",
-         {"runin", out.file("lubricated.csv").string(), out.file("lubricated.png").string(), "--title", c.title});
-    written.push_back("lubricated.png");
-    if (c.stribeck) {
-      plot("plot_lubricated_bearing.py",
-           {"stribeck", out.file("stribeck.csv").string(), out.file("stribeck.png").string(), "--title", c.title});
-      written.push_back("stribeck.png");
-    }
+         {"stribeck", out.file("stribeck.csv").string(), out.file("stribeck.png").string(), "--title", c.title});
+    written.push_back("stribeck.png");
   }
-  std::string vtk_note = "none (built without VTK)";
-#ifdef RUNIN_HAVE_VTK
-  const auto vtk_written = coupling::write_surface_series(surface_frames(p, frames), (out.staging() / "vtk").string(),
-                                                          "bore_film");
-  vtk_note = fmt::format("{} ({} frame(s): film_thickness, pressure, fill_fraction, worn_depth, asperity_pressure)",
-                         out.destination_of(vtk_written.back()).string(), frames.size());
-#endif
-  out.commit();
+  return written;
+}
 
+void print_bearing(const LubricatedCase &c, const std::vector<continuum::MixedSample> &samples) {
+  const auto &p = c.parameters;
   const auto &first = samples.front(), &last = samples.back();
   const auto &law = *p.law;
   double peak_film = 0.0, peak_asperity = 0.0;
@@ -282,7 +280,6 @@ int run_lubricated_bearing(const LubricatedOptions &o, const PlotRunner &plot) {
     peak_film = std::max(peak_film, s.peak_film_pressure);
     peak_asperity = std::max(peak_asperity, s.peak_asperity_pressure);
   }
-  fmt::print("runin journal-bearing (lubricated): {}\n  {}\n", c.path, c.title);
   fmt::print("  bearing           R = {:g} mm, c = {:g} um, L = {:g} mm, W = {:g} N (P = {:.4g} MPa); grid {} x {}\n",
              1e3 * p.radius, 1e6 * p.clearance, 1e3 * p.length, p.load, 1e-6 * p.mean_pressure(), p.n_theta, p.n_axial);
   fmt::print("  lubricant         viscosity {:g} Pa s, supply {:g} Pa at bore angle {:.4g} rad; speed {}\n", p.viscosity,
@@ -306,8 +303,47 @@ int run_lubricated_bearing(const LubricatedOptions &o, const PlotRunner &plot) {
              "{:.4g} nm{}); journal mean depth {:.4g} nm\n",
              1e9 * last.h_max, 1e9 * last.h_mean, 1e9 * last.bore_volume, 1e9 * law.worn_depth().back(),
              last.h_max > law.worn_depth().back() ? ": beyond it the law's last row holds" : "", 1e9 * last.shaft_depth);
+}
+
+}  // namespace
+
+int run_lubricated_bearing(const LubricatedOptions &o, const PlotRunner &plot) {
+  const LubricatedCase c = read_case(o);
+  const auto &p = c.parameters;
+  const continuum::MixedJournalBearingSystem system(p);
+  std::vector<continuum::MixedSample> samples;
+  std::vector<continuum::MixedFrame> frames;
+  const auto start = std::chrono::steady_clock::now();
+  const auto report = bearing_run_in(c, system, samples, frames);
+  const double run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  continuum::StribeckResult stribeck;
+  double stribeck_seconds = 0.0;
+  if (c.stribeck) {
+    const auto t0 = std::chrono::steady_clock::now();
+    stribeck = continuum::stribeck_sweep(system, system.initial_state(), c.speed_min, c.speed_max, c.points);
+    stribeck_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!stribeck.ok())
+      throw std::runtime_error(std::string("Stribeck sweep: ") + continuum::to_string(stribeck.status) + ": " +
+                               stribeck.message);
+  }
+
+  StagedOutput out(o.output_dir, {"lubricated.csv", "stribeck.csv", "lubricated.png", "stribeck.png",
+                                  "vtk/bore_film.pvd", "vtk/bore_film_*.vts"});
+  const std::vector<std::string> written = write_bearing_csv(out, o, c, samples, stribeck, plot);
+  std::string vtk_note = "none (built without VTK)";
+#ifdef RUNIN_HAVE_VTK
+  const auto vtk_written = coupling::write_surface_series(surface_frames(p, frames), (out.staging() / "vtk").string(),
+                                                          "bore_film");
+  vtk_note = fmt::format("{} ({} frame(s): film_thickness, pressure, fill_fraction, worn_depth, asperity_pressure)",
+                         out.destination_of(vtk_written.back()).string(), frames.size());
+#endif
+  out.commit();
+
+  fmt::print("runin journal-bearing (lubricated): {}\n  {}\n", c.path, c.title);
+  print_bearing(c, samples);
   fmt::print("  steps             {} wear steps, {} film solves, {:.3g} s\n", report.steps, report.film_solves, run_seconds);
-  fmt::print("  law lookups       {}\n", continuum::describe(report.range_use, law));
+  fmt::print("  law lookups       {}\n", continuum::describe(report.range_use, *p.law));
   if (c.stribeck) {
     const auto best = std::min_element(stribeck.points.begin(), stribeck.points.end(),
                                        [](const auto &a, const auto &b) { return a.mu < b.mu; });

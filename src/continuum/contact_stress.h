@@ -35,6 +35,19 @@ struct LineContactStress {
   BodyStress a, b;
 };
 
+// Subsurface stress at the start and the end of a run (doc/subsurface_stress.md). Start: the unworn contact, McEwen's
+// closed form on its Hertz contact when the solved peak pressure is within 5 % of Hertz p0 (else the influence
+// tier), with mu at break-away; end: the influence tier on the last solved (worn) pressure with the mu of the last
+// slip sample. mu is signed by the sliding direction.
+struct StartEndStress {
+  double mu_start = 0.0, mu_end = 0.0;
+  LineContactStress start, end;
+  double solved_peak = 0.0;          // Pa, peak of the solved unworn pressure
+  double hertz_peak = 0.0;           // Pa, Hertz p0 of the unworn contact; 0: not Hertzian in shape
+  bool closed_form = false;          // the start frame is the closed form
+  static constexpr double hertz_tolerance = 0.05;
+};
+
 // Hertzian line contact p = p0 sqrt(1 - (x - centre)^2/b^2): McEwen's closed form on points x points, the
 // section [centre - 1.5 b, centre + 1.5 b] x [0, 1.5 b] (x at cell centres).
 LineContactStress hertz_line_contact_stress(double peak_pressure, double half_width, double friction_coefficient,

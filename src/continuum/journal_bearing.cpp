@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "continuum/state_law_splitting.h"
+
 namespace runin::continuum {
 namespace {
 void require(bool ok, const std::string &what) {
@@ -103,6 +105,135 @@ void apply_wear(const JournalBearingSystem &sys, Surface &surface, double distan
 }  // namespace
 
 namespace {
+// friction.model = "state_law": the slow system of the splitting driver (state_law_splitting.h). Per half the node
+// states, the held kinetic and static coefficients and the shaft's worn volume. A slow step advances every half to
+// the sliding distance of a sample (node states and bore by the law, contact re-solve, mu_eff); the wear-step roots
+// of the fast stepper advance it the same way (advance_to), so a slow step never outgrows the stable wear step.
+class BearingStateLaw final : public SlowSystem<JournalBearingSample> {
+ public:
+  BearingStateLaw(const JournalBearingSystem &sys, std::vector<Surface> &surf, JournalBearingReport &rep,
+                  const JournalBearingRun &run)
+      : system_(sys), surfaces_(surf), report_(rep), wear_fraction_(run.wear_step_fraction),
+        fixed_wear_step_(run.fixed_wear_step) {}
+
+  std::vector<double> mu_kin, mu_stat;  // per half
+  double next_wear = 0.0;               // m, the sliding distance of the next wear-step root
+  bool root_changed = false;            // advanced at a root since the last restart
+
+  void start() override {
+    const auto *held = system_.friction().state_law();
+    const auto area = node_areas();
+    for (std::size_t h = 0; h < surfaces_.size(); ++h) {
+      laws_.emplace_back(held->law, held->policy, area.size());
+      mu_stat.push_back(held->mu_static ? *held->mu_static : laws_[h].peak_mu(surfaces_[h].contact.pressure, area));
+      mu_kin.push_back(laws_[h].mu_effective(surfaces_[h].contact.pressure, area));
+      counterface_volume_.push_back(0.0);
+    }
+    set_held();
+    report_.stable_wear_step = stable_step();
+    next_wear = wear_step();
+  }
+  // Operator splitting: the sample's friction is the one held over the interval that ends here; then the node
+  // states and the bore advance by the distance slid in it and the next interval gets the new mu_eff.
+  bool step(const JournalBearingSample &s) override {
+    if (!(s.distance > surfaces_[0].distance_at_update)) return false;
+    std::string message;
+    ++report_.wear_updates;
+    if (!advance_to(s.distance, message)) throw SlowStepError(SplitStatus::SlowFailure, "journal bearing: " + message);
+    return true;
+  }
+  // Advances every half to the sliding distance `distance`: node states and bore by the law, re-solve, mu_eff.
+  bool advance_to(double distance, std::string &message) {
+    const auto area = node_areas();
+    for (std::size_t h = 0; h < surfaces_.size(); ++h) {
+      Surface &surface = surfaces_[h];
+      const double ds = distance - surface.distance_at_update;
+      if (!(ds > 0.0)) continue;
+      const auto inc = laws_[h].advance(surface.contact.pressure, ds);
+      for (std::size_t i = 0; i < surface.wear.size(); ++i) {
+        surface.wear[i] += inc.body[i];
+        surface.committed_volume += inc.body[i] * area[i];
+        counterface_volume_[h] += inc.counterface[i] * area[i];
+      }
+      surface.distance_at_update = distance;
+      if (!solve_contact(system_, surface, message, static_cast<int>(h))) return false;
+      mu_kin[h] = laws_[h].mu_effective(surface.contact.pressure, area);
+    }
+    set_held();
+    next_wear = distance + wear_step();
+    return true;
+  }
+  // The sample's state-law columns (after its step).
+  void fill(JournalBearingSample &s) const {
+    s.wear_volume = 0.0;
+    double n = 0.0;
+    for (std::size_t h = 0; h < surfaces_.size(); ++h) {
+      JournalBearingHalfSample &half = s.half[h];
+      const auto &state = laws_[h].state();
+      const auto &pressure = surfaces_[h].contact.pressure;
+      half.wear_volume = surfaces_[h].committed_volume;
+      half.mu_eff = mu_kin[h];
+      half.counterface_volume = counterface_volume_[h];
+      int loaded_nodes = 0;
+      for (std::size_t i = 0; i < state.size(); ++i) {
+        half.h_max = std::max(half.h_max, state[i]);
+        if (pressure[i] > 0.0) {
+          half.h_mean += state[i];
+          ++loaded_nodes;
+        }
+      }
+      half.h_mean = loaded_nodes ? half.h_mean / loaded_nodes : 0.0;
+      s.wear_volume += half.wear_volume;
+      s.mu_eff += mu_kin[h] * surfaces_[h].normal_force;
+      n += surfaces_[h].normal_force;
+    }
+    s.mu_eff = n > 0.0 ? s.mu_eff / n : 0.0;
+  }
+  std::vector<double> node_mu(std::size_t h) const { return laws_[h].node_mu(surfaces_[h].contact.pressure); }
+  coupling::RangeUse use() const {
+    coupling::RangeUse use;
+    for (const auto &law : laws_) {
+      use.lookups += law.use().lookups;
+      use.below_pressure += law.use().below_pressure;
+      use.above_pressure += law.use().above_pressure;
+      use.beyond_depth += law.use().beyond_depth;
+    }
+    return use;
+  }
+
+ private:
+  std::vector<double> node_areas() const {
+    return std::vector<double>(static_cast<std::size_t>(system_.contact().nodes()),
+                               system_.contact().panel_length() * system_.parameters().bore.axial_width);
+  }
+  double stable_step() {  // 2 / (k_c max_i w_i/p_i) over the halves
+    double step = HUGE_VAL;
+    for (std::size_t h = 0; h < surfaces_.size(); ++h)
+      step = std::min(step, laws_[h].stable_contact_step(surfaces_[h].contact.pressure,
+                                                         system_.contact().contact_stiffness_per_area(), 1.0));
+    return step;
+  }
+  double wear_step() { return fixed_wear_step_ > 0.0 ? fixed_wear_step_ : wear_fraction_ * stable_step(); }
+  void set_held() {  // the shared friction's held values: normal-force-weighted, for the summary and mu_law
+    auto *held = system_.friction().state_law();
+    double n = 0.0, kin = 0.0, stat = 0.0;
+    for (std::size_t h = 0; h < surfaces_.size(); ++h) {
+      n += surfaces_[h].normal_force;
+      kin += mu_kin[h] * surfaces_[h].normal_force;
+      stat += mu_stat[h] * surfaces_[h].normal_force;
+    }
+    held->held_kinetic = n > 0.0 ? kin / n : 0.0;
+    held->held_static = n > 0.0 ? stat / n : 0.0;
+  }
+
+  const JournalBearingSystem &system_;
+  std::vector<Surface> &surfaces_;
+  JournalBearingReport &report_;
+  double wear_fraction_, fixed_wear_step_;
+  std::vector<NodeStateLaw> laws_;
+  std::vector<double> counterface_volume_;
+};
+
 // y = (theta, w, s, R_0[, R_1]); R_h is half h's friction-law state (feedback roughness), constant
 // otherwise. Both halves slide over the same shaft surface, so s and the wear-update points are
 // shared; pressure, wear and R are per half. The pressures are frozen between wear updates, which
@@ -116,12 +247,10 @@ struct JournalBearingHooks : StickSlipHooksBase {
   JournalBearingReport &report;
   double wear_step;
   double next_wear;
-  // State law (empty otherwise): per half the node states, the held kinetic and static coefficients, the shaft's
-  // worn volume; `changed` asks the loop for a restart after an update at an output sample.
-  std::vector<NodeStateLaw> laws;
-  std::vector<double> mu_kin, mu_stat, counterface_volume;
-  double fixed_wear_step = 0.0, wear_fraction = 0.5;
-  bool changed = false;
+  // State law (null otherwise): the splitting driver's slow system and its sample hook and restart flag.
+  BearingStateLaw *law = nullptr;
+  std::function<void(const JournalBearingSample &)> split_sample;
+  std::function<bool()> split_refresh;
   const JournalBearingObserver &observer;
   const JournalBearingFrameObserver &frames;
   std::vector<double> frame_times;
@@ -143,79 +272,22 @@ struct JournalBearingHooks : StickSlipHooksBase {
   }
   std::size_t halves() const { return surfaces.size(); }
   double half_static_limit(const double *y, std::size_t h) const {
-    if (!laws.empty()) return mu_stat[h] * surfaces[h].normal_force * radius;
+    if (law) return law->mu_stat[h] * surfaces[h].normal_force * radius;
     return friction.static_coefficient(y[3 + h]) * surfaces[h].normal_force * radius;
   }
   double half_slip_torque(const double *y, int dir, std::size_t h) const {
-    if (!laws.empty())
-      return dir * (mu_kin[h] + friction.speed_coefficient() * std::abs(radius * y[1])) * surfaces[h].normal_force *
-             radius;
+    if (law)
+      return dir * (law->mu_kin[h] + friction.speed_coefficient() * std::abs(radius * y[1])) *
+             surfaces[h].normal_force * radius;
     return dir * friction.kinetic(y[2], radius * y[1], y[3 + h]) * surfaces[h].normal_force * radius;
   }
-
-  // --- state law ---
-  std::vector<double> node_areas() const {
-    return std::vector<double>(static_cast<std::size_t>(system.contact().nodes()),
-                               system.contact().panel_length() * p.bore.axial_width);
+  // Restart after a slow step at a root or at a sample since the last restart (both flags consumed).
+  bool refresh(StickSlipState &) {
+    if (!law) return false;
+    const bool at_root = std::exchange(law->root_changed, false);
+    const bool at_sample = split_refresh();
+    return at_root || at_sample;
   }
-  double law_stable_step() {  // 2 / (k_c max_i w_i/p_i) over the halves
-    double step = HUGE_VAL;
-    for (std::size_t h = 0; h < halves(); ++h)
-      step = std::min(step, laws[h].stable_contact_step(surfaces[h].contact.pressure,
-                                                        system.contact().contact_stiffness_per_area(), 1.0));
-    return step;
-  }
-  double law_wear_step() { return fixed_wear_step > 0.0 ? fixed_wear_step : wear_fraction * law_stable_step(); }
-  void set_held() {  // the shared friction's held values: normal-force-weighted, for the summary and mu_law
-    auto *held = friction.state_law();
-    double n = 0.0, kin = 0.0, stat = 0.0;
-    for (std::size_t h = 0; h < halves(); ++h) {
-      n += surfaces[h].normal_force;
-      kin += mu_kin[h] * surfaces[h].normal_force;
-      stat += mu_stat[h] * surfaces[h].normal_force;
-    }
-    held->held_kinetic = n > 0.0 ? kin / n : 0.0;
-    held->held_static = n > 0.0 ? stat / n : 0.0;
-  }
-  void start_law(double fraction, double fixed) {
-    const auto *held = friction.state_law();
-    wear_fraction = fraction;
-    fixed_wear_step = fixed;
-    const auto area = node_areas();
-    for (std::size_t h = 0; h < halves(); ++h) {
-      laws.emplace_back(held->law, held->policy, area.size());
-      mu_stat.push_back(held->mu_static ? *held->mu_static : laws[h].peak_mu(surfaces[h].contact.pressure, area));
-      mu_kin.push_back(laws[h].mu_effective(surfaces[h].contact.pressure, area));
-      counterface_volume.push_back(0.0);
-    }
-    set_held();
-    report.stable_wear_step = law_stable_step();
-    wear_step = law_wear_step();
-    next_wear = wear_step;
-  }
-  // Advances every half to the sliding distance `distance`: node states and bore by the law, re-solve, mu_eff.
-  bool law_update(double distance, std::string &message) {
-    const auto area = node_areas();
-    for (std::size_t h = 0; h < halves(); ++h) {
-      Surface &surface = surfaces[h];
-      const double ds = distance - surface.distance_at_update;
-      if (!(ds > 0.0)) continue;
-      const auto inc = laws[h].advance(surface.contact.pressure, ds);
-      for (std::size_t i = 0; i < surface.wear.size(); ++i) {
-        surface.wear[i] += inc.body[i];
-        surface.committed_volume += inc.body[i] * area[i];
-        counterface_volume[h] += inc.counterface[i] * area[i];
-      }
-      surface.distance_at_update = distance;
-      if (!solve_contact(system, surface, message, static_cast<int>(h))) return false;
-      mu_kin[h] = laws[h].mu_effective(surface.contact.pressure, area);
-    }
-    set_held();
-    changed = true;
-    next_wear = distance + law_wear_step();
-    return true;
-  }
-  bool refresh(StickSlipState &) { return std::exchange(changed, false); }
   double static_limit(const double *y) const {
     double sum = 0.0;
     for (std::size_t h = 0; h < halves(); ++h) sum += half_static_limit(y, h);
@@ -245,7 +317,7 @@ struct JournalBearingHooks : StickSlipHooksBase {
 
   // Stick: a constant, so both phases have two roots.
   void extra_roots(double, const double *y, ContactState state, double *g) const {
-    g[0] = state == ContactState::Stick ? -1.0 : y[2] - next_wear;
+    g[0] = state == ContactState::Stick ? -1.0 : y[2] - (law ? law->next_wear : next_wear);
   }
   std::vector<int> extra_root_directions(ContactState state) const {
     return {state == ContactState::Stick ? 0 : +1};
@@ -253,7 +325,10 @@ struct JournalBearingHooks : StickSlipHooksBase {
   bool on_extra_roots(StickSlipState &s, const std::vector<int> &found, std::string &message) {
     if (s.state != ContactState::Slip || found[1] == 0) return true;
     ++report.wear_updates;
-    if (!laws.empty()) return law_update(s.y[2], message);
+    if (law) {
+      law->root_changed = true;
+      return law->advance_to(s.y[2], message);
+    }
     next_wear = s.y[2] + wear_step;
     for (std::size_t h = 0; h < halves(); ++h) {
       apply_wear(system, surfaces[h], s.y[2]);
@@ -262,7 +337,7 @@ struct JournalBearingHooks : StickSlipHooksBase {
     return true;
   }
 
-  void emit(const StickSlipState &st) {
+  JournalBearingSample sample(const StickSlipState &st) const {
     const double t = st.t;
     const std::vector<double> &y = st.y;
     JournalBearingSample s;
@@ -305,52 +380,29 @@ struct JournalBearingHooks : StickSlipHooksBase {
     s.friction_force = s.friction_torque / radius;
     s.mu = s.friction_force / s.normal_force;
     s.mu_law = friction.kinetic(y[2], 0.0, y[3]);
-    if (!laws.empty()) {
-      // Operator splitting: the sample's friction is the one held over the interval that ends here; then the
-      // node states and the bore advance by the distance slid in it and the next interval gets the new mu_eff.
-      if (y[2] > surfaces[0].distance_at_update) {
-        std::string message;
-        ++report.wear_updates;
-        if (!law_update(y[2], message)) throw std::runtime_error("journal bearing: " + message);
-      }
-      s.wear_volume = 0.0;
-      double n = 0.0;
-      for (std::size_t h = 0; h < halves(); ++h) {
-        JournalBearingHalfSample &half = s.half[h];
-        const auto &state = laws[h].state();
-        const auto &pressure = surfaces[h].contact.pressure;
-        half.wear_volume = surfaces[h].committed_volume;
-        half.mu_eff = mu_kin[h];
-        half.counterface_volume = counterface_volume[h];
-        int loaded_nodes = 0;
-        for (std::size_t i = 0; i < state.size(); ++i) {
-          half.h_max = std::max(half.h_max, state[i]);
-          if (pressure[i] > 0.0) {
-            half.h_mean += state[i];
-            ++loaded_nodes;
-          }
-        }
-        half.h_mean = loaded_nodes ? half.h_mean / loaded_nodes : 0.0;
-        s.wear_volume += half.wear_volume;
-        s.mu_eff += mu_kin[h] * surfaces[h].normal_force;
-        n += surfaces[h].normal_force;
-      }
-      s.mu_eff = n > 0.0 ? s.mu_eff / n : 0.0;
-    }
     s.roughness = y[3];
     s.sliding_speed = radius * s.journal_speed;
     s.distance = y[2];
     s.state = st.state;
-    observer(s);
+    return s;
+  }
+
+  void emit(const StickSlipState &st) {
+    const JournalBearingSample s = sample(st);
+    if (law)
+      split_sample(s);  // the slow step, then the observer (through the splitting driver)
+    else
+      observer(s);
+    const double t = st.t;
     while (frames && next_frame < frame_times.size() && t >= frame_times[next_frame] - round_off) {
       JournalBearingFrame f;
       f.t = t;
       for (std::size_t h = 0; h < halves(); ++h) {
         const Surface &surface = surfaces[h];
         std::vector<double> pressure = surface.contact.pressure, depth = surface.wear;
-        const double pending = y[2] - surface.distance_at_update;
+        const double pending = st.y[2] - surface.distance_at_update;
         for (std::size_t i = 0; i < depth.size(); ++i) depth[i] += system.wear_law().depth_rate(pressure[i]) * pending;
-        if (!laws.empty()) (h == 0 ? f.mu : f.upper_mu) = laws[h].node_mu(pressure);
+        if (law) (h == 0 ? f.mu : f.upper_mu) = law->node_mu(h);
         (h == 0 ? f.pressure : f.upper_pressure) = std::move(pressure);
         (h == 0 ? f.wear_depth : f.upper_wear_depth) = std::move(depth);
       }
@@ -359,6 +411,13 @@ struct JournalBearingHooks : StickSlipHooksBase {
     }
   }
 };
+
+// A failed split as the exception the state-law bearing has always thrown (a law lookup: std::out_of_range).
+[[noreturn]] void throw_split_failure(const SplitReport &split) {
+  if (split.status == SplitStatus::LawOutOfRange) throw std::out_of_range(split.message);
+  if (split.status == SplitStatus::InvalidState) throw std::invalid_argument(split.message);
+  throw std::runtime_error(split.message);
+}
 }  // namespace
 
 JournalBearingReport simulate(const JournalBearingSystem &system, const JournalBearingRun &run,
@@ -386,27 +445,39 @@ JournalBearingReport simulate(const JournalBearingSystem &system, const JournalB
   for (const auto &surface : surfaces) report.initial_pressure.push_back(surface.contact.pressure);
   const StickSlipGrid grid{run.t_end, run.output_interval, p.ramp_time, run.max_events};
   JournalBearingHooks hooks(system, surfaces, report, wear_step, wearing, observer, frames, run);
-  if (system.friction().state_law()) hooks.start_law(run.wear_step_fraction, run.fixed_wear_step);
-  StickSlipLoop<JournalBearingHooks> loop(hooks, grid, integrator, std::move(start), report);
-
-  const auto &s = loop.state();
-  if (hooks.breakaway_function(s.t, s.y.data()) > 0.0) {
-    loop.emit();
-    loop.break_away();
-  }
-  loop.run();
-  for (const auto &surface : surfaces) report.final_pressure.push_back(surface.contact.pressure);
-  if (!hooks.laws.empty()) {
-    coupling::RangeUse use;
-    for (const auto &law : hooks.laws) {
-      use.lookups += law.use().lookups;
-      use.below_pressure += law.use().below_pressure;
-      use.above_pressure += law.use().above_pressure;
-      use.beyond_depth += law.use().beyond_depth;
+  // The fast stepper: the stick/slip loop from the start (break-away at once if the drive is past the limit).
+  const auto fast = [&]() -> SolveReport {
+    StickSlipLoop<JournalBearingHooks> loop(hooks, grid, integrator, std::move(start), report);
+    const auto &s = loop.state();
+    if (hooks.breakaway_function(s.t, s.y.data()) > 0.0) {
+      loop.emit();
+      loop.break_away();
     }
-    report.range_use = use;
+    loop.run();
+    return report;
+  };
+  if (!system.friction().state_law()) {
+    fast();
+  } else {
+    BearingStateLaw law(system, surfaces, report, run);
+    hooks.law = &law;
+    const auto split = split_run<JournalBearingSample>(
+        law,
+        [&](const auto &on_sample, const auto &refresh) {
+          hooks.split_sample = on_sample;
+          hooks.split_refresh = refresh;
+          return fast();
+        },
+        [&](const JournalBearingSample &sample) {
+          JournalBearingSample s = sample;
+          law.fill(s);
+          observer(s);
+        });
+    if (split.status != SplitStatus::Success && split.status != SplitStatus::FastFailure) throw_split_failure(split);
+    report.range_use = law.use();
     report.state_law_static = system.friction().state_law()->held_static;
   }
+  for (const auto &surface : surfaces) report.final_pressure.push_back(surface.contact.pressure);
   return report;
 }
 
@@ -422,6 +493,45 @@ LineContactStress bore_hertz_stress(const BoreGeometry &bore, double load_per_le
   const double r_eff = hertz_effective_radius(bore.shaft_radius, bore.shaft_radius + bore.clearance);
   const double b = hertz_half_width(load_per_length, r_eff, bore.contact_modulus());
   return hertz_line_contact_stress(hertz_peak_pressure(load_per_length, b), b, mu, bearing, shaft, 0.0, points);
+}
+
+std::vector<StartEndStress> bore_start_end_stress(const JournalBearingParameters &p,
+                                                  const std::vector<JournalBearingSample> &samples,
+                                                  double start_friction_force, const JournalBearingReport &rep,
+                                                  const tribo::Material &bearing, const tribo::Material &shaft) {
+  std::vector<StartEndStress> out;
+  if (samples.empty() || rep.initial_pressure.size() != static_cast<std::size_t>(p.halves) ||
+      rep.final_pressure.size() != rep.initial_pressure.size())
+    return out;
+  const ConformalContact contact(p.bore);
+  const auto sign = [](double v) { return v < 0.0 ? -1.0 : 1.0; };
+  const JournalBearingSample *last_slip = nullptr, *first_slip = nullptr;
+  for (const auto &s : samples)
+    if (s.state == ContactState::Slip) {
+      if (!first_slip) first_slip = &s;
+      last_slip = &s;
+    }
+  const JournalBearingSample &end = last_slip ? *last_slip : samples.back();
+  const double dir_start = first_slip ? sign(first_slip->journal_speed) : 1.0;
+  const double mu_start = dir_start * start_friction_force / samples.front().normal_force;
+  for (int h = 0; h < p.halves; ++h) {
+    StartEndStress s;
+    s.mu_start = mu_start;
+    const auto &p_start = rep.initial_pressure[h];
+    s.solved_peak = *std::max_element(p_start.begin(), p_start.end());
+    const auto hertz = bore_hertz_stress(p.bore, p.half_load(h) / p.bore.axial_width, mu_start, bearing, shaft);
+    s.hertz_peak = hertz.peak_pressure;
+    s.closed_form = std::abs(s.solved_peak / hertz.peak_pressure - 1.0) <= StartEndStress::hertz_tolerance;
+    s.start = s.closed_form ? hertz : bore_contact_stress(contact, p_start, mu_start, bearing, shaft);
+    s.mu_end = sign(end.journal_speed) * std::abs(end.half[h].mu != 0.0 ? end.half[h].mu : end.mu);
+    // The symmetric set-up: the upper half's end state equals the lower's (computed once).
+    if (h == 1 && rep.final_pressure[1] == rep.final_pressure[0] && end.half[1].mu == end.half[0].mu)
+      s.end = out.front().end;
+    else
+      s.end = bore_contact_stress(contact, rep.final_pressure[h], s.mu_end, bearing, shaft);
+    out.push_back(std::move(s));
+  }
+  return out;
 }
 
 WearHistory wear_in(const JournalBearingSystem &system, double ds, int steps) {

@@ -184,6 +184,14 @@ JournalBearingSummary summarise(const std::vector<JournalBearingSample> &samples
 // Influence tier on a solved nodal pressure (any wear profile):
 LineContactStress bore_contact_stress(const ConformalContact &contact, const std::vector<double> &pressure, double mu,
                                       const tribo::Material &bearing, const tribo::Material &shaft, int points = 48);
+// Each half's subsurface stress at the start and the end of a run (StartEndStress; `samples` and `report` of the
+// run, `start_friction_force` its largest |F| up to the first slip sample). The shear's sign follows the journal's
+// turning direction; the end mu is the half's |mu| (the total's when the half's is 0) of the last slip sample.
+// Empty when the run has no samples or no pressures per half.
+std::vector<StartEndStress> bore_start_end_stress(const JournalBearingParameters &p,
+                                                  const std::vector<JournalBearingSample> &samples,
+                                                  double start_friction_force, const JournalBearingReport &report,
+                                                  const tribo::Material &bearing, const tribo::Material &shaft);
 // McEwen's closed form on the Hertz line contact of the unworn bore (R_eff = R (R + c) / c, E* of the bore)
 // under load_per_length.
 LineContactStress bore_hertz_stress(const BoreGeometry &bore, double load_per_length, double mu,

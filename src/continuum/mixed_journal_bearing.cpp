@@ -270,6 +270,7 @@ std::vector<double> pattern(const MixedEquilibrium &e)
 
 }    // namespace
 
+
 double MixedJournalBearingSystem::closing_eccentricity(const MixedWearState &state, double attitude) const
 {
   double eps_close = HUGE_VAL;
@@ -280,32 +281,109 @@ double MixedJournalBearingSystem::closing_eccentricity(const MixedWearState &sta
   return eps_close;
 }
 
-MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &state, double speed,
-                                                        const MixedEquilibrium *guess, double rel_tol) const
-{
-  const double W = p_.load, c = p_.clearance;
-  std::vector<double> initial = guess && !guess->film.film.pressure.empty() ? pattern(*guess) : std::vector<double>();
+namespace {
+
+// The balance solve's film evaluations at (eps, attitude): each warm-started from the last good film pattern,
+// counted; the first failure is kept (the solve stops with it).
+struct BalanceEvaluations {
+  BalanceEvaluations(const MixedJournalBearingSystem &s, const MixedWearState &w, double u, std::vector<double> guess)
+      : sys(s), state(w), speed(u), initial(std::move(guess)) {}
+  const MixedJournalBearingSystem &sys;
+  const MixedWearState &state;
+  double speed;
+  std::vector<double> initial;
   int solves = 0;
   MixedEquilibrium failure;
   bool failed = false;
-  auto eval = [&](double eps, double att) {
-    MixedEquilibrium e = evaluate(state, speed, eps, att, initial.empty() ? nullptr : &initial);
+
+  MixedEquilibrium operator()(double eps, double att) {
+    MixedEquilibrium e = sys.evaluate(state, speed, eps, att, initial.empty() ? nullptr : &initial);
     ++solves;
     if (e.ok()) initial = pattern(e);
     else if (!failed) failed = true, failure = e;
     return e;
-  };
-  auto residual = [&](const MixedEquilibrium &e, double r[2]) {
-    r[0] = (e.film_load + e.asperity_load - W) / W;
-    r[1] = e.perpendicular_load / W;
-  };
-  auto give_up = [&](MixedEquilibrium e, MixedStatus status, const std::string &message) {
+  }
+  MixedEquilibrium give_up(MixedEquilibrium e, MixedStatus status, const std::string &message) const {
     e.status = status;
     e.message = message;
     e.film_solves = solves;
     return e;
-  };
+  }
+  MixedEquilibrium give_up_failure() const { return give_up(failure, failure.status, failure.message); }
+  // (load balance, perpendicular force) relative to W
+  void residual(const MixedEquilibrium &e, double r[2]) const {
+    const double W = sys.parameters().load;
+    r[0] = (e.film_load + e.asperity_load - W) / W;
+    r[1] = e.perpendicular_load / W;
+  }
+};
 
+// Cold start: along the load line (attitude 0), the eccentricity at which film + asperities carry W
+// (solve_load_share on the control gap h = c (1 - eps)); then Newton turns the resultant onto the load line.
+// Sets x = (eps, 0) and returns the state there; `done` when that is the answer already (a failure).
+MixedEquilibrium cold_start(BalanceEvaluations &eval, double x[2], bool &done) {
+  const auto &sys = eval.sys;
+  const double W = sys.parameters().load, c = sys.parameters().clearance;
+  const double eps_top = sys.closing_eccentricity(eval.state, 0.0) * (1.0 - 1e-6);
+  std::map<double, MixedEquilibrium> memo;
+  auto at = [&](double h) -> const MixedEquilibrium & {
+    auto it = memo.find(h);
+    if (it != memo.end()) return it->second;
+    return memo.emplace(h, eval(1.0 - h / c, 0.0)).first->second;
+  };
+  const double sigma_ref = std::max(1e-12, sys.node_sigma(eval.state).front());
+  const auto share = tribo::solve_load_share(
+      W, [&](double h) { return at(h).film_load; },
+      [&](double h) { return at(h).asperity_load; }, sigma_ref, c * (1.0 - eps_top), c, 1e-6);
+  done = true;
+  if (eval.failed) return eval.give_up_failure();
+  if (share.status == tribo::LoadShareStatus::NotBracketed) {
+    // also with the resultant turned freely: the largest load the surfaces carry before they touch is below W
+    std::ostringstream m;
+    m.precision(6);
+    m << "film and asperities carry only " << share.film_load + share.asperity_load << " N of W = " << W
+      << " N before the gap closes (eccentricity " << 1.0 - share.h / c << ")";
+    return eval.give_up(at(share.h), MixedStatus::GapCloses, m.str());
+  }
+  done = false;
+  x[0] = 1.0 - share.h / c;
+  x[1] = 0.0;
+  return at(share.h);
+}
+
+// Backtracking along the Newton step dx: the gap must stay open, the residual must fall. Returns whether a step
+// was accepted (then lambda, the trial state and its residual rt).
+bool line_search(BalanceEvaluations &eval, const double x[2], const double dx[2], const double r[2], double &lambda,
+                 MixedEquilibrium &trial, double rt[2]) {
+  const double norm = std::hypot(r[0], r[1]);
+  lambda = 1.0;
+  for (int k = 0; k < 30; ++k, lambda *= 0.5) {
+    const double e1 = x[0] + lambda * dx[0], a1 = x[1] + lambda * dx[1];
+    if (!(e1 >= 0.0) || !(e1 < eval.sys.closing_eccentricity(eval.state, a1) * (1.0 - 1e-9))) continue;
+    trial = eval(e1, a1);
+    if (eval.failed) return false;
+    eval.residual(trial, rt);
+    if (std::hypot(rt[0], rt[1]) < (1.0 - 1e-4 * lambda) * norm) return true;
+  }
+  return false;
+}
+
+// Broyden update of the Jacobian J after the step s with residual change y.
+void broyden(double J[4], double sx0, double sx1, double y0, double y1) {
+  const double ss = sx0 * sx0 + sx1 * sx1;
+  if (!(ss > 0.0)) return;
+  const double u0 = y0 - (J[0] * sx0 + J[1] * sx1), u1 = y1 - (J[2] * sx0 + J[3] * sx1);
+  J[0] += u0 * sx0 / ss, J[1] += u0 * sx1 / ss;
+  J[2] += u1 * sx0 / ss, J[3] += u1 * sx1 / ss;
+}
+
+}    // namespace
+
+MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &state, double speed,
+                                                        const MixedEquilibrium *guess, double rel_tol) const
+{
+  BalanceEvaluations eval(*this, state, speed,
+                          guess && !guess->film.film.pressure.empty() ? pattern(*guess) : std::vector<double>());
   double x[2], J[4];
   bool have_jacobian = false, fresh_jacobian = false;
   MixedEquilibrium cur;
@@ -316,51 +394,29 @@ MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &st
     have_jacobian = true;
     cur = eval(x[0], x[1]);
   } else {
-    // Cold start: along the load line (attitude 0), the eccentricity at which film + asperities carry W
-    // (solve_load_share on the control gap h = c (1 - eps)); then Newton turns the resultant onto the load line.
-    const double eps_top = closing_eccentricity(state, 0.0) * (1.0 - 1e-6);
-    std::map<double, MixedEquilibrium> memo;
-    auto at = [&](double h) -> const MixedEquilibrium & {
-      auto it = memo.find(h);
-      if (it != memo.end()) return it->second;
-      return memo.emplace(h, eval(1.0 - h / c, 0.0)).first->second;
-    };
-    const double sigma_ref = std::max(1e-12, node_sigma(state).front());
-    const auto share = tribo::solve_load_share(
-        W, [&](double h) { return at(h).film_load; },
-        [&](double h) { return at(h).asperity_load; }, sigma_ref, c * (1.0 - eps_top), c, 1e-6);
-    if (failed) return give_up(failure, failure.status, failure.message);
-    if (share.status == tribo::LoadShareStatus::NotBracketed) {
-      // also with the resultant turned freely: the largest load the surfaces carry before they touch is below W
-      std::ostringstream m;
-      m.precision(6);
-      m << "film and asperities carry only " << share.film_load + share.asperity_load << " N of W = " << W
-        << " N before the gap closes (eccentricity " << 1.0 - share.h / c << ")";
-      return give_up(at(share.h), MixedStatus::GapCloses, m.str());
-    }
-    x[0] = 1.0 - share.h / c;
-    x[1] = 0.0;
-    cur = at(share.h);
+    bool done = false;
+    cur = cold_start(eval, x, done);
+    if (done) return cur;
   }
-  if (failed) return give_up(failure, failure.status, failure.message);
+  if (eval.failed) return eval.give_up_failure();
   double r[2];
-  residual(cur, r);
+  eval.residual(cur, r);
   auto jacobian = [&]() {
     // forward differences: eps by a small share of the distance to the closing eccentricity
     const double de = 1e-6 * std::max(1e-3, closing_eccentricity(state, x[1]) - x[0]);
     const double da = 1e-6;
     double r1[2], r2[2];
-    residual(eval(x[0] + de, x[1]), r1);
-    residual(eval(x[0], x[1] + da), r2);
+    eval.residual(eval(x[0] + de, x[1]), r1);
+    eval.residual(eval(x[0], x[1] + da), r2);
     J[0] = (r1[0] - r[0]) / de, J[2] = (r1[1] - r[1]) / de;
     J[1] = (r2[0] - r[0]) / da, J[3] = (r2[1] - r[1]) / da;
     have_jacobian = true;
     fresh_jacobian = true;
   };
   for (int iter = 0; iter < 60; ++iter) {
-    if (failed) return give_up(failure, failure.status, failure.message);
+    if (eval.failed) return eval.give_up_failure();
     if (std::abs(r[0]) <= rel_tol && std::abs(r[1]) <= rel_tol) {
-      cur.film_solves = solves;
+      cur.film_solves = eval.solves;
       cur.jacobian_valid = have_jacobian;
       std::copy(J, J + 4, cur.jacobian);
       finish(cur, p_, speed);
@@ -369,48 +425,28 @@ MixedEquilibrium MixedJournalBearingSystem::equilibrium(const MixedWearState &st
     if (!have_jacobian) jacobian();
     const double det = J[0] * J[3] - J[1] * J[2];
     if (!(std::abs(det) > 0.0) || !std::isfinite(det))
-      return give_up(cur, MixedStatus::NotConverged, "singular balance Jacobian");
-    double dx0 = -(J[3] * r[0] - J[1] * r[1]) / det, dx1 = -(-J[2] * r[0] + J[0] * r[1]) / det;
-    dx1 = std::clamp(dx1, -0.5, 0.5);
-    // backtracking: the gap must stay open, the residual must fall
-    const double norm = std::hypot(r[0], r[1]);
-    double lambda = 1.0;
-    bool accepted = false;
+      return eval.give_up(cur, MixedStatus::NotConverged, "singular balance Jacobian");
+    double dx[2] = {-(J[3] * r[0] - J[1] * r[1]) / det, -(-J[2] * r[0] + J[0] * r[1]) / det};
+    dx[1] = std::clamp(dx[1], -0.5, 0.5);
+    double lambda = 1.0, rt[2] = {0.0, 0.0};
     MixedEquilibrium trial;
-    double rt[2] = {0.0, 0.0};
-    for (int k = 0; k < 30; ++k, lambda *= 0.5) {
-      const double e1 = x[0] + lambda * dx0, a1 = x[1] + lambda * dx1;
-      if (!(e1 >= 0.0) || !(e1 < closing_eccentricity(state, a1) * (1.0 - 1e-9))) continue;
-      trial = eval(e1, a1);
-      if (failed) return give_up(failure, failure.status, failure.message);
-      residual(trial, rt);
-      if (std::hypot(rt[0], rt[1]) < (1.0 - 1e-4 * lambda) * norm) {
-        accepted = true;
-        break;
-      }
-    }
+    const bool accepted = line_search(eval, x, dx, r, lambda, trial, rt);
+    if (eval.failed) return eval.give_up_failure();
     if (!accepted) {
       if (!fresh_jacobian) {   // a stale (Broyden or warm-start) Jacobian: rebuild it before giving up
         have_jacobian = false;
         continue;
       }
-      return give_up(cur, MixedStatus::NotConverged, "balance Newton: no descent along the Newton direction");
+      return eval.give_up(cur, MixedStatus::NotConverged, "balance Newton: no descent along the Newton direction");
     }
     fresh_jacobian = false;
-    // Broyden update of the Jacobian
-    const double sx0 = lambda * dx0, sx1 = lambda * dx1;
-    const double y0 = rt[0] - r[0], y1 = rt[1] - r[1];
-    const double ss = sx0 * sx0 + sx1 * sx1;
-    if (ss > 0.0) {
-      const double u0 = y0 - (J[0] * sx0 + J[1] * sx1), u1 = y1 - (J[2] * sx0 + J[3] * sx1);
-      J[0] += u0 * sx0 / ss, J[1] += u0 * sx1 / ss;
-      J[2] += u1 * sx0 / ss, J[3] += u1 * sx1 / ss;
-    }
+    const double sx0 = lambda * dx[0], sx1 = lambda * dx[1];
+    broyden(J, sx0, sx1, rt[0] - r[0], rt[1] - r[1]);
     x[0] += sx0, x[1] += sx1;
     r[0] = rt[0], r[1] = rt[1];
     cur = std::move(trial);
   }
-  return give_up(cur, MixedStatus::NotConverged, "balance Newton: 60 iterations");
+  return eval.give_up(cur, MixedStatus::NotConverged, "balance Newton: 60 iterations");
 }
 
 MixedWearRates MixedJournalBearingSystem::wear_rates(const MixedWearState &state, const MixedEquilibrium &eq,
@@ -477,14 +513,72 @@ MixedFrame frame_of(const MixedWearState &st, const MixedEquilibrium &e, double 
   return f;
 }
 
+void check(const MixedRunSettings &settings) {
+  if (!(settings.t_end > 0.0) || !std::isfinite(settings.t_end)) throw InvalidCoefficient("t_end must be > 0");
+  if (!(settings.depth_step_fraction > 0.0 && settings.depth_step_fraction <= 1.0))
+    throw InvalidCoefficient("depth_step_fraction must be in (0, 1]");
+}
+
+// The equilibrium at the start: the roughness is lagged on the asperity pressure, so it is settled in three passes.
+// Not ok() when a pass fails; the film solves are added to `film_solves`.
+MixedEquilibrium settle_start(const MixedJournalBearingSystem &sys, MixedWearState &st, double rel_tol,
+                              long &film_solves) {
+  MixedEquilibrium eq;
+  for (int k = 0; k < 3; ++k) {
+    eq = sys.equilibrium(st, sys.parameters().speed_at(0.0), k ? &eq : nullptr, rel_tol);
+    film_solves += eq.film_solves;
+    if (!eq.ok()) return eq;
+    st.asperity_pressure = eq.asperity_pressure;
+  }
+  return eq;
+}
+
+// Largest sliding step: no node wears more than its allowed increment (a fraction of the law's depth spacing where
+// it lies, of 0.1 sigma beyond the law's last depth).
+double largest_slide(const MixedWearState &st, const MixedWearRates &rates, const MixedEquilibrium &eq,
+                     const coupling::StateLaw &law, double fraction) {
+  const double depth_spacing_end = law.worn_depth().back();
+  double ds_max = HUGE_VAL;
+  for (std::size_t i = 0; i < st.bore.size(); ++i) {
+    if (!(rates.bore[i] > 0.0)) continue;
+    const double h = st.bore[i];
+    double cap;
+    if (h < depth_spacing_end) {
+      const auto &d = law.worn_depth();
+      const auto k = static_cast<std::size_t>(std::upper_bound(d.begin(), d.end(), h) - d.begin());
+      cap = d[std::min(k, d.size() - 1)] - d[std::min(k, d.size() - 1) - 1];
+    } else {
+      cap = 0.1 * eq.sigma[i];
+    }
+    ds_max = std::min(ds_max, fraction * cap / rates.bore[i]);
+  }
+  return ds_max;
+}
+
+// The end of a step from t: the next output (t_next on entry), a speed-table corner, or where ds_max is slid;
+// sets the speed u1 there and the distance ds slid.
+void step_end(const MixedJournalBearingParameters &p, double t, double ds_max, double &t_next, double &u1,
+              double &ds) {
+  for (double tk : p.speed_time)   // a speed-table corner ends a step
+    if (tk > t * (1.0 + 1e-12) && tk < t_next) t_next = tk;
+  const double u0 = p.speed_at(t);
+  u1 = p.speed_at(t_next);
+  ds = 0.5 * (u0 + u1) * (t_next - t);
+  if (ds > ds_max) {   // shorter step: speed linear inside, so solve 0.5 (u0 + u(t + dt)) dt = ds_max
+    const double a = (u1 - u0) / (t_next - t);   // du/dt
+    const double dt = std::abs(a) > 0.0 ? (-u0 + std::sqrt(u0 * u0 + 2.0 * a * ds_max)) / a : ds_max / u0;
+    t_next = std::min(t_next, t + dt);
+    u1 = p.speed_at(t_next);
+    ds = std::min(ds_max, 0.5 * (u0 + u1) * (t_next - t));
+  }
+}
+
 }    // namespace
 
 MixedRunReport run_in(const MixedJournalBearingSystem &sys, const MixedRunSettings &settings,
                       const MixedObserver &observer, const MixedFrameObserver &frames)
 {
-  if (!(settings.t_end > 0.0) || !std::isfinite(settings.t_end)) throw InvalidCoefficient("t_end must be > 0");
-  if (!(settings.depth_step_fraction > 0.0 && settings.depth_step_fraction <= 1.0))
-    throw InvalidCoefficient("depth_step_fraction must be in (0, 1]");
+  check(settings);
   const auto &p = sys.parameters();
   const auto &law = *p.law;
   const double dt_out = settings.output_interval > 0.0 ? settings.output_interval : settings.t_end / 200.0;
@@ -502,20 +596,16 @@ MixedRunReport run_in(const MixedJournalBearingSystem &sys, const MixedRunSettin
   };
   MixedEquilibrium eq;
   try {
-    // the roughness is lagged on the asperity pressure: settle it at the start
-    for (int k = 0; k < 3; ++k) {
-      eq = sys.equilibrium(st, p.speed_at(0.0), k ? &eq : nullptr, settings.rel_tol);
-      rep.film_solves += eq.film_solves;
-      if (!eq.ok()) {
-        rep.equilibrium_status = eq.status;
-        rep.equilibrium_message = eq.message;
-        return fail(MixedRunStatus::EquilibriumFailed, std::string(to_string(eq.status)) + ": " + eq.message);
-      }
-      st.asperity_pressure = eq.asperity_pressure;
-    }
+    eq = settle_start(sys, st, settings.rel_tol, rep.film_solves);
   } catch (const std::out_of_range &e) {
     return fail(MixedRunStatus::LawOutOfRange, e.what());
   }
+  const auto not_balanced = [&](const MixedEquilibrium &e) {
+    rep.equilibrium_status = e.status;
+    rep.equilibrium_message = e.message;
+    return fail(MixedRunStatus::EquilibriumFailed, std::string(to_string(e.status)) + ": " + e.message);
+  };
+  if (!eq.ok()) return not_balanced(eq);
   rep.initial = eq;
   const auto emit = [&] {
     if (observer) observer(sample_of(sys, st, eq, t, distance, p.speed_at(t), rep.steps));
@@ -526,7 +616,6 @@ MixedRunReport run_in(const MixedJournalBearingSystem &sys, const MixedRunSettin
   };
   emit();
   long out_index = 1;
-  const double depth_spacing_end = law.worn_depth().back();
   while (t < settings.t_end * (1.0 - 1e-12)) {
     if (rep.steps >= settings.max_steps)
       return fail(MixedRunStatus::TooManySteps, "more than " + std::to_string(settings.max_steps) + " wear steps");
@@ -537,34 +626,9 @@ MixedRunReport run_in(const MixedJournalBearingSystem &sys, const MixedRunSettin
     } catch (const std::out_of_range &e) {
       return fail(MixedRunStatus::LawOutOfRange, e.what());
     }
-    // largest sliding step: no node wears more than its allowed increment
-    double ds_max = HUGE_VAL;
-    for (std::size_t i = 0; i < st.bore.size(); ++i) {
-      if (!(rates.bore[i] > 0.0)) continue;
-      const double h = st.bore[i];
-      double cap;
-      if (h < depth_spacing_end) {
-        const auto &d = law.worn_depth();
-        const auto k = static_cast<std::size_t>(std::upper_bound(d.begin(), d.end(), h) - d.begin());
-        cap = d[std::min(k, d.size() - 1)] - d[std::min(k, d.size() - 1) - 1];
-      } else {
-        cap = 0.1 * eq.sigma[i];
-      }
-      ds_max = std::min(ds_max, settings.depth_step_fraction * cap / rates.bore[i]);
-    }
-    double t_next = next_out;
-    for (double tk : p.speed_time)   // a speed-table corner ends a step
-      if (tk > t * (1.0 + 1e-12) && tk < t_next) t_next = tk;
-    const double u0 = p.speed_at(t);
-    double u1 = p.speed_at(t_next);
-    double ds = 0.5 * (u0 + u1) * (t_next - t);
-    if (ds > ds_max) {   // shorter step: speed linear inside, so solve 0.5 (u0 + u(t + dt)) dt = ds_max
-      const double a = (u1 - u0) / (t_next - t);   // du/dt
-      const double dt = std::abs(a) > 0.0 ? (-u0 + std::sqrt(u0 * u0 + 2.0 * a * ds_max)) / a : ds_max / u0;
-      t_next = std::min(t_next, t + dt);
-      u1 = p.speed_at(t_next);
-      ds = std::min(ds_max, 0.5 * (u0 + u1) * (t_next - t));
-    }
+    const double ds_max = largest_slide(st, rates, eq, law, settings.depth_step_fraction);
+    double t_next = next_out, u1 = 0.0, ds = 0.0;
+    step_end(p, t, ds_max, t_next, u1, ds);
     for (std::size_t i = 0; i < st.bore.size(); ++i) st.bore[i] += rates.bore[i] * ds;
     st.shaft += rates.shaft * ds;
     rep.rate_volume_integral += rates.bore_volume * ds;
@@ -575,11 +639,7 @@ MixedRunReport run_in(const MixedJournalBearingSystem &sys, const MixedRunSettin
     try {
       MixedEquilibrium next = sys.equilibrium(st, u1, &eq, settings.rel_tol);
       rep.film_solves += next.film_solves;
-      if (!next.ok()) {
-        rep.equilibrium_status = next.status;
-        rep.equilibrium_message = next.message;
-        return fail(MixedRunStatus::EquilibriumFailed, std::string(to_string(next.status)) + ": " + next.message);
-      }
+      if (!next.ok()) return not_balanced(next);
       eq = std::move(next);
     } catch (const std::out_of_range &e) {
       return fail(MixedRunStatus::LawOutOfRange, e.what());

@@ -250,6 +250,33 @@ FaceSolution MixedPistonRing::solve(double h_min, double speed, double squeeze, 
   return s;
 }
 
+namespace {
+// The contact of a balanced face: the law at each node that carries asperity pressure (mu_body, wear rate), the
+// boundary friction, the peak pressures and lambda at the smallest gap.
+void add_contact(const MixedPistonRing &ring, FaceSolution &out, coupling::RangeUse *use) {
+  const int n = ring.parameters().nodes;
+  const auto &law = ring.law();
+  const auto &worn = ring.worn_depth();
+  out.mu_body.assign(n, 0.0);
+  out.wear_rate.assign(n, 0.0);
+  const double floor = contact_floor(law);
+  double boundary = 0.0;
+  int i_min = 0;
+  for (int i = 0; i < n; ++i) {
+    if (out.gap[i] < out.gap[i_min]) i_min = i;
+    out.peak_film_pressure = std::max(out.peak_film_pressure, out.pressure[i]);
+    out.peak_asperity_pressure = std::max(out.peak_asperity_pressure, out.asperity_pressure[i]);
+    if (out.asperity_pressure[i] <= floor) continue;
+    const auto v = law.values(out.asperity_pressure[i], worn[i], ring.policy(), use);
+    out.mu_body[i] = v.mu_body;
+    out.wear_rate[i] = v.wear_rate;
+    boundary += ((i == 0 || i == n - 1) ? 0.5 : 1.0) * v.mu_body * out.asperity_pressure[i];
+  }
+  out.boundary_friction = boundary * ring.dx();
+  out.lambda = out.h_min / ring.sigma()[i_min];
+}
+}  // namespace
+
 FaceSolution MixedPistonRing::balance(double h_prev, double speed, double load, const std::vector<double> *fill_prev,
                                       double dt, coupling::RangeUse *use, double guess) const {
   // Root of excess(h) = film load + asperity load - W' in u = ln h: bracket outward from the guess, then
@@ -314,25 +341,7 @@ FaceSolution MixedPistonRing::balance(double h_prev, double speed, double load, 
   out.film_solves = solves;
   // a failed trial solve away from the root does not matter; the kept one must have converged
   out.status = out.status != RingFilmStatus::Ok ? RingFilmStatus::FilmNotConverged : status;
-  // contact: the law at each node that carries asperity pressure
-  const int n = p_.nodes;
-  out.mu_body.assign(n, 0.0);
-  out.wear_rate.assign(n, 0.0);
-  const double floor = contact_floor(*law_);
-  double boundary = 0.0;
-  int i_min = 0;
-  for (int i = 0; i < n; ++i) {
-    if (out.gap[i] < out.gap[i_min]) i_min = i;
-    out.peak_film_pressure = std::max(out.peak_film_pressure, out.pressure[i]);
-    out.peak_asperity_pressure = std::max(out.peak_asperity_pressure, out.asperity_pressure[i]);
-    if (out.asperity_pressure[i] <= floor) continue;
-    const auto v = law_->values(out.asperity_pressure[i], worn_[i], policy_, use);
-    out.mu_body[i] = v.mu_body;
-    out.wear_rate[i] = v.wear_rate;
-    boundary += ((i == 0 || i == n - 1) ? 0.5 : 1.0) * v.mu_body * out.asperity_pressure[i];
-  }
-  out.boundary_friction = boundary * dx();
-  out.lambda = out.h_min / sigma_[i_min];
+  add_contact(*this, out, use);
   return out;
 }
 
@@ -452,10 +461,61 @@ void RunInSettings::validate() const {
   if (frame_every < 0) throw std::invalid_argument("frame_every must be >= 0");
 }
 
+namespace {
+// Cycles the computed one stands for: as many as keep every node's wear within its limit (`ratio`: the largest
+// wear / limit), growing by at most `growth` per jump; the last cycle is computed.
+long cycles_to_jump(const RunInSettings &settings, double ratio, long previous_jump, long done) {
+  long jump = 1;
+  if (settings.jumping) {
+    const double cap = std::min(settings.growth * static_cast<double>(previous_jump), 1e15);
+    const double want = ratio > 0.0 ? std::floor(1.0 / ratio) : cap;
+    jump = static_cast<long>(std::max(1.0, std::min(want, cap)));
+    // the last cycle is computed
+    if (done < settings.cycles - 1) jump = std::min(jump, settings.cycles - 1 - done);
+    else jump = 1;
+  }
+  return jump;
+}
+
+// The observer's row of a computed cycle (the face as it was during it).
+CycleSample cycle_sample(const MixedPistonRing &system, const CycleResult &r, long done, long jump) {
+  const auto &p = system.parameters();
+  const int n = system.nodes();
+  const auto &h = system.worn_depth();
+  double max_h = 0.0, mean_h = 0.0;
+  for (double v : h) max_h = std::max(max_h, v), mean_h += v;
+  mean_h /= n;
+  CycleSample s;
+  s.cycle = done;
+  s.jump = jump;
+  s.time = done * p.period();
+  s.sliding_distance = done * r.sliding_distance;
+  s.mean_friction_force = r.mean_friction_force;
+  s.mu = r.mu;
+  s.power_loss = r.power_loss;
+  s.fmep = r.fmep;
+  s.min_h = r.min_h;
+  s.min_lambda = r.min_lambda;
+  s.asperity_share = r.asperity_share;
+  s.rq = system.weighted_rq(r.asperity_impulse);
+  s.sigma = system.weighted_sigma(r.asperity_impulse);
+  s.max_worn_depth = max_h;
+  s.mean_worn_depth = mean_h;
+  s.worn_volume = system.worn_volume();
+  s.cycle_wear_volume = p.circumference() * [&] {
+    double v = 0.0;
+    for (int i = 0; i < n; ++i) v += ((i == 0 || i == n - 1) ? 0.5 : 1.0) * r.wear[i];
+    return v * system.dx();
+  }();
+  s.peak_film_pressure = r.peak_film_pressure;
+  s.peak_asperity_pressure = r.peak_asperity_pressure;
+  return s;
+}
+}  // namespace
+
 RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const CycleObserver &observer) {
   settings.validate();
   RunInReport report;
-  const auto &p = system.parameters();
   const auto &depth = system.law().worn_depth();
   const int n = system.nodes();
   FaceState state;
@@ -501,42 +561,8 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
         limit = std::min(limit, settings.jump_depth_fraction * (*upper - *(upper - 1)));
       ratio = std::max(ratio, r.wear[i] / limit);
     }
-    long jump = 1;
-    if (settings.jumping) {
-      const double cap = std::min(settings.growth * static_cast<double>(previous_jump), 1e15);
-      const double want = ratio > 0.0 ? std::floor(1.0 / ratio) : cap;
-      jump = static_cast<long>(std::max(1.0, std::min(want, cap)));
-      // the last cycle is computed
-      if (done < settings.cycles - 1) jump = std::min(jump, settings.cycles - 1 - done);
-      else jump = 1;
-    }
-    double max_h = 0.0, mean_h = 0.0;
-    for (double v : h) max_h = std::max(max_h, v), mean_h += v;
-    mean_h /= n;
-    CycleSample s;
-    s.cycle = done;
-    s.jump = jump;
-    s.time = done * p.period();
-    s.sliding_distance = done * r.sliding_distance;
-    s.mean_friction_force = r.mean_friction_force;
-    s.mu = r.mu;
-    s.power_loss = r.power_loss;
-    s.fmep = r.fmep;
-    s.min_h = r.min_h;
-    s.min_lambda = r.min_lambda;
-    s.asperity_share = r.asperity_share;
-    s.rq = system.weighted_rq(r.asperity_impulse);
-    s.sigma = system.weighted_sigma(r.asperity_impulse);
-    s.max_worn_depth = max_h;
-    s.mean_worn_depth = mean_h;
-    s.worn_volume = system.worn_volume();
-    s.cycle_wear_volume = p.circumference() * [&] {
-      double v = 0.0;
-      for (int i = 0; i < n; ++i) v += ((i == 0 || i == n - 1) ? 0.5 : 1.0) * r.wear[i];
-      return v * system.dx();
-    }();
-    s.peak_film_pressure = r.peak_film_pressure;
-    s.peak_asperity_pressure = r.peak_asperity_pressure;
+    const long jump = cycles_to_jump(settings, ratio, previous_jump, done);
+    const CycleSample s = cycle_sample(system, r, done, jump);
     if (observer) observer(s);
     report.booked_wear_volume += static_cast<double>(jump) * s.cycle_wear_volume;
     system.advance_wear(r.wear, static_cast<double>(jump), r.mean_asperity_pressure);

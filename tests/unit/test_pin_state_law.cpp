@@ -8,6 +8,8 @@
 
 #include "continuum/node_state_law.h"
 #include "continuum/pin_on_disk.h"
+#include "continuum/pin_state_law.h"
+#include "continuum/state_law_splitting.h"
 
 using namespace runin;
 using namespace runin::coupling;
@@ -117,4 +119,56 @@ TEST(PinStateLaw, SplittingAtTheOutputIntervalConvergesAtFirstOrder) {
     EXPECT_LT(ratio, 2.5) << "halving " << i;
   }
   EXPECT_LT(error.back() / reference, 1e-2);  // 0.46 % at 2.5 ms (1.9 % at 20 ms)
+}
+
+// The library's pin slow system through the splitting driver (continuum::PinStateLaw, continuum::split_run): a flat
+// pin carries one uniform pressure on every ring, so its split is the one-node split above, ring by ring.
+namespace {
+continuum::PinStateLawSettings flat_pin(double radius) {
+  continuum::PinStateLawSettings s;
+  s.flat_radius = radius;
+  s.tip.rings = 16;
+  s.tip.effective_modulus = 1e11;
+  s.load = parameters().normal_load;
+  s.track_radius = parameters().track_radius;
+  return s;
+}
+
+struct DriverRun {
+  continuum::SplitReport report;
+  double speed = 0.0;
+};
+
+DriverRun driver_speed(double radius, double interval, double t_end) {
+  auto state = std::make_shared<continuum::StateLawFriction>();
+  state->law = make_law();
+  state->path = "synthetic";
+  continuum::PinStateLaw pin(flat_pin(radius), *state);
+  const continuum::PinOnDiskSystem system(parameters(), continuum::SlidingFriction::state_law(state));
+  continuum::PinOnDiskRun run;
+  run.t_end = t_end;
+  run.output_interval = interval;
+  DriverRun out;
+  out.report = continuum::split_run<continuum::PinOnDiskSample>(
+      pin, [&](const auto &on_sample, const auto &refresh) { return continuum::simulate(system, run, on_sample, refresh); },
+      [&](const continuum::PinOnDiskSample &s) { out.speed = s.speed; });
+  return out;
+}
+}  // namespace
+
+TEST(PinStateLaw, TheDriverWithTheFlatPinIsTheOneNodeSplit) {
+  const double radius = std::sqrt(1e-6 / M_PI);  // 10 N on 1 mm^2: 1e7 Pa, inside the law's grid
+  for (double interval : {0.02, 0.005}) {
+    const auto run = driver_speed(radius, interval, 0.2);
+    ASSERT_TRUE(run.report.ok()) << run.report.message;
+    EXPECT_GT(run.report.slow_steps, 0);
+    EXPECT_NEAR(run.speed, split_speed(interval, 0.2), 1e-12) << interval;
+  }
+}
+
+TEST(PinStateLaw, APressureBelowTheLawIsAStatusAtTheStart) {
+  const auto run = driver_speed(0.1, 0.01, 0.1);  // 10 N on 314 cm^2: 318 Pa, below the grid's 1e6 Pa
+  EXPECT_EQ(run.report.status, continuum::SplitStatus::LawOutOfRange);
+  EXPECT_EQ(run.report.time, 0.0);
+  EXPECT_NE(run.report.message.find("outside the law's range"), std::string::npos) << run.report.message;
 }

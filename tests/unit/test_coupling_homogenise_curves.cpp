@@ -1,20 +1,20 @@
-// runin homogenise: one sample's cell output on the state law's worn-depth grid (src/cli/homogenise_curves.h).
+// runin homogenise: one sample's cell output on the state law's worn-depth grid (src/coupling/homogenise_curves.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 #include <string>
 
-#include "cli/homogenise_curves.h"
+#include "coupling/homogenise_curves.h"
 
 namespace {
 
-using runin::cli::CellSeries;
-using runin::cli::depth_grid;
-using runin::cli::resample_on_depth_grid;
+using runin::coupling::CellSeries;
+using runin::coupling::depth_grid;
+using runin::coupling::resample_on_depth_grid;
 using runin::coupling::StateField;
 
-const std::vector<double> &field(const runin::cli::DepthCurves &c, StateField f) {
+const std::vector<double> &field(const runin::coupling::DepthCurves &c, StateField f) {
   return c.field[static_cast<std::size_t>(f)];
 }
 
@@ -91,17 +91,17 @@ TEST(HomogeniseCurves, NoSlidingRowsIsAnError) {
 // (the ave/time reader refuses a non-finite value itself, naming file, line and column; cell_series checks again)
 TEST(HomogeniseCurves, CellSeriesRejectsNonFiniteValuesAndMissingColumns) {
   std::istringstream good("# TimeStep v_s v_h v_h_cf v_mu_body v_rq v_rsk v_area_fraction\n1 0 0 0 0 1e-7 0 0.1\n");
-  EXPECT_EQ(runin::cli::cell_series(runin::coupling::parse_ave_time(good, "good.dat")).s.size(), 1u);
+  EXPECT_EQ(runin::coupling::cell_series(runin::coupling::parse_ave_time(good, "good.dat")).s.size(), 1u);
   std::istringstream nan_row("# TimeStep v_s v_h v_h_cf v_mu_body v_rq v_rsk v_area_fraction\n1 0 0 0 nan 1e-7 0 0.1\n");
   try {
-    runin::cli::cell_series(runin::coupling::parse_ave_time(nan_row, "nan.dat"));
+    runin::coupling::cell_series(runin::coupling::parse_ave_time(nan_row, "nan.dat"));
     FAIL() << "no error";
   } catch (const std::exception &e) {
     EXPECT_NE(std::string(e.what()).find("nan.dat:2: column 'v_mu_body': non-finite"), std::string::npos)
         << e.what();
   }
   std::istringstream missing("# TimeStep v_s v_h\n1 0 0\n");
-  EXPECT_THROW(runin::cli::cell_series(runin::coupling::parse_ave_time(missing, "missing.dat")), std::runtime_error);
+  EXPECT_THROW(runin::coupling::cell_series(runin::coupling::parse_ave_time(missing, "missing.dat")), std::runtime_error);
 }
 
 }  // namespace

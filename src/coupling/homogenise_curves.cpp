@@ -1,11 +1,11 @@
-#include "cli/homogenise_curves.h"
+#include "coupling/homogenise_curves.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
 
-namespace runin::cli {
+namespace runin::coupling {
 
 namespace {
 
@@ -155,4 +155,4 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
   return out;
 }
 
-}  // namespace runin::cli
+}  // namespace runin::coupling

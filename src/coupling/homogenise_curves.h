@@ -7,9 +7,10 @@
 #include <vector>
 
 #include "coupling/ave_time_reader.h"
+#include "coupling/homogenise.h"
 #include "coupling/state_law.h"
 
-namespace runin::cli {
+namespace runin::coupling {
 
 // The contract columns of one sample (cell units: s and the rates at the accelerated k).
 struct CellSeries {
@@ -23,9 +24,6 @@ CellSeries cell_series(const coupling::AveTimeTable &table);
 // 0 .. depth in `points` even steps (the last one exactly depth).
 std::vector<double> depth_grid(double depth, long points);
 
-struct DepthCurves {
-  std::array<std::vector<double>, coupling::state_field_count> field;  // [StateField][depth index]
-};
 
 // Every field of the state law on `grid` for one sample run at `acceleration` (physical s = acceleration x cell s,
 // physical rates = cell rates / acceleration). Uses the rows with s > 0; h made non-decreasing by a running
@@ -37,4 +35,4 @@ struct DepthCurves {
 // fewer than 2 rows slide or the sample's h stops short of grid.back() ("reached h = ... m of depth ... m").
 DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<double> &grid, double acceleration);
 
-}  // namespace runin::cli
+}  // namespace runin::coupling
