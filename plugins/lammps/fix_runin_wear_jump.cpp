@@ -31,14 +31,15 @@ FixRuninWearJump::FixRuninWearJump(LAMMPS *lmp, int narg, char **arg) :
   if (narg != 7 || strcmp(arg[5], "max_depth") != 0)
     error->all(FLERR, "fix runin/wear/jump: expected 'fix ID group runin/wear/jump N M max_depth D'{}",
                narg == 7 ? fmt::format(", got keyword '{}'", arg[5]) : fmt::format(", got {} arguments", narg - 3));
-  const double every = utils::numeric(FLERR, arg[3], false, lmp);
+  const char *where = "fix runin/wear/jump";
+  const double every = runin_lammps::finite_number(lmp, FLERR, where, "N (steps per phase)", arg[3]);
   if (!(every >= 1.0) || every != std::floor(every) || every > 2.0e9)
     error->all(FLERR, "fix runin/wear/jump: N (steps per phase) must be an integer >= 1, got {}", arg[3]);
   nevery = static_cast<int>(every);
-  factor = utils::numeric(FLERR, arg[4], false, lmp);
+  factor = runin_lammps::finite_number(lmp, FLERR, where, "M (jump factor)", arg[4]);
   if (!(factor >= 1.0) || !std::isfinite(factor))
     error->all(FLERR, "fix runin/wear/jump: M (jump factor) must be >= 1 and finite, got {}", arg[4]);
-  max_depth = utils::numeric(FLERR, arg[6], false, lmp);
+  max_depth = runin_lammps::finite_number(lmp, FLERR, where, "max_depth", arg[6]);
   if (!(max_depth > 0.0) || !std::isfinite(max_depth))
     error->all(FLERR, "fix runin/wear/jump: max_depth must be > 0 and finite, got {}", arg[6]);
 
