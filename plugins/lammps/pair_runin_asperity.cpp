@@ -243,6 +243,17 @@ void PairRuninAsperity::coeff(int narg, char **arg)
   // validates every sub-model's coefficients
   runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair_coeff runin/asperity ({})", origin), true,
                             [&] { tribo::ContactModel(choice, c, contact_settings); });
+  // keyword form: an adhesion law's tau_s against the S_y of the elastic/plastic block (the other forms:
+  // contact_coefficients, against the materials' S_y)
+  if (strcmp(origin, "keywords") == 0 && plastic_normal()) {
+    const auto &friction = c.of(SubModelKind::friction);
+    const std::string name = tribo::registered_sub_models(SubModelKind::friction)[choice.of(SubModelKind::friction)].name;
+    const int tau_index = name == tribo::StrengthFrictionModel::name ? 3 : name == tribo::BrizmerFrictionModel::name ? 1 : -1;
+    if (tau_index >= 0)
+      runin_lammps::kernel_call(lmp, FLERR, "pair_coeff runin/asperity (keywords)", true, [&] {
+        tribo::check_interface_strength(friction[tau_index], c.of(SubModelKind::normal)[1]);
+      });
+  }
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -313,10 +324,19 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
 {
   for (int iarg = first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
+    if (keyword == "interface") {
+      // the state's friction factor m comes from the coefficient file (contact_coefficients applies it)
+      if (iarg + 1 >= narg)
+        error->all(FLERR, "pair_coeff runin/asperity: interface needs a state ({})", tribo::interface_state_list());
+      p.interface_state = runin_lammps::kernel_call(lmp, FLERR, "pair_coeff runin/asperity", true,
+                                                    [&] { return tribo::find_interface_state(arg[iarg + 1]); });
+      continue;
+    }
     if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
         keyword != "alpha")
       error->all(FLERR,
-                 "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f or alpha)",
+                 "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f, alpha or "
+                 "interface)",
                  keyword);
     const double value =
         runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", keyword,

@@ -83,7 +83,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
   static const std::map<std::string, int> kKeywordValues = {
       {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
       {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
-      {"strength", 2}, {"junction", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}, {"wear_scale", 1}};
+      {"strength", 2}, {"junction", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}, {"wear_scale", 1}, {"interface", 1}};
   const std::string style = "fix runin/wall";
   // a RunIn kernel call whose exception becomes one ERROR "fix runin/wall: <what>"
   auto kernel = [&](auto &&body) -> decltype(body()) {
@@ -107,6 +107,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
   Config c;
   tribo::ContactParameters &parameters = c.parameters;
   bool yield_given = false;
+  int interface_state = -1;    // keyword interface: tau_s or f from the coefficient file's line for this state
   std::string friction_model_name;    // keyword friction_model; else 'strength' with keyword strength
   double yield_strength = 0.0, yield_poisson = 0.3;
   double wear_scale = 1.0;    // keyword wear_scale: wear acceleration, a factor on Archard k of both bodies
@@ -118,7 +119,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
     if (known == kKeywordValues.end())
       fail(hooks, fmt::format("fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, "
                               "wear, archard, reshape, vel, vz, load, pressure, servo, strength, junction, restick, "
-                              "transfer, normal, yield, friction_model or wear_scale)", keyword));
+                              "transfer, normal, yield, friction_model, wear_scale or interface)", keyword));
     const int nvalues = known->second;
     if (iarg + nvalues >= narg)
       fail(hooks, fmt::format("fix runin/wall: keyword '{}' needs {} value(s), got {}", keyword, nvalues,
@@ -205,6 +206,8 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
       yield_given = true;
       yield_strength = number(0, "S_y");
       yield_poisson = number(1, "nu");
+    } else if (keyword == "interface") {
+      interface_state = kernel([&] { return tribo::find_interface_state(values[0]); });
     } else if (keyword == "wear_scale") {
       wear_scale = number(0, "factor");
       if (!(wear_scale > 0.0) || !std::isfinite(wear_scale))
@@ -236,6 +239,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
     fail(hooks, "fix runin/wall: 'vz' and 'load'/'pressure' exclude each other");
 
   parameters.wear_coefficient *= wear_scale;
+  parameters.interface_state = interface_state;
   if (!friction_model_name.empty())
     c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
         tribo::find_sub_model(tribo::SubModelKind::friction, friction_model_name);

@@ -211,10 +211,19 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
   }
   for (int iarg = optional_first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
+    if (keyword == "interface") {
+      // the state's friction factor m comes from the coefficient file (contact_coefficients applies it)
+      if (iarg + 1 >= narg)
+        runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: interface needs a state ({})",
+                                                    tribo::interface_state_list()));
+      p.interface_state = runin_liggghts::kernel_call(lmp, FLERR, where, true,
+                                                      [&] { return tribo::find_interface_state(arg[iarg + 1]); });
+      continue;
+    }
     if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
         keyword != "alpha")
       runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: unknown keyword '{}' (expected "
-                                                  "tau_s, plough, S_y, nu, f or alpha)", keyword));
+                                                  "tau_s, plough, S_y, nu, f, alpha or interface)", keyword));
     const double value = runin_liggghts::finite_number(lmp, FLERR, where, keyword, iarg + 1 < narg ? arg[iarg + 1] : "");
     if (keyword == "tau_s")
       p.shear_strength = value;

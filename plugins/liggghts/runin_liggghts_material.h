@@ -24,8 +24,10 @@ MaterialPair read_material_pair(LAMMPS_NS::LAMMPS *lmp, const std::string &file,
 
 inline runin::tribo::ContactParameters contact_parameters(const MaterialPair &entry)
 {
-  return runin::tribo::contact_parameters(entry.a, entry.b, entry.restitution, entry.mu_static, entry.mu_kinetic,
-                                          entry.slip_weakening_distance, entry.wear_coefficient);
+  auto p = runin::tribo::contact_parameters(entry.a, entry.b, entry.restitution, entry.mu_static, entry.mu_kinetic,
+                                            entry.slip_weakening_distance, entry.wear_coefficient);
+  p.interface_factors = entry.interface_factor;    // the file's 'interface' lines (keyword interface STATE)
+  return p;
 }
 
 }    // namespace runin_liggghts

@@ -305,23 +305,52 @@ ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const
   c.of(K::damping) = {p.restitution};
   c.of(K::tangential) = {p.effective_shear_modulus};
   const std::string friction = registered_sub_models(K::friction)[choice.of(K::friction)].name;
+  const bool adhesion_law = friction == StrengthFrictionModel::name || friction == BrizmerFrictionModel::name;
+  // S_y given (material file or keyword), not Tabor's H / 2.8 guess
+  const bool yield_known = !p.yield_from_hardness && p.yield_strength > 0.0;
+  double shear_strength = p.shear_strength, interface_coefficient = p.interface_coefficient;
+  if (p.interface_state >= 0) {
+    const std::string state = kInterfaceStateNames[p.interface_state];
+    const double m = p.interface_factors[p.interface_state];
+    if (std::isnan(m))
+      throw InvalidCoefficient("interface: no friction factor m for state '" + state + "' of this material pair (a "
+                               "coefficient file line 'interface A B " + state + " m'; the file form reads it)");
+    if (adhesion_law) {
+      if (p.shear_strength != 0.0)
+        throw InvalidCoefficient("interface: give either tau_s or interface " + state + ", not both");
+      if (!yield_known)
+        throw InvalidCoefficient("interface: tau_s = m S_y / sqrt(3) needs the yield strength of the softer body, not "
+                                 "Tabor's H / 2.8 (the material's 6th value in the coefficient file)");
+      shear_strength = interface_shear_strength(m, p.yield_strength);
+    } else if (friction == JunctionFrictionModel::name) {
+      if (!std::isnan(p.interface_coefficient))
+        throw InvalidCoefficient("interface: give either f or interface " + state + ", not both");
+      interface_coefficient = m;
+    } else {
+      throw InvalidCoefficient("interface: friction model '" + friction + "' has no interface strength (interface " +
+                               state + " sets tau_s of 'strength' and 'brizmer' or f of 'junction')");
+    }
+  }
+  // an interface stronger than the softer body's shear yield; above the hardness ContactModel says so first
+  if (adhesion_law && yield_known && shear_strength <= std::min(p.hardness_i, p.hardness_j))
+    check_interface_strength(shear_strength, p.yield_strength);
   if (friction == CoulombFrictionModel::name)
     c.of(K::friction) = {p.mu_static, p.mu_kinetic, p.slip_weakening_distance};
   else if (friction == StrengthFrictionModel::name)
-    c.of(K::friction) = {p.mu_static, p.mu_kinetic, p.slip_weakening_distance, p.shear_strength,
+    c.of(K::friction) = {p.mu_static, p.mu_kinetic, p.slip_weakening_distance, shear_strength,
                          p.ploughing_factor};
   else if (friction == BrizmerFrictionModel::name)
-    c.of(K::friction) = {p.slip_weakening_distance, p.shear_strength, p.ploughing_factor};
+    c.of(K::friction) = {p.slip_weakening_distance, shear_strength, p.ploughing_factor};
   else if (friction == JunctionFrictionModel::name) {
     // which contacts are plastic junctions follows from S_y: Tabor's H / 2.8 guess is not taken for it
     if (p.yield_from_hardness)
       throw InvalidCoefficient("S_y: friction model 'junction' needs the yield strength of the softer body, not "
                                "Tabor's H / 2.8 (pair_coeff keyword 'S_y X', fix runin/wall keyword 'yield', or "
                                "the material's 6th value in a coefficient file)");
-    if (std::isnan(p.interface_coefficient))
+    if (std::isnan(interface_coefficient))
       throw InvalidCoefficient("f: friction model 'junction' needs the interface coefficient f, 0 <= f < 1 "
                                "(pair_coeff keyword 'f X', fix runin/wall keyword 'junction f alpha')");
-    c.of(K::friction) = {p.interface_coefficient, p.junction_alpha};
+    c.of(K::friction) = {interface_coefficient, p.junction_alpha};
   }
   c.of(K::wear) = {p.wear_coefficient, p.hardness_i, p.wear_coefficient, p.hardness_j};
   check_coefficient_counts(choice, c);

@@ -686,6 +686,10 @@ struct ContactParameters {
   // friction junction: interface coefficient f (NaN: not given, refused) and growth constant alpha
   double interface_coefficient = std::numeric_limits<double>::quiet_NaN();
   double junction_alpha = JunctionFrictionModel::kDefaultAlpha;
+  // interface state (friction_strength.h): m per state from a coefficient file, and the state a deck chose
+  // (-1: none): tau_s = m S_y / sqrt(3) for strength and brizmer, f = m for junction
+  InterfaceFactors interface_factors = no_interface_factors();
+  int interface_state = -1;
 };
 // Tabor's fallback S_y = H / 2.8 where a material gives no yield strength.
 constexpr double kTaborConstraintFactor = 2.8;

@@ -2,6 +2,10 @@
 // Pure functions and a small validating class; SI units. See doc/worn_asperity_geometry.md.
 #pragma once
 
+#include <array>
+#include <limits>
+#include <string>
+
 namespace runin::tribo {
 
 struct FrictionStrengthParts {
@@ -44,5 +48,30 @@ class AdhesionPloughing {
  private:
   double tau_s_, ploughing_factor_;
 };
+
+// Interfacial shear strength from the state of the interface (doc/interface_strength.md): tau_s = m k_soft, with
+// k_soft = S_y / sqrt(3) the von Mises shear yield strength of the softer body and m in [0, 1] the friction factor
+// of the metal-forming literature (m = 1: the interface as strong as the softer body, sticking). The coefficient
+// files give m per material pair and state ('interface A B STATE m').
+constexpr int kInterfaceStates = 3;
+constexpr std::array<const char *, kInterfaceStates> kInterfaceStateNames{"clean", "oxidised", "boundary"};
+using InterfaceFactors = std::array<double, kInterfaceStates>;    // m per state; NaN: no line for it
+inline InterfaceFactors no_interface_factors()
+{
+  InterfaceFactors none;
+  none.fill(std::numeric_limits<double>::quiet_NaN());
+  return none;
+}
+// Index of a state; throws InvalidCoefficient "unknown interface state 'x' (known: clean, oxidised, boundary)".
+int find_interface_state(const std::string &name);
+// "clean, oxidised, boundary"
+std::string interface_state_list();
+// S_y / sqrt(3) [Pa]
+double shear_yield_strength(double yield_strength);
+// m S_y / sqrt(3); throws InvalidCoefficient naming m (outside [0, 1]) or S_y (not > 0 and finite).
+double interface_shear_strength(double friction_factor, double yield_strength_soft);
+// An interface cannot shear harder than the softer body under it: throws InvalidCoefficient naming tau_s when
+// tau_s > S_y / sqrt(3).
+void check_interface_strength(double shear_strength, double yield_strength_soft);
 
 }    // namespace runin::tribo

@@ -34,6 +34,9 @@ MaterialPairEntry MaterialFile::pair(const std::string &a, const std::string &b)
   MaterialPairEntry entry = found->second;
   entry.a = material(a);
   entry.b = material(b);
+  auto interface = interfaces.find({a, b});
+  if (interface == interfaces.end()) interface = interfaces.find({b, a});
+  if (interface != interfaces.end()) entry.interface_factor = interface->second;
   return entry;
 }
 
@@ -81,6 +84,26 @@ MaterialFile parse_material_file(std::istream &in, const std::string &file) {
       entry.slip_weakening_distance = number(prefix + "d_c");
       entry.wear_coefficient = number(prefix + "k");
       result.pairs[{words[1], words[2]}] = entry;
+    } else if (words[0] == "interface") {
+      if (words.size() != 5) throw MaterialFileError(where + "interface needs A B STATE m (STATE: " + interface_state_list() + ")");
+      const std::string prefix = "interface " + words[1] + " " + words[2] + " " + words[3] + ": ";
+      int state = 0;
+      try {
+        state = find_interface_state(words[3]);
+      } catch (const InvalidCoefficient &e) {
+        throw MaterialFileError(where + e.what());
+      }
+      next = 4;
+      const double m = number(prefix + "m");
+      if (!(m >= 0.0 && m <= 1.0))
+        throw MaterialFileError(where + prefix + "m must be in [0, 1] (tau_s / (S_y / sqrt(3)) of the softer body), got '" +
+                                words[4] + "'");
+      auto found = result.interfaces.find({words[1], words[2]});
+      if (found == result.interfaces.end()) found = result.interfaces.find({words[2], words[1]});
+      if (found == result.interfaces.end())
+        found = result.interfaces.emplace(std::make_pair(words[1], words[2]), no_interface_factors()).first;
+      if (!std::isnan(found->second[state])) throw MaterialFileError(where + prefix + "given twice");
+      found->second[state] = m;
     } else {
       throw MaterialFileError(where + "unknown entry '" + words[0] + "'");
     }
