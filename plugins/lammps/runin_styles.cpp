@@ -3,6 +3,7 @@
 #include "compute_runin_friction.h"
 #include "compute_runin_roughness.h"
 #include "fix_runin_wall.h"
+#include "fix_runin_wear_jump.h"
 #include "fix_runin_wear_state.h"
 #include "pair_runin_asperity.h"
 #include "runin_timestep_guard.h"
@@ -45,6 +46,8 @@ const std::vector<StyleEntry> &styles()
        &create_pair<PairRuninAsperity>, nullptr},
       {"fix", "RUNIN/WEAR_STATE", "RunIn per-atom wear state (internal)", nullptr,
        &create_with_args<FixRuninWearState>},
+      {"fix", "runin/wear/jump", "RunIn cycle jumping of asperity wear (slow wear: each phase stands for M phases)",
+       nullptr, &create_with_args<FixRuninWearJump>},
       {"fix", "RUNIN/FINITE_CHECK", "RunIn non-finite force check (internal)", nullptr,
        &create_with_args<FixRuninFiniteCheck>},
       {"fix", "runin/wall", "RunIn asperities against a rigid flat counterface (displacement or load control)",
@@ -61,6 +64,7 @@ void register_styles(LAMMPS *lmp)
 {
   (*lmp->force->pair_map)["runin/asperity"] = &pair_creator<PairRuninAsperity>;
   (*lmp->modify->fix_map)["RUNIN/WEAR_STATE"] = &fix_creator<FixRuninWearState>;
+  (*lmp->modify->fix_map)["runin/wear/jump"] = &fix_creator<FixRuninWearJump>;
   (*lmp->modify->fix_map)["RUNIN/FINITE_CHECK"] = &fix_creator<FixRuninFiniteCheck>;
   (*lmp->modify->fix_map)["runin/wall"] = &fix_creator<FixRuninWall>;
   (*lmp->modify->compute_map)["runin/friction"] = &compute_creator<ComputeRuninFriction>;

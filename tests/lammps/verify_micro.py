@@ -4,7 +4,8 @@
   verify_micro.py impact --lmp LMP --workdir DIR                     elastic: energy, Hertz contact time
   verify_micro.py impact --lmp LMP --workdir DIR --restitution E...  damped: rebound / impact speed = e
   verify_micro.py wear-budget --lmp LMP --workdir DIR [--mpiexec M --np N]
-  verify_micro.py restart --lmp LMP --workdir DIR                    write_restart/read_restart bit for bit
+  verify_micro.py restart --lmp LMP --workdir DIR [--jump M]         write_restart/read_restart bit for bit
+                                                                     (--jump: with fix runin/wear/jump)
 
 Decks: tests/lammps/decks/in.impact_pair, in.slider_verify, in.slider_verify_restart.
 """
@@ -28,6 +29,8 @@ PLASTIC_LOAD = 2.0e-3
 def run_lmp(args, deck, variables, log, np=1):
     normal = getattr(args, "normal", "hertz")
     variables = dict(variables, normal=normal)
+    if getattr(args, "jump", 1.0) > 1.0:
+        variables["jump"] = args.jump    # fix runin/wear/jump from the slide on (the decks' jump variables)
     if normal == "elastic/plastic" and "load" not in variables:
         variables["load"] = PLASTIC_LOAD
     return thermo_blocks(run_lammps(args, os.path.join(DECKS, deck), variables, log, np))
@@ -163,6 +166,20 @@ def restart(args):
             fail(f"respecify {respecify}: final state of atom {bad} differs:\n{columns}\n{want[bad]}\n{got.get(bad)}")
         os.rename(os.path.join(args.workdir, "state.restarted.dump"),
                   os.path.join(args.workdir, f"state.restarted_{respecify}.dump"))
+    if args.jump > 1.0:
+        # the jump fix's global state (equivalent steps, jumps, last factor) continues as well
+        def jump_line(log):
+            lines = [line for line in open(os.path.join(args.workdir, log)) if line.startswith("JUMP ")]
+            if not lines:
+                fail(f"{log}: no JUMP line (fix runin/wear/jump not defined?)")
+            return lines[-1].split()[1:]
+        want_jump = jump_line("log.reference")
+        if float(want_jump[1]) < 2:
+            fail(f"the reference made {want_jump[1]} jumps; the test needs jumps on both sides of the split")
+        for respecify in ("no", "yes"):
+            if jump_line(f"log.restart_{respecify}") != want_jump:
+                fail(f"respecify {respecify}: fix runin/wear/jump state after the restart "
+                     f"{jump_line(f'log.restart_{respecify}')} != uninterrupted {want_jump}")
     builds = [line for line in open(os.path.join(args.workdir, "log.restart_yes")) if "Neighbor list builds" in line]
     if not builds or int(builds[-1].split("=")[1]) < 1:
         fail(f"the continued run must rebuild the neighbour list (contact history re-matched): {builds}")
@@ -190,6 +207,8 @@ def main():
         p.add_argument("--normal", default="hertz", choices=("hertz", "elastic/plastic"))
         if name == "impact":
             p.add_argument("--restitution", type=float, nargs="+")
+        if name == "restart":
+            p.add_argument("--jump", type=float, default=1.0, help="jump factor of fix runin/wear/jump (1: none)")
     args = parser.parse_args()
     {"impact": impact, "wear-budget": wear_budget, "restart": restart}[args.command](args)
 

@@ -1,0 +1,60 @@
+// Cycle jumping of asperity wear (doc/fix_runin_wear_jump.rst): every N steps, each summit's worn (and deposited)
+// volume of the last N steps is added again (M - 1) times, so that each phase of physical sliding stands for M
+// phases. For wear that is slow against the contact mechanics (mild Archard k): the plastic flattening and the
+// contact statistics shake down within the phase, the worn geometry advances by the jump.
+//
+//   fix ID group runin/wear/jump N M max_depth D
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(runin/wear/jump,FixRuninWearJump);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_RUNIN_WEAR_JUMP_H
+#define LMP_FIX_RUNIN_WEAR_JUMP_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixRuninWearJump : public Fix {
+ public:
+  FixRuninWearJump(class LAMMPS *, int, char **);
+  ~FixRuninWearJump() override;
+  int setmask() override;
+  void init() override;
+  void end_of_step() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override { return kColumns + 1; }
+  int maxsize_restart() override { return kColumns + 1; }
+  double memory_usage() override;
+
+ private:
+  static constexpr int kColumns = 2;    // lost and gained volume at the start of the phase
+  double factor;                        // M: each phase stands for M phases
+  double max_depth;                     // largest mean worn depth of the group added by one jump
+  double **phase_start;                 // per atom: volumes at the start of the phase
+  bigint phase_start_step;
+  double extra_steps;                   // sum over jumps of (M_applied - 1) x phase steps
+  double jumps, reduced_jumps, last_factor, largest_change;
+  class FixRuninWearState *wear_state;
+  bool phase_started;    // the phase start holds the volumes of a wear state (or of a restart)
+
+  void start_phase();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
