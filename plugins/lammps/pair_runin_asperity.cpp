@@ -132,6 +132,8 @@ void PairRuninAsperity::settings(int narg, char **arg)
         error->all(FLERR, "pair_style runin/asperity: archard must be 'plain' or 'thesis', got '{}'", value);
     } else if (keyword == "reshape") {
       reshape = yes_no("reshape");
+    } else if (keyword == "rise") {
+      rise_on = yes_no("rise");
     } else if (keyword == "normal") {
       set_sub_model(SubModelKind::normal, value);
     } else if (keyword == "friction") {
@@ -156,7 +158,7 @@ void PairRuninAsperity::settings(int narg, char **arg)
       wear_scale = factor;
     } else {
       error->all(FLERR,
-                 "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, normal, "
+                 "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, rise, normal, "
                  "friction, transfer, restick or wear_scale)",
                  keyword);
     }
@@ -376,6 +378,15 @@ void PairRuninAsperity::init_style()
   // after read_restart, pair_style settings did not run; plastic flattening needs the state too
   if (wear_on || plastic_normal()) attach_wear_state();
   if (fix_wear) fix_wear->forward_flattened(plastic_normal());    // the ghosts' part for reloads
+  if (rise_on) {
+    if (!plastic_normal() || !reshape)
+      error->all(FLERR, "pair_style runin/asperity: rise yes needs normal elastic/plastic and reshape yes (only "
+                        "plastically flattened summits displace material); set rise no");
+    if (!domain->xperiodic || !domain->yperiodic)
+      error->all(FLERR, "pair_style runin/asperity: rise yes needs a box periodic in x and y (the nominal area of "
+                        "a body is lx ly); set rise no or make x and y periodic");
+  }
+  if (fix_wear) fix_wear->forward_rise(rise_on);
 
   // largest radius per type bounds the contact cutoff
   std::vector<double> local(atom->ntypes + 1, 0.0);
@@ -481,7 +492,8 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
   const int models_index = choice.of(tribo::SubModelKind::normal) * std::tuple_size_v<tribo::FrictionModels> +
                            choice.of(tribo::SubModelKind::friction);
-  const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
+  // Archard wear only with wear yes: the increments of a plastic model without wear carry flattening alone
+  const int index = (models_index << NFLAGS) | (wear_on && advance ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
   runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
 
@@ -490,14 +502,18 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     // listed owned atoms: add the increments to the state and refresh the geometry; then clear all listed
     double **state = fix_wear->state();
     const double *radius = atom->radius;
+    std::vector<double> flattened_by_type(rise_on ? atom->ntypes + 1 : 0, 0.0);
     for (int k = 0; k < nworn_owned; k++) {
       const int i = worn_owned[k];
       double *inc = &increment[NINCREMENT * i];
       state[i][FixRuninWearState::VOLUME_LOST] += inc[INC_LOST];
       state[i][FixRuninWearState::VOLUME_GAINED] += inc[INC_GAINED];
-      if (inc[INC_FLATTENED] > 0.0)
-        state[i][FixRuninWearState::VOLUME_FLATTENED] += FixRuninWearState::flattened_volume(
-            radius[i], state[i][FixRuninWearState::WEAR_DEPTH], inc[INC_FLATTENED]);
+      if (inc[INC_FLATTENED] > 0.0) {
+        const double volume = FixRuninWearState::flattened_volume(radius[i], state[i][FixRuninWearState::WEAR_DEPTH],
+                                                                  inc[INC_FLATTENED]);
+        state[i][FixRuninWearState::VOLUME_FLATTENED] += volume;
+        if (rise_on) flattened_by_type[atom->type[i]] += volume;
+      }
       inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
       fix_wear->refresh_geometry(i, radius[i]);
       // a summit worn or flattened past its equator has left the truncated-sphere geometry
@@ -513,7 +529,28 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
     }
     nworn_owned = nworn_ghost = 0;
+    if (rise_on) raise_free_surfaces(flattened_by_type);
   }
+}
+
+// Volume-conserving flattening (Pullen and Williamson 1972): the cap volume a body's summits lost to plastic
+// flattening in this step reappears as a uniform rise of that body's surface, by volume / nominal area (lx ly). A
+// body is the atoms of one type. All summits rise, those in contact too: their extra interference flattens them
+// again, and the fixed point of that is P&W's rise of the free surface alone by V / (A - A_r).
+void PairRuninAsperity::raise_free_surfaces(const std::vector<double> &flattened_by_type)
+{
+  std::vector<double> total(flattened_by_type.size(), 0.0);
+  MPI_Allreduce(flattened_by_type.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE, MPI_SUM, world);
+  const double inv_area = 1.0 / (domain->xprd * domain->yprd);
+  bool any = false;
+  for (double &v : total) {
+    v *= inv_area;
+    any = any || v > 0.0;
+  }
+  if (!any) return;
+  double **state = fix_wear->state();
+  const int *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++) state[i][FixRuninWearState::RISE] += total[type[i]];
 }
 
 // How far plastic flattening (not wear) lowered the summits of i and j together (ghosts included: the wear
@@ -555,7 +592,7 @@ tribo::ContactGeometry PairRuninAsperity::contact_geometry(int i, int j, double 
   return g;
 }
 
-// One force evaluation. NORMAL, FRICTION: the sub-models (registry indices); WEAR: advance the wear
+// One force evaluation. NORMAL, FRICTION: the sub-models (registry indices); WEAR: Archard wear (wear yes) into the
 // increments; RESHAPE: worn geometry enters the contact; SUMS: fill the contact sums; EVFLAG: tally energy
 // and virial.
 template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG>
@@ -602,6 +639,9 @@ void PairRuninAsperity::eval(int eflag)
   // Centre distance at which two summits touch: worn summits sit lower by their wear depth (higher if material
   // was deposited). Both passes use it, so they agree bit for bit on which pairs touch.
   auto wear_depth = [state](int k) { return RESHAPE ? state[NCOL * k + DEPTH] : 0.0; };
+  // the summit's drop below its intact sphere less its body's rise (rise yes; 0 otherwise): what the reach sees
+  constexpr int RISE = FixRuninWearState::RISE;
+  auto reach_depth = [state](int k) { return RESHAPE ? state[NCOL * k + DEPTH] - state[NCOL * k + RISE] : 0.0; };
   auto summit_reach = [](double radi, double radj, double depth_i, double depth_j) {
     return radi + radj - (depth_i + depth_j);
   };
@@ -618,7 +658,7 @@ void PairRuninAsperity::eval(int eflag)
     TouchingPair *out = touching.data();
     const double xi[3] = {x[i][0], x[i][1], x[i][2]};
     const double radi = radius[i];
-    const double depth_i = wear_depth(i);
+    const double depth_i = reach_depth(i);
     int *touch = firsttouch[i];
     double *allhistory = firsthistory[i];
     const int *jlist = firstneigh[i];
@@ -626,7 +666,7 @@ void PairRuninAsperity::eval(int eflag)
       const int j = jlist[jj] & NEIGHMASK;
       const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
       const double rsq = MathExtra::dot3(del, del);
-      const double reach = summit_reach(radi, radius[j], depth_i, wear_depth(j));
+      const double reach = summit_reach(radi, radius[j], depth_i, reach_depth(j));
       const bool in_contact = (!RESHAPE || reach > 0.0) && rsq < reach * reach;
       out[ntouching] = {i, j, &allhistory[HISTORY * jj]};
       ntouching += in_contact;
@@ -650,7 +690,7 @@ void PairRuninAsperity::eval(int eflag)
     const double radi = radius[i], radj = radius[j];
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
     const double rsq = MathExtra::dot3(del, del);
-    const double reach = summit_reach(radi, radj, wear_depth(i), wear_depth(j));
+    const double reach = summit_reach(radi, radj, reach_depth(i), reach_depth(j));
     const int jtype = type[j];
     const tribo::ContactModel &model = *model_table[itype * ntypes1 + jtype];
     const double r = std::sqrt(rsq);
@@ -744,7 +784,7 @@ void PairRuninAsperity::eval(int eflag)
     const int i = touching[invalid_contact].i, j = touching[invalid_contact].j;
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
     const double r = std::sqrt(MathExtra::dot3(del, del));
-    const double reach = summit_reach(radius[i], radius[j], wear_depth(i), wear_depth(j));
+    const double reach = summit_reach(radius[i], radius[j], reach_depth(i), reach_depth(j));
     const tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, 0.0);
     const double drop = RESHAPE ? std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0) : 0.0;
     stop_past_centre(i, j, g.overlap + drop, std::fabs(g.normal_velocity) * step_dt,
@@ -801,7 +841,9 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
       state ? tribo::combined_flat_radius(state[i][FixRuninWearState::FLAT_RADIUS],
                                           state[j][FixRuninWearState::FLAT_RADIUS])
             : 0.0;
-  const double reach = atom->radius[i] + atom->radius[j] - (depth_i + depth_j);
+  const double rise_i = state ? state[i][FixRuninWearState::RISE] : 0.0;
+  const double rise_j = state ? state[j][FixRuninWearState::RISE] : 0.0;
+  const double reach = atom->radius[i] + atom->radius[j] - ((depth_i - rise_i) + (depth_j - rise_j));
   if (!(reach > 0.0) || rsq >= reach * reach) return 0.0;
 
   // this contact's history in i's neighbor list (a copy: single() must not advance it)
@@ -910,8 +952,9 @@ void PairRuninAsperity::read_restart(FILE *fp)
 
 void PairRuninAsperity::write_restart_settings(FILE *fp)
 {
+  // rise rides on the reshape flag as its second bit: files without it read as before
   const int flags[3] = {wear_on ? 1 : 0, contact_settings.archard_form == tribo::ArchardForm::thesis ? 1 : 0,
-                        reshape ? 1 : 0};
+                        (reshape ? 1 : 0) | (rise_on ? 2 : 0)};
   fwrite(flags, sizeof(int), 3, fp);
   fwrite(choice.index.data(), sizeof(int), tribo::kSubModelKinds, fp);
   const double values[2] = {contact_settings.transfer_fraction, contact_settings.restick_speed};
@@ -938,7 +981,8 @@ void PairRuninAsperity::read_restart_settings(FILE *fp)
   }
   wear_on = flags[0] == 1;
   contact_settings.archard_form = flags[1] == 1 ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain;
-  reshape = flags[2] == 1;
+  reshape = (flags[2] & 1) == 1;
+  rise_on = (flags[2] & 2) == 2;
   contact_settings.transfer_fraction = values[0];
   contact_settings.restick_speed = values[1];
 }

@@ -29,7 +29,9 @@ double SummitEnvelope::footprint_above(const EnvelopeSummit &s, double floor)
 
 void SummitEnvelope::add(const EnvelopeSummit &s, double footprint)
 {
-  const double f = std::min(footprint, s.radius);
+  // a summit cut past its equator (drop > R) keeps only the flat of radius sqrt(2 R drop - drop^2)
+  const double past = s.drop > s.radius ? std::sqrt(std::max(s.drop * (2.0 * s.radius - s.drop), 0.0)) : s.radius;
+  const double f = std::min({footprint, s.radius, past});
   if (!(f > 0.0)) return;
   const double r2max = f * f, R2 = s.radius * s.radius, flat = s.radius - std::max(s.drop, 0.0);
   // cell-centre indices (unwrapped) whose centre lies within f of the axis along each direction

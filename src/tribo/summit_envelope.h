@@ -13,7 +13,7 @@ namespace runin::tribo {
 
 // One summit: axis at (x, y), sphere of radius R whose top cap of height `drop` (>= 0) is cut flat, the whole
 // sphere raised so that its centre sits at height `centre`. Height at horizontal distance r <= R from the axis:
-// centre + min(sqrt(R^2 - r^2), R - drop).
+// centre + min(sqrt(R^2 - r^2), R - drop) (for drop > R: the flat alone, within r^2 < 2 R drop - drop^2).
 struct EnvelopeSummit {
   double x, y, centre, radius, drop;
 };
