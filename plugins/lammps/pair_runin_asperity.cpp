@@ -163,6 +163,9 @@ void PairRuninAsperity::settings(int narg, char **arg)
                  keyword);
     }
   }
+  if (rise_on && (!plastic_normal() || !reshape))
+    error->all(FLERR, "pair_style runin/asperity: rise yes needs normal elastic/plastic and reshape yes (only "
+                      "plastically flattened summits displace material); set rise no");
   if ((wear_on || plastic_normal()) && domain->box_exist) attach_wear_state();
 }
 

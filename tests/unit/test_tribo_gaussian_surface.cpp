@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -113,6 +114,11 @@ TEST(GaussianSurface, SummitVarianceFollowsNayaksBandwidthRelation)
                  std::to_string(p.summits));
     EXPECT_GT(p.summits, 10000.0);
     const double nayak = nayak_summit_variance_ratio(p.alpha);
+    // the numbers doc/compute_runin_roughness.rst quotes
+    std::printf("Nayak: alpha %.2f, %.0f summits: summit variance / Rq^2 %.4f (Nayak %.4f), summit RMS / Rq %.4f, "
+                "mean summit height / Rq %.4f (Nayak %.4f)\n",
+                p.alpha, p.summits, p.summit_variance / p.m0, nayak, std::sqrt(p.summit_variance / p.m0),
+                p.summit_mean / std::sqrt(p.m0), nayak_mean_summit_height(p.alpha));
     EXPECT_NEAR(p.summit_variance / p.m0, nayak, 0.05 * nayak);
     if (band == 4.0) {
       EXPECT_NEAR(p.alpha, 4.0, 0.5);
