@@ -54,6 +54,8 @@ def main():
         per_area = after["flattened"] / after["area"]
         change = after["mean_height"] - before["mean_height"]
         results[rise] = (change, per_area, after)
+        print(f"rise {rise}: before loading: surface Rq {before['surface_rq']:.6e} m, summit RMS "
+              f"{before['summit_rq']:.6e} m")
         print(f"rise {rise}: V_f / A = {per_area:.6e} m, mean material height {before['mean_height']:.12e} -> "
               f"{after['mean_height']:.12e} m (change {change:.4e} m = {change / per_area:+.6f} V_f / A), "
               f"rise {after['rise']:.6e} m, surface Rq {after['surface_rq']:.5e} m, summit RMS {after['summit_rq']:.5e} m")
