@@ -489,6 +489,15 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   if (fix_wear && !advance) fix_wear->refresh_geometry_all();
   const bool worn_geometry = reshape && fix_wear;
   if (worn_geometry) fix_wear->forward_geometry();
+  if (rise_on && worn_geometry) {
+    // owned and ghost summits' drop less their body's rise, one per row of the wear state's stride (eval)
+    constexpr int NCOL = FixRuninWearState::NCOLUMNS;
+    const int nall = atom->nlocal + atom->nghost;
+    if (static_cast<int>(reach_drop.size()) < NCOL * nall) reach_drop.resize(NCOL * static_cast<size_t>(atom->nmax));
+    double **state = fix_wear->state();
+    for (int k = 0; k < nall; k++)
+      reach_drop[NCOL * k] = state[k][FixRuninWearState::WEAR_DEPTH] - state[k][FixRuninWearState::RISE];
+  }
   if (track_wear) grow_increments();
 
   constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
@@ -505,18 +514,17 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     // listed owned atoms: add the increments to the state and refresh the geometry; then clear all listed
     double **state = fix_wear->state();
     const double *radius = atom->radius;
-    std::vector<double> flattened_by_type(rise_on ? atom->ntypes + 1 : 0, 0.0);
+    // before the increments are applied: it reads them and the summits' current drops (the loop below is as it was
+    // without the rise, which costs a few % of a plastic step when a test sits in it)
+    if (rise_on) raise_free_surfaces();
     for (int k = 0; k < nworn_owned; k++) {
       const int i = worn_owned[k];
       double *inc = &increment[NINCREMENT * i];
       state[i][FixRuninWearState::VOLUME_LOST] += inc[INC_LOST];
       state[i][FixRuninWearState::VOLUME_GAINED] += inc[INC_GAINED];
-      if (inc[INC_FLATTENED] > 0.0) {
-        const double volume = FixRuninWearState::flattened_volume(radius[i], state[i][FixRuninWearState::WEAR_DEPTH],
-                                                                  inc[INC_FLATTENED]);
-        state[i][FixRuninWearState::VOLUME_FLATTENED] += volume;
-        if (rise_on) flattened_by_type[atom->type[i]] += volume;
-      }
+      if (inc[INC_FLATTENED] > 0.0)
+        state[i][FixRuninWearState::VOLUME_FLATTENED] += FixRuninWearState::flattened_volume(
+            radius[i], state[i][FixRuninWearState::WEAR_DEPTH], inc[INC_FLATTENED]);
       inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
       fix_wear->refresh_geometry(i, radius[i]);
       // a summit worn or flattened past its equator has left the truncated-sphere geometry
@@ -532,7 +540,6 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
     }
     nworn_owned = nworn_ghost = 0;
-    if (rise_on) raise_free_surfaces(flattened_by_type);
   }
 }
 
@@ -540,9 +547,19 @@ void PairRuninAsperity::compute(int eflag, int vflag)
 // flattening in this step reappears as a uniform rise of that body's surface, by volume / nominal area (lx ly). A
 // body is the atoms of one type. All summits rise, those in contact too: their extra interference flattens them
 // again, and the fixed point of that is P&W's rise of the free surface alone by V / (A - A_r).
-void PairRuninAsperity::raise_free_surfaces(const std::vector<double> &flattened_by_type)
+void PairRuninAsperity::raise_free_surfaces()
 {
-  std::vector<double> total(flattened_by_type.size(), 0.0);
+  double **state = fix_wear->state();
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  std::vector<double> flattened_by_type(atom->ntypes + 1, 0.0), total(atom->ntypes + 1, 0.0);
+  for (int k = 0; k < nworn_owned; k++) {
+    const int i = worn_owned[k];
+    const double depth = increment[NINCREMENT * i + INC_FLATTENED];
+    if (depth > 0.0)
+      flattened_by_type[type[i]] +=
+          FixRuninWearState::flattened_volume(radius[i], state[i][FixRuninWearState::WEAR_DEPTH], depth);
+  }
   MPI_Allreduce(flattened_by_type.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE, MPI_SUM, world);
   const double inv_area = 1.0 / (domain->xprd * domain->yprd);
   bool any = false;
@@ -551,8 +568,6 @@ void PairRuninAsperity::raise_free_surfaces(const std::vector<double> &flattened
     any = any || v > 0.0;
   }
   if (!any) return;
-  double **state = fix_wear->state();
-  const int *type = atom->type;
   for (int i = 0; i < atom->nlocal; i++) state[i][FixRuninWearState::RISE] += total[type[i]];
 }
 
@@ -642,9 +657,10 @@ void PairRuninAsperity::eval(int eflag)
   // Centre distance at which two summits touch: worn summits sit lower by their wear depth (higher if material
   // was deposited). Both passes use it, so they agree bit for bit on which pairs touch.
   auto wear_depth = [state](int k) { return RESHAPE ? state[NCOL * k + DEPTH] : 0.0; };
-  // the summit's drop below its intact sphere less its body's rise (rise yes; 0 otherwise): what the reach sees
-  constexpr int RISE = FixRuninWearState::RISE;
-  auto reach_depth = [state](int k) { return RESHAPE ? state[NCOL * k + DEPTH] - state[NCOL * k + RISE] : 0.0; };
+  // What the reach sees: the drop below the intact sphere, less the body's rise with rise yes (then from rows of
+  // the same stride that compute() filled, so the loop reads one value either way and costs nothing without it)
+  const double *reach_rows = rise_on ? reach_drop.data() : (state ? state + DEPTH : nullptr);
+  auto reach_depth = [reach_rows](int k) { return RESHAPE ? reach_rows[NCOL * k] : 0.0; };
   auto summit_reach = [](double radi, double radj, double depth_i, double depth_j) {
     return radi + radj - (depth_i + depth_j);
   };

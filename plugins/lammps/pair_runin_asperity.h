@@ -66,7 +66,8 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   bool wear_on;
   bool reshape;                    // worn geometry (summit drop, flat) enters the normal force
   bool rise_on = false;            // flattened volume raises the free surface of its body (volume-conserving)
-  void raise_free_surfaces(const std::vector<double> &flattened_by_type);
+  std::vector<double> reach_drop;  // with rise_on: per atom (owned + ghost, stride NCOLUMNS) drop less rise
+  void raise_free_surfaces();    // this step's flattened volume per type, before the increments are applied
   runin::tribo::ContactSettings contact_settings;    // Archard form, transfer, re-stick
   double wear_scale = 1.0;    // pair_style wear_scale: factor on Archard k of both bodies (wear acceleration);
                               // applied to the models built in init_one, not to the stored coefficients
