@@ -514,8 +514,8 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     // listed owned atoms: add the increments to the state and refresh the geometry; then clear all listed
     double **state = fix_wear->state();
     const double *radius = atom->radius;
-    // before the increments are applied: it reads them and the summits' current drops (the loop below is as it was
-    // without the rise, which costs a few % of a plastic step when a test sits in it)
+    // before the increments are applied (it reads them and the current drops); a pass of its own, since a test
+    // inside the loop below cost about 2 % of a plastic step without the rise
     if (rise_on) raise_free_surfaces();
     for (int k = 0; k < nworn_owned; k++) {
       const int i = worn_owned[k];
