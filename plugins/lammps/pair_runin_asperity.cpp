@@ -545,8 +545,9 @@ void PairRuninAsperity::compute(int eflag, int vflag)
 
 // Volume-conserving flattening (Pullen and Williamson 1972): the cap volume a body's summits lost to plastic
 // flattening in this step reappears as a uniform rise of that body's surface, by volume / nominal area (lx ly). A
-// body is the atoms of one type. All summits rise, those in contact too: their extra interference flattens them
-// again, and the fixed point of that is P&W's rise of the free surface alone by V / (A - A_r).
+// body is the atoms of one type. All summits rise, those in contact too, so the body's surface moves as a whole:
+// exact for its volume, but under load control the counter-body backs off by the rise and the contacts do not
+// see P&W's rise of the free surface relative to them (doc/rve_cell.md).
 void PairRuninAsperity::raise_free_surfaces()
 {
   double **state = fix_wear->state();
