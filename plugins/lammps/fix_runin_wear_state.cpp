@@ -166,23 +166,14 @@ void FixRuninWearState::unpack_restart(int nlocal, int nth)
   for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = c < columns ? extra[nlocal][m++] : 0.0;
 }
 
-// One loop per column set: a per-atom test of the options cost 2 % of a plastic pair's step (callgrind).
 int FixRuninWearState::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (!send_rise) {
-    for (int k = 0; k < n; k++) {
-      buf[m++] = values[list[k]][WEAR_DEPTH];
-      buf[m++] = values[list[k]][FLAT_RADIUS];
-      if (send_flattened) buf[m++] = values[list[k]][VOLUME_FLATTENED];
-    }
-    return m;
-  }
   for (int k = 0; k < n; k++) {
     buf[m++] = values[list[k]][WEAR_DEPTH];
     buf[m++] = values[list[k]][FLAT_RADIUS];
     if (send_flattened) buf[m++] = values[list[k]][VOLUME_FLATTENED];
-    buf[m++] = values[list[k]][RISE];
+    if (send_rise) buf[m++] = values[list[k]][RISE];
   }
   return m;
 }
@@ -190,19 +181,11 @@ int FixRuninWearState::pack_forward_comm(int n, int *list, double *buf, int /*pb
 void FixRuninWearState::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (!send_rise) {
-    for (int i = first; i < first + n; i++) {
-      values[i][WEAR_DEPTH] = buf[m++];
-      values[i][FLAT_RADIUS] = buf[m++];
-      if (send_flattened) values[i][VOLUME_FLATTENED] = buf[m++];
-    }
-    return;
-  }
   for (int i = first; i < first + n; i++) {
     values[i][WEAR_DEPTH] = buf[m++];
     values[i][FLAT_RADIUS] = buf[m++];
     if (send_flattened) values[i][VOLUME_FLATTENED] = buf[m++];
-    values[i][RISE] = buf[m++];
+    if (send_rise) values[i][RISE] = buf[m++];
   }
 }
 
