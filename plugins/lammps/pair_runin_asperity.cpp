@@ -133,7 +133,8 @@ void PairRuninAsperity::settings(int narg, char **arg)
     } else if (keyword == "reshape") {
       reshape = yes_no("reshape");
     } else if (keyword == "rise") {
-      rise_on = yes_no("rise");
+      rise_free = value == "free";
+      rise_on = rise_free || yes_no("rise (yes, no or free)");
     } else if (keyword == "normal") {
       set_sub_model(SubModelKind::normal, value);
     } else if (keyword == "friction") {
@@ -545,31 +546,59 @@ void PairRuninAsperity::compute(int eflag, int vflag)
 
 // Volume-conserving flattening (Pullen and Williamson 1972): the cap volume a body's summits lost to plastic
 // flattening in this step reappears as a uniform rise of that body's surface, by volume / nominal area (lx ly). A
-// body is the atoms of one type. All summits rise, those in contact too, so the body's surface moves as a whole:
-// exact for its volume, but under load control the counter-body backs off by the rise and the contacts do not
-// see P&W's rise of the free surface relative to them (doc/rve_cell.md).
+// body is the atoms of one type. rise yes: all summits rise, those in contact too, so the body's surface moves as a
+// whole: exact for its volume, but under load control the counter-body backs off by the rise and the contacts do
+// not see P&W's rise of the free surface relative to them. rise free: only the summits out of contact rise, by
+// V / (A N_free / N) (P&W's V / (A - A_r) with equal summit cells; the volume to within the cells' spread).
 void PairRuninAsperity::raise_free_surfaces()
 {
   double **state = fix_wear->state();
   const double *radius = atom->radius;
   const int *type = atom->type;
-  std::vector<double> flattened_by_type(atom->ntypes + 1, 0.0), total(atom->ntypes + 1, 0.0);
+  const int nlocal = atom->nlocal, ntypes1 = atom->ntypes + 1;
+  // per type: flattened volume, summits, summits out of contact
+  std::vector<double> local(3 * ntypes1, 0.0), total(3 * ntypes1, 0.0);
   for (int k = 0; k < nworn_owned; k++) {
     const int i = worn_owned[k];
     const double depth = increment[NINCREMENT * i + INC_FLATTENED];
     if (depth > 0.0)
-      flattened_by_type[type[i]] +=
-          FixRuninWearState::flattened_volume(radius[i], state[i][FixRuninWearState::WEAR_DEPTH], depth);
+      local[type[i]] += FixRuninWearState::flattened_volume(radius[i], state[i][FixRuninWearState::WEAR_DEPTH], depth);
   }
-  MPI_Allreduce(flattened_by_type.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE, MPI_SUM, world);
+  if (rise_free) {
+    // the summits in contact this step: the touch flags pass 1 left in the neighbor list, owners told of ghosts'
+    const int nall = nlocal + atom->nghost;
+    contact_flag.assign(std::max(nall, atom->nmax), 0.0);
+    int **firsttouch = fix_history->firstflag;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *jlist = list->firstneigh[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++)
+        if (firsttouch[i][jj]) contact_flag[i] = contact_flag[jlist[jj] & NEIGHMASK] = 1.0;
+    }
+    if (force->newton_pair) {
+      reverse_contacts = true;
+      runin_compat::reverse_comm(comm, this);
+      reverse_contacts = false;
+    }
+  }
+  for (int i = 0; i < nlocal; i++) {
+    local[ntypes1 + type[i]] += 1.0;
+    if (!rise_free || contact_flag[i] == 0.0) local[2 * ntypes1 + type[i]] += 1.0;
+  }
+  MPI_Allreduce(local.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE, MPI_SUM, world);
+  // the rise of the summits that rise: volume / (A x their share of the body's summits), so that with equal
+  // summit cells the volume is conserved (exactly with rise yes, where all rise)
   const double inv_area = 1.0 / (domain->xprd * domain->yprd);
+  std::vector<double> rise(ntypes1, 0.0);
   bool any = false;
-  for (double &v : total) {
-    v *= inv_area;
-    any = any || v > 0.0;
+  for (int t = 1; t < ntypes1; t++) {
+    const double summits = total[ntypes1 + t], free = total[2 * ntypes1 + t];
+    if (total[t] > 0.0 && free > 0.0) rise[t] = total[t] * inv_area * (summits / free);
+    any = any || rise[t] > 0.0;
   }
   if (!any) return;
-  for (int i = 0; i < atom->nlocal; i++) state[i][FixRuninWearState::RISE] += total[type[i]];
+  for (int i = 0; i < nlocal; i++)
+    if (!rise_free || contact_flag[i] == 0.0) state[i][FixRuninWearState::RISE] += rise[type[i]];
 }
 
 // How far plastic flattening (not wear) lowered the summits of i and j together (ghosts included: the wear
@@ -904,6 +933,10 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
 int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (reverse_contacts) {
+    for (int k = 0; k < n; k++) buf[m++] = contact_flag[first + k];
+    return m;
+  }
   for (int k = 0; k < n; k++) {
     const double *inc = &increment[NINCREMENT * (first + k)];
     buf[m++] = inc[INC_LOST];
@@ -917,6 +950,10 @@ void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
   const int nlocal = atom->nlocal;
+  if (reverse_contacts) {
+    for (int k = 0; k < n; k++) contact_flag[list[k]] = std::max(contact_flag[list[k]], buf[m++]);
+    return;
+  }
   for (int k = 0; k < n; k++) {
     const double lost = buf[m++];
     const double gained = comm_gained ? buf[m++] : 0.0;
@@ -974,7 +1011,7 @@ void PairRuninAsperity::write_restart_settings(FILE *fp)
 {
   // rise rides on the reshape flag as its second bit: files without it read as before
   const int flags[3] = {wear_on ? 1 : 0, contact_settings.archard_form == tribo::ArchardForm::thesis ? 1 : 0,
-                        (reshape ? 1 : 0) | (rise_on ? 2 : 0)};
+                        (reshape ? 1 : 0) | (rise_on ? 2 : 0) | (rise_free ? 4 : 0)};
   fwrite(flags, sizeof(int), 3, fp);
   fwrite(choice.index.data(), sizeof(int), tribo::kSubModelKinds, fp);
   const double values[2] = {contact_settings.transfer_fraction, contact_settings.restick_speed};
@@ -1003,6 +1040,7 @@ void PairRuninAsperity::read_restart_settings(FILE *fp)
   contact_settings.archard_form = flags[1] == 1 ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain;
   reshape = (flags[2] & 1) == 1;
   rise_on = (flags[2] & 2) == 2;
+  rise_free = (flags[2] & 4) == 4;
   contact_settings.transfer_fraction = values[0];
   contact_settings.restick_speed = values[1];
 }

@@ -9,8 +9,10 @@ summit caps, flat where flattened), before the loading and at the end; V_f is th
 plastic flattening, A the nominal area.
   - rise no (1 rank): flattening removes the caps, hbar falls by V_f / A (within 1 %: the height field sees the
     flattened caps the per-atom state holds), and wear off wears nothing;
-  - rise yes (2 ranks): the flattened volume reappears as the rise of the free surface, |hbar_end - hbar_0| <= 1 %
+  - rise yes (2 ranks): the flattened volume reappears as the rise of the whole surface, |hbar_end - hbar_0| <= 1 %
     of V_f / A; the per-atom rise is V_f / A;
+  - rise free (2 ranks): only the summits out of contact rise (by V / (A N_free / N)): some rose by more than V_f / A,
+    and the volume is conserved to the spread of the summits' cells, |hbar_end - hbar_0| <= 5 % of V_f / A;
   - a restart of the rise-yes run gives back the same hbar, V_f and rise (1 rank).
 """
 import argparse
@@ -25,6 +27,7 @@ DECK = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.flatten_rise")
 RESTART_DECK = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.flatten_rise_restart")
 MATERIAL = os.path.join(SOURCE_DIR, "potentials", "Steel1020.runin")
 CONSERVED = 0.01      # |d hbar| / (V_f / A) with rise yes
+CONSERVED_FREE = 0.05 # the same with rise free (measured 2.8 %: the summits out of contact have smaller cells)
 LOSS = 0.01           # |d hbar + V_f / A| / (V_f / A) with rise no
 
 
@@ -45,7 +48,7 @@ def main():
     fresh_dir(args.workdir)
 
     results = {}
-    for rise, np in (("no", 1), ("yes", 2)):
+    for rise, np in (("no", 1), ("yes", 2), ("free", 2)):
         variables = {"rise": rise, "material": MATERIAL}
         if rise == "yes":
             variables["restart"] = "rise.restart"
@@ -74,6 +77,14 @@ def main():
              f"(allowed {CONSERVED:.0%} of V_f / A = {per_area:.6e} m): flattening is not volume-conserving")
     if abs(after["rise"] - per_area) > 1e-9 * per_area:
         fail(f"rise yes: the rise {after['rise']!r} m is not V_f / A = {per_area!r} m")
+
+    change_free, per_area_free, after_free = results["free"]
+    if abs(change_free) > CONSERVED_FREE * per_area_free:
+        fail(f"rise free: the mean material height changed by {change_free / per_area_free:+.4f} V_f / A "
+             f"(allowed {CONSERVED_FREE:.0%})")
+    if not after_free["rise"] > per_area_free:
+        fail(f"rise free: the largest rise {after_free['rise']!r} m is not above V_f / A = {per_area_free!r} m: "
+             "the summits in contact rose too")
 
     restarted = printed(run_lammps(args, RESTART_DECK, {"restart": "rise.restart", "dx": "2.0e-7"}, log="log.restart"), "RESTARTED")
     for key in ("mean_height", "flattened", "rise"):
