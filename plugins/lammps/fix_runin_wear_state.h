@@ -26,7 +26,7 @@ class FixRuninWearState : public Fix {
   // WEAR_DEPTH h (summit drop) and FLAT_RADIUS a_w follow from them and the radius: one truncated sphere
   // whose cap volume is lost + flattened - gained, so wear and plastic flattening act on the same summit.
   // RISE: how far the free surface of the atom's body has risen by the volume its flattened caps displaced
-  // (pair runin/asperity rise yes; Pullen and Williamson 1972) [m]; 0 otherwise.
+  // (pair runin/asperity rise yes or free; Pullen and Williamson 1972) [m]; 0 otherwise.
   enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, VOLUME_FLATTENED, RISE, NCOLUMNS };
   static constexpr const char *default_id = "RUNIN_WEAR_STATE";
   // The wear-state fix of this LAMMPS instance (by its ID), or nullptr; the second form creates it
