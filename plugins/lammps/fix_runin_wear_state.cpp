@@ -18,9 +18,11 @@
 using namespace LAMMPS_NS;
 
 namespace {
-// WEAR_DEPTH, FLAT_RADIUS and VOLUME_FLATTENED: all the force needs from a ghost (the last for a reload of
-// flattened summits, only when a pair asks for it: forward_flattened)
-constexpr int kGeometryColumns = 3;
+// WEAR_DEPTH, FLAT_RADIUS, VOLUME_FLATTENED and RISE: all the force needs from a ghost (the third for a reload
+// of flattened summits, the fourth for a raised free surface, each only when a pair asks for it)
+constexpr int kGeometryColumns = 4;
+// restart records written before RISE held the columns up to VOLUME_FLATTENED
+constexpr int kColumnsBeforeRise = 5;
 }
 
 FixRuninWearState::FixRuninWearState(LAMMPS *lmp, int narg, char **arg) :
@@ -157,8 +159,11 @@ void FixRuninWearState::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  // a record of an older layout (fewer columns) leaves the columns it does not hold at 0
+  const int stored = static_cast<int>(extra[nlocal][m]) - 1;
   m++;
-  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = extra[nlocal][m++];
+  const int columns = stored >= kColumnsBeforeRise && stored <= NCOLUMNS ? stored : NCOLUMNS;
+  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = c < columns ? extra[nlocal][m++] : 0.0;
 }
 
 int FixRuninWearState::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
@@ -168,6 +173,7 @@ int FixRuninWearState::pack_forward_comm(int n, int *list, double *buf, int /*pb
     buf[m++] = values[list[k]][WEAR_DEPTH];
     buf[m++] = values[list[k]][FLAT_RADIUS];
     if (send_flattened) buf[m++] = values[list[k]][VOLUME_FLATTENED];
+    if (send_rise) buf[m++] = values[list[k]][RISE];
   }
   return m;
 }
@@ -179,6 +185,7 @@ void FixRuninWearState::unpack_forward_comm(int n, int first, double *buf)
     values[i][WEAR_DEPTH] = buf[m++];
     values[i][FLAT_RADIUS] = buf[m++];
     if (send_flattened) values[i][VOLUME_FLATTENED] = buf[m++];
+    if (send_rise) values[i][RISE] = buf[m++];
   }
 }
 

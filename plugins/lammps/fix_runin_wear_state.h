@@ -25,7 +25,9 @@ class FixRuninWearState : public Fix {
   // VOLUME_FLATTENED: the summit cap pressed flat by plastic contact (displaced, not removed) [m^3].
   // WEAR_DEPTH h (summit drop) and FLAT_RADIUS a_w follow from them and the radius: one truncated sphere
   // whose cap volume is lost + flattened - gained, so wear and plastic flattening act on the same summit.
-  enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, VOLUME_FLATTENED, NCOLUMNS };
+  // RISE: how far the free surface of the atom's body has risen by the volume its flattened caps displaced
+  // (pair runin/asperity rise yes or free; Pullen and Williamson 1972) [m]; 0 otherwise.
+  enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, VOLUME_FLATTENED, RISE, NCOLUMNS };
   static constexpr const char *default_id = "RUNIN_WEAR_STATE";
   // The wear-state fix of this LAMMPS instance (by its ID), or nullptr; the second form creates it
   // for group all when it does not exist yet. Look it up again at init: it may have been redefined.
@@ -68,6 +70,8 @@ class FixRuninWearState : public Fix {
   void forward_geometry();
   // Whether the ghosts also get VOLUME_FLATTENED (a pair with a plastic normal model reads it for reloads).
   void forward_flattened(bool on) { send_flattened = on; }
+  // Whether the ghosts also get RISE (a pair with volume-conserving flattening reads it for the summit reach).
+  void forward_rise(bool on) { send_rise = on; }
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -85,6 +89,7 @@ class FixRuninWearState : public Fix {
  private:
   double **values;
   bool send_flattened = true;
+  bool send_rise = false;
   void assign_from_variable(Column column, const char *name);
 };
 

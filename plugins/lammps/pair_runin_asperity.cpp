@@ -132,6 +132,9 @@ void PairRuninAsperity::settings(int narg, char **arg)
         error->all(FLERR, "pair_style runin/asperity: archard must be 'plain' or 'thesis', got '{}'", value);
     } else if (keyword == "reshape") {
       reshape = yes_no("reshape");
+    } else if (keyword == "rise") {
+      rise_free = value == "free";
+      rise_on = rise_free || yes_no("rise (yes, no or free)");
     } else if (keyword == "normal") {
       set_sub_model(SubModelKind::normal, value);
     } else if (keyword == "friction") {
@@ -156,11 +159,14 @@ void PairRuninAsperity::settings(int narg, char **arg)
       wear_scale = factor;
     } else {
       error->all(FLERR,
-                 "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, normal, "
+                 "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, rise, normal, "
                  "friction, transfer, restick or wear_scale)",
                  keyword);
     }
   }
+  if (rise_on && (!plastic_normal() || !reshape))
+    error->all(FLERR, "pair_style runin/asperity: rise yes needs normal elastic/plastic and reshape yes (only "
+                      "plastically flattened summits displace material); set rise no");
   if ((wear_on || plastic_normal()) && domain->box_exist) attach_wear_state();
 }
 
@@ -396,6 +402,15 @@ void PairRuninAsperity::init_style()
   // after read_restart, pair_style settings did not run; plastic flattening needs the state too
   if (wear_on || plastic_normal()) attach_wear_state();
   if (fix_wear) fix_wear->forward_flattened(plastic_normal());    // the ghosts' part for reloads
+  if (rise_on) {
+    if (!plastic_normal() || !reshape)
+      error->all(FLERR, "pair_style runin/asperity: rise yes needs normal elastic/plastic and reshape yes (only "
+                        "plastically flattened summits displace material); set rise no");
+    if (!domain->xperiodic || !domain->yperiodic)
+      error->all(FLERR, "pair_style runin/asperity: rise yes needs a box periodic in x and y (the nominal area of "
+                        "a body is lx ly); set rise no or make x and y periodic");
+  }
+  if (fix_wear) fix_wear->forward_rise(rise_on);
 
   // largest radius per type bounds the contact cutoff
   std::vector<double> local(atom->ntypes + 1, 0.0);
@@ -495,13 +510,23 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   if (fix_wear && !advance) fix_wear->refresh_geometry_all();
   const bool worn_geometry = reshape && fix_wear;
   if (worn_geometry) fix_wear->forward_geometry();
+  if (rise_on && worn_geometry) {
+    // owned and ghost summits' drop less their body's rise, one per row of the wear state's stride (eval)
+    constexpr int NCOL = FixRuninWearState::NCOLUMNS;
+    const int nall = atom->nlocal + atom->nghost;
+    if (static_cast<int>(reach_drop.size()) < NCOL * nall) reach_drop.resize(NCOL * static_cast<size_t>(atom->nmax));
+    double **state = fix_wear->state();
+    for (int k = 0; k < nall; k++)
+      reach_drop[NCOL * k] = state[k][FixRuninWearState::WEAR_DEPTH] - state[k][FixRuninWearState::RISE];
+  }
   if (track_wear) grow_increments();
 
   constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
   static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
   const int models_index = choice.of(tribo::SubModelKind::normal) * std::tuple_size_v<tribo::FrictionModels> +
                            choice.of(tribo::SubModelKind::friction);
-  const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
+  // Archard wear only with wear yes: the increments of a plastic model without wear carry flattening alone
+  const int index = (models_index << NFLAGS) | (wear_on && advance ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
   runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
 
@@ -510,6 +535,9 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     // listed owned atoms: add the increments to the state and refresh the geometry; then clear all listed
     double **state = fix_wear->state();
     const double *radius = atom->radius;
+    // before the increments are applied (it reads them and the current drops); a pass of its own, since a test
+    // inside the loop below cost about 2 % of a plastic step without the rise
+    if (rise_on) raise_free_surfaces();
     for (int k = 0; k < nworn_owned; k++) {
       const int i = worn_owned[k];
       double *inc = &increment[NINCREMENT * i];
@@ -534,6 +562,63 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     }
     nworn_owned = nworn_ghost = 0;
   }
+}
+
+// Volume-conserving flattening (Pullen and Williamson 1972): the cap volume a body's summits lost to plastic
+// flattening in this step reappears as a uniform rise of that body's surface, by volume / nominal area (lx ly). A
+// body is the atoms of one type. rise yes: all summits rise, those in contact too, so the body's surface moves as a
+// whole: exact for its volume, but under load control the counter-body backs off by the rise and the contacts do
+// not see P&W's rise of the free surface relative to them. rise free: only the summits out of contact rise, by
+// V / (A N_free / N) (P&W's V / (A - A_r) with equal summit cells; the volume to within the cells' spread).
+void PairRuninAsperity::raise_free_surfaces()
+{
+  double **state = fix_wear->state();
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, ntypes1 = atom->ntypes + 1;
+  // per type: flattened volume, summits, summits out of contact
+  std::vector<double> local(3 * ntypes1, 0.0), total(3 * ntypes1, 0.0);
+  for (int k = 0; k < nworn_owned; k++) {
+    const int i = worn_owned[k];
+    const double depth = increment[NINCREMENT * i + INC_FLATTENED];
+    if (depth > 0.0)
+      local[type[i]] += FixRuninWearState::flattened_volume(radius[i], state[i][FixRuninWearState::WEAR_DEPTH], depth);
+  }
+  if (rise_free) {
+    // the summits in contact this step: the touch flags pass 1 left in the neighbor list, owners told of ghosts'
+    const int nall = nlocal + atom->nghost;
+    contact_flag.assign(std::max(nall, atom->nmax), 0.0);
+    int **firsttouch = fix_history->firstflag;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int *jlist = list->firstneigh[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++)
+        if (firsttouch[i][jj]) contact_flag[i] = contact_flag[jlist[jj] & NEIGHMASK] = 1.0;
+    }
+    if (force->newton_pair) {
+      reverse_contacts = true;
+      runin_compat::reverse_comm(comm, this);
+      reverse_contacts = false;
+    }
+  }
+  for (int i = 0; i < nlocal; i++) {
+    local[ntypes1 + type[i]] += 1.0;
+    if (!rise_free || contact_flag[i] == 0.0) local[2 * ntypes1 + type[i]] += 1.0;
+  }
+  MPI_Allreduce(local.data(), total.data(), static_cast<int>(total.size()), MPI_DOUBLE, MPI_SUM, world);
+  // the rise of the summits that rise: volume / (A x their share of the body's summits), so that with equal
+  // summit cells the volume is conserved (exactly with rise yes, where all rise)
+  const double inv_area = 1.0 / (domain->xprd * domain->yprd);
+  std::vector<double> rise(ntypes1, 0.0);
+  bool any = false;
+  for (int t = 1; t < ntypes1; t++) {
+    const double summits = total[ntypes1 + t], free = total[2 * ntypes1 + t];
+    if (total[t] > 0.0 && free > 0.0) rise[t] = total[t] * inv_area * (summits / free);
+    any = any || rise[t] > 0.0;
+  }
+  if (!any) return;
+  for (int i = 0; i < nlocal; i++)
+    if (!rise_free || contact_flag[i] == 0.0) state[i][FixRuninWearState::RISE] += rise[type[i]];
 }
 
 // How far plastic flattening (not wear) lowered the summits of i and j together (ghosts included: the wear
@@ -575,7 +660,7 @@ tribo::ContactGeometry PairRuninAsperity::contact_geometry(int i, int j, double 
   return g;
 }
 
-// One force evaluation. NORMAL, FRICTION: the sub-models (registry indices); WEAR: advance the wear
+// One force evaluation. NORMAL, FRICTION: the sub-models (registry indices); WEAR: Archard wear (wear yes) into the
 // increments; RESHAPE: worn geometry enters the contact; SUMS: fill the contact sums; EVFLAG: tally energy
 // and virial.
 template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG>
@@ -622,6 +707,10 @@ void PairRuninAsperity::eval(int eflag)
   // Centre distance at which two summits touch: worn summits sit lower by their wear depth (higher if material
   // was deposited). Both passes use it, so they agree bit for bit on which pairs touch.
   auto wear_depth = [state](int k) { return RESHAPE ? state[NCOL * k + DEPTH] : 0.0; };
+  // What the reach sees: the drop below the intact sphere, less the body's rise with rise yes (then from rows of
+  // the same stride that compute() filled, so the loop reads one value either way and costs nothing without it)
+  const double *reach_rows = rise_on ? reach_drop.data() : (state ? state + DEPTH : nullptr);
+  auto reach_depth = [reach_rows](int k) { return RESHAPE ? reach_rows[NCOL * k] : 0.0; };
   auto summit_reach = [](double radi, double radj, double depth_i, double depth_j) {
     return radi + radj - (depth_i + depth_j);
   };
@@ -638,7 +727,7 @@ void PairRuninAsperity::eval(int eflag)
     TouchingPair *out = touching.data();
     const double xi[3] = {x[i][0], x[i][1], x[i][2]};
     const double radi = radius[i];
-    const double depth_i = wear_depth(i);
+    const double depth_i = reach_depth(i);
     int *touch = firsttouch[i];
     double *allhistory = firsthistory[i];
     const int *jlist = firstneigh[i];
@@ -646,7 +735,7 @@ void PairRuninAsperity::eval(int eflag)
       const int j = jlist[jj] & NEIGHMASK;
       const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
       const double rsq = MathExtra::dot3(del, del);
-      const double reach = summit_reach(radi, radius[j], depth_i, wear_depth(j));
+      const double reach = summit_reach(radi, radius[j], depth_i, reach_depth(j));
       const bool in_contact = (!RESHAPE || reach > 0.0) && rsq < reach * reach;
       out[ntouching] = {i, j, &allhistory[HISTORY * jj]};
       ntouching += in_contact;
@@ -670,7 +759,7 @@ void PairRuninAsperity::eval(int eflag)
     const double radi = radius[i], radj = radius[j];
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
     const double rsq = MathExtra::dot3(del, del);
-    const double reach = summit_reach(radi, radj, wear_depth(i), wear_depth(j));
+    const double reach = summit_reach(radi, radj, reach_depth(i), reach_depth(j));
     const int jtype = type[j];
     const tribo::ContactModel &model = *model_table[itype * ntypes1 + jtype];
     const double r = std::sqrt(rsq);
@@ -764,7 +853,7 @@ void PairRuninAsperity::eval(int eflag)
     const int i = touching[invalid_contact].i, j = touching[invalid_contact].j;
     const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
     const double r = std::sqrt(MathExtra::dot3(del, del));
-    const double reach = summit_reach(radius[i], radius[j], wear_depth(i), wear_depth(j));
+    const double reach = summit_reach(radius[i], radius[j], reach_depth(i), reach_depth(j));
     const tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, 0.0);
     const double drop = RESHAPE ? std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0) : 0.0;
     stop_past_centre(i, j, g.overlap + drop, std::fabs(g.normal_velocity) * step_dt,
@@ -821,7 +910,9 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
       state ? tribo::combined_flat_radius(state[i][FixRuninWearState::FLAT_RADIUS],
                                           state[j][FixRuninWearState::FLAT_RADIUS])
             : 0.0;
-  const double reach = atom->radius[i] + atom->radius[j] - (depth_i + depth_j);
+  const double rise_i = state ? state[i][FixRuninWearState::RISE] : 0.0;
+  const double rise_j = state ? state[j][FixRuninWearState::RISE] : 0.0;
+  const double reach = atom->radius[i] + atom->radius[j] - ((depth_i - rise_i) + (depth_j - rise_j));
   if (!(reach > 0.0) || rsq >= reach * reach) return 0.0;
 
   // this contact's history in i's neighbor list (a copy: single() must not advance it)
@@ -862,6 +953,10 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
 int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (reverse_contacts) {
+    for (int k = 0; k < n; k++) buf[m++] = contact_flag[first + k];
+    return m;
+  }
   for (int k = 0; k < n; k++) {
     const double *inc = &increment[NINCREMENT * (first + k)];
     buf[m++] = inc[INC_LOST];
@@ -875,6 +970,10 @@ void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
   const int nlocal = atom->nlocal;
+  if (reverse_contacts) {
+    for (int k = 0; k < n; k++) contact_flag[list[k]] = std::max(contact_flag[list[k]], buf[m++]);
+    return;
+  }
   for (int k = 0; k < n; k++) {
     const double lost = buf[m++];
     const double gained = comm_gained ? buf[m++] : 0.0;
@@ -930,8 +1029,9 @@ void PairRuninAsperity::read_restart(FILE *fp)
 
 void PairRuninAsperity::write_restart_settings(FILE *fp)
 {
+  // rise rides on the reshape flag as its second bit: files without it read as before
   const int flags[3] = {wear_on ? 1 : 0, contact_settings.archard_form == tribo::ArchardForm::thesis ? 1 : 0,
-                        reshape ? 1 : 0};
+                        (reshape ? 1 : 0) | (rise_on ? 2 : 0) | (rise_free ? 4 : 0)};
   fwrite(flags, sizeof(int), 3, fp);
   fwrite(choice.index.data(), sizeof(int), tribo::kSubModelKinds, fp);
   const double values[2] = {contact_settings.transfer_fraction, contact_settings.restick_speed};
@@ -958,7 +1058,9 @@ void PairRuninAsperity::read_restart_settings(FILE *fp)
   }
   wear_on = flags[0] == 1;
   contact_settings.archard_form = flags[1] == 1 ? tribo::ArchardForm::thesis : tribo::ArchardForm::plain;
-  reshape = flags[2] == 1;
+  reshape = (flags[2] & 1) == 1;
+  rise_on = (flags[2] & 2) == 2;
+  rise_free = (flags[2] & 4) == 4;
   contact_settings.transfer_fraction = values[0];
   contact_settings.restick_speed = values[1];
 }

@@ -65,6 +65,12 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   double dt;
   bool wear_on;
   bool reshape;                    // worn geometry (summit drop, flat) enters the normal force
+  bool rise_on = false;            // flattened volume raises the surface of its body (volume-conserving)
+  bool rise_free = false;          // ... only the summits out of contact (rise free; Pullen and Williamson)
+  std::vector<double> contact_flag;    // rise free: 1 for a summit in contact this step (owned + ghost)
+  bool reverse_contacts = false;   // reverse communication carries contact_flag instead of the increments
+  std::vector<double> reach_drop;  // with rise_on: per atom (owned + ghost, stride NCOLUMNS) drop less rise
+  void raise_free_surfaces();    // this step's flattened volume per type, before the increments are applied
   runin::tribo::ContactSettings contact_settings;    // Archard form, transfer, re-stick
   double wear_scale = 1.0;    // pair_style wear_scale: factor on Archard k of both bodies (wear acceleration);
                               // applied to the models built in init_one, not to the stored coefficients

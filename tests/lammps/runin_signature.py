@@ -17,7 +17,8 @@ strength, then a dwell and a restart. Asserted, with the margins below:
   - the worn volume is Archard's k F s / H_soft and splits between asperities and wall as 1/H;
   - after a dwell the contacts have re-stuck: the break-away peak (static excess mu_s - mu_k) returns.
 worn-heights: compute runin/roughness on preset worn asperities (tests/lammps/decks/in.roughness_worn),
-every statistic and both per-atom columns against the closed form of the truncated sphere.
+every statistic and both per-atom columns against the closed form of the truncated sphere, and the surface
+(height-field) statistics against the checker's own rasterisation of the caps' envelope.
 """
 import argparse
 import math
@@ -187,16 +188,55 @@ def signature(args):
     print("ok: run-in signature")
 
 
+def surface_statistics(members, wear_depth, sign, box, spacing):
+    """Ra Rq Rsk Rku Rp Rv Rz, mean height and covered fraction of the caps' envelope on the grid of compute
+    runin/roughness surface (cell centres, periodic x and y; holes at the lowest centre), written anew here."""
+    xlo, xhi, ylo, yhi = box[:4]
+    lx, ly = xhi - xlo, yhi - ylo
+    nx, ny = max(1, round(lx / spacing)), max(1, round(ly / spacing))
+    dx, dy = lx / nx, ly / ny
+    caps = []
+    for k, a in members.items():
+        w = wear_depth(k)
+        centre, drop, r = sign * a["z"] - min(w, 0.0), max(w, 0.0), a["radius"]
+        # the flat alone for a summit cut past its equator
+        reach2 = r * r if drop <= r else max(drop * (2.0 * r - drop), 0.0)
+        caps.append((a["x"], a["y"], centre, r, drop, reach2))
+    base = min(c[2] for c in caps)
+    z, covered = [], 0
+    for iy in range(ny):
+        y = ylo + (iy + 0.5) * dy
+        for ix in range(nx):
+            x = xlo + (ix + 0.5) * dx
+            best = None
+            for cx, cy, centre, r, drop, reach2 in caps:
+                for sx in (-lx, 0.0, lx):
+                    for sy in (-ly, 0.0, ly):
+                        d2 = (x - cx - sx) ** 2 + (y - cy - sy) ** 2
+                        if d2 <= reach2:
+                            h = centre + min(math.sqrt(max(r * r - d2, 0.0)), r - drop)
+                            best = h if best is None else max(best, h)
+            covered += best is not None
+            z.append(base if best is None else best)
+    n = len(z)
+    mean = sum(z) / n
+    d = [v - mean for v in z]
+    m2, m3, m4 = (sum(x ** p for x in d) / n for p in (2, 3, 4))
+    rp, rv = max(z) - mean, mean - min(z)
+    return [sum(abs(x) for x in d) / n, math.sqrt(m2), m3 / m2 ** 1.5, m4 / m2 ** 2, rp, rv, rp + rv, mean, covered / n]
+
+
 def worn_heights(args):
     fresh_dir(args.workdir)
     deck = os.path.join(SOURCE_DIR, "tests", "lammps", "decks", "in.roughness_worn")
     log = run_lammps(args, deck, {}, np=args.np)
 
-    atoms, volumes, computes, groups = {}, {"lost": {}, "gained": {}}, [], {}
+    atoms, volumes, computes, groups, box = {}, {"lost": {}, "gained": {}}, [], {}, None
     for line in open(deck):
         words = line.split("#")[0].split()
         if len(words) >= 6 and words[0] == "create_atoms" and words[2] == "single":
-            atoms[len(atoms) + 1] = {"type": int(words[1]), "z": float(words[5])}
+            atoms[len(atoms) + 1] = {"type": int(words[1]), "x": float(words[3]), "y": float(words[4]),
+                                     "z": float(words[5])}
         elif len(words) == 5 and words[:2] == ["set", "atom"] and words[3] == "diameter":
             atoms[int(words[2])]["radius"] = 0.5 * float(words[4])
         elif len(words) >= 4 and words[0] == "variable" and words[1] in volumes and words[2] == "atom":
@@ -207,8 +247,15 @@ def worn_heights(args):
         elif len(words) >= 4 and words[0] == "compute" and words[3] == "runin/roughness":
             rest = words[4:]
             sign = -1.0 if "side" in rest and rest[rest.index("side") + 1] == "down" else 1.0
-            depths = [float(w) for w in rest[rest.index("bearing") + 1:] if re.fullmatch(r"[-+0-9.eE]+", w)]
-            computes.append((words[1], groups[words[2]], sign, depths))
+            depths = []
+            for w in rest[rest.index("bearing") + 1:]:
+                if not re.fullmatch(r"[-+0-9.eE]+", w):
+                    break
+                depths.append(float(w))
+            spacing = float(rest[rest.index("surface") + 1]) if "surface" in rest else None
+            computes.append((words[1], groups[words[2]], sign, depths, spacing))
+        elif len(words) >= 9 and words[:2] == ["region", "box"]:
+            box = [float(w) for w in words[3:9]]
 
     def wear_depth(atom_id):
         return worn(atoms[atom_id]["radius"], volumes["lost"].get(atom_id, 0.0), volumes["gained"].get(atom_id, 0.0))[0]
@@ -219,7 +266,7 @@ def worn_heights(args):
     columns = lines[start].split()[2:]
     dumped = {int(float(line.split()[0])): dict(zip(columns, map(float, line.split()))) for line in lines[start + 1:]}
     checked, worst = 0, 0.0
-    for name, atom_type, sign, depths in computes:
+    for name, atom_type, sign, depths, spacing in computes:
         members = {k: a for k, a in atoms.items() if a["type"] == atom_type}
         h = {k: sign * a["z"] + a["radius"] - wear_depth(k) for k, a in members.items()}
         values = list(h.values())
@@ -235,6 +282,15 @@ def worn_heights(args):
             if error > 1e-10:
                 fail(f"c_{name}[{k}] = {got!r}, closed form {value!r} (relative error {error:.3e} > 1e-10)")
             worst, checked = max(worst, error), checked + 1
+        if spacing is not None:
+            want = surface_statistics(members, wear_depth, sign, box, spacing)
+            for k, value in enumerate(want, start=len(stats) + 1):
+                got = row[f"c_{name}[{k}]"]
+                error = abs(got - value) / max(abs(value), 1e-300)
+                if error > 1e-9:
+                    fail(f"c_{name}[{k}] (surface statistic {k - len(stats)}) = {got!r}, the checker's rasterisation "
+                         f"{value!r} (relative error {error:.3e} > 1e-9)")
+                worst, checked = max(worst, error), checked + 1
         scale = max(abs(x) for x in d)
         for atom_id, atom in dumped.items():
             want_height = h[atom_id] - mean if atom_id in h else 0.0
