@@ -166,10 +166,13 @@ void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &de
       {"material", c.material_file}, {"rough", c.rough},         {"counterface", c.counterface},
       {"R", g17(c.R)},               {"sigma", g17(c.sigma)},    {"spacing", g17(c.spacing)},
       {"nside", std::to_string(c.nside)}, {"pressure", g17(s.pressure)}, {"speed", g17(c.speed)},
-      {"seed", std::to_string(s.seed)},   {"accel", g17(s.acceleration)}, {"depth", g17(c.depth)},
+      {"seed", std::to_string(s.seed)},   {"accel", g17(s.acceleration * c.wear_scale)}, {"depth", g17(c.depth)},
       {"nslide", std::to_string(c.nslide)}, {"nout", std::to_string(c.nout)}, {"out", s.output().string()},
   };
   if (!c.heights_file.empty()) vars.insert(vars.end(), {{"height_source", "list"}, {"heights", c.heights_file}});
+  if (c.jump_max_depth > 0.0)    // M unbounded: the mean depth per jump sets each jump
+    vars.insert(vars.end(), {{"jump", "1e12"}, {"jump_every", std::to_string(c.jump_every)},
+                             {"jump_max_depth", g17(c.jump_max_depth)}});
   std::string text = "# runin homogenise: sample " + s.key + " (" + s.label() + ")\n";
   text += "log " + quoted(s.log().string()) + "\n";
   text += "print \"$(version)\" file " + quoted((s.dir / "lammps_version").string()) + " screen no\n";
@@ -393,6 +396,9 @@ void check_deck(const HomogeniseCase &c, const fs::path &deck, const std::string
   if (!c.heights_file.empty() && deck_text.find("height_source") == std::string::npos)
     throw InputError(c.path + ": key 'surface.heights': the deck " + deck.string() +
                      " does not read a summit list (it has no height_source variable; inputs/in.rve_wall does)");
+  if (c.jump_max_depth > 0.0 && deck_variable(deck_text, "jump").empty())
+    throw InputError(c.path + ": key 'wear.jump_max_depth': the deck " + deck.string() +
+                     " does not support cycle jumping (it has no jump variable; inputs/in.rve_rough does)");
   // accelerated wear is valid only in a cell whose law in h does not depend on it; the deck says so
   const double top = *std::max_element(c.acceleration.begin(), c.acceleration.end());
   if (top > 1.0 && deck_variable(deck_text, "accel_invariant") != "yes")
@@ -552,6 +558,7 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
         {"date_utc", utc_now()},
         {"host", host_name()}}},
   };
+  if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) metadata["samples"]["wear"] = wear;
   if (!c.heights_file.empty()) {
     metadata["surface"]["heights"] = portable_path(c.heights_file);
     metadata["surface"]["heights_sha256"] = c.heights_sha256;

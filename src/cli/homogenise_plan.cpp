@@ -10,6 +10,7 @@
 
 #include "cli/case_file.h"
 #include "cli/case_reader.h"
+#include "tribo/material_file.h"
 
 namespace runin::cli {
 
@@ -19,10 +20,11 @@ namespace {
 
 const Schema &schema() {
   static const Schema s = {
-      {"", {"title", "deck", "material", "surface", "sliding", "grid"}},
+      {"", {"title", "deck", "material", "surface", "sliding", "grid", "wear"}},
       {"material", {"file", "rough", "counterface"}},
       {"surface", {"R", "sigma", "spacing", "nside", "heights"}},
       {"sliding", {"speed"}},
+      {"wear", {"k", "jump_max_depth", "jump_every"}},
       {"grid",
        {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "nslide",
         "nout"}},
@@ -129,7 +131,46 @@ void read_acceleration(const CaseReader &reader, const toml::table &root, Homoge
   }
 }
 
+// [wear]: the cell's Archard k (both bodies; the material file's pair k when absent) and cycle jumping for mild k
+// (fix runin/wear/jump, doc/rve_cell.md "Mild wear"). A k of its own is the physical k of the cell, not an
+// acceleration: the deck runs it as wear_scale = k / k_file, and grid.acceleration cannot be given with it.
+void read_wear(const CaseReader &reader, HomogeniseCase &c) {
+  if (reader.has("wear.k")) {
+    if (reader.has("grid.acceleration"))
+      reader.fail("wear.k", "give the cell's physical k or grid.acceleration, not both");
+    c.wear_k = reader.positive("wear.k");
+    if (!(c.wear_k <= 1.0)) reader.fail("wear.k", fmt::format("must be at most 1 (a dimensionless Archard k), got {:g}",
+                                                              c.wear_k));
+    double file_k = 0.0;
+    try {
+      std::ifstream in(c.material_file);
+      file_k = tribo::parse_material_file(in, c.material_file).pair(c.rough, c.counterface).wear_coefficient;
+    } catch (const std::exception &e) {
+      reader.fail("wear.k", e.what());
+    }
+    if (!(file_k > 0.0))
+      reader.fail("wear.k", fmt::format("the pair {} / {} of {} has k = 0: the cell cannot scale it", c.rough,
+                                        c.counterface, c.material_file));
+    c.wear_scale = c.wear_k / file_k;    // physical: the law's rates and distances are not rescaled by it
+  }
+  if (reader.has("wear.jump_max_depth")) c.jump_max_depth = reader.positive("wear.jump_max_depth");
+  c.jump_every = reader.positive_integer("wear.jump_every", c.jump_every, 1000000000L);
+  if (reader.has("wear.jump_every") && !(c.jump_max_depth > 0.0))
+    reader.fail("wear.jump_every", "needs wear.jump_max_depth (cycle jumping is off without it)");
+}
+
 }  // namespace
+
+nlohmann::json HomogeniseCase::wear_json() const {
+  if (!(wear_k > 0.0) && !(jump_max_depth > 0.0)) return nullptr;
+  nlohmann::json out = nlohmann::json::object();
+  if (wear_k > 0.0) out["k"] = wear_k;
+  if (jump_max_depth > 0.0) {
+    out["jump_max_depth"] = jump_max_depth;
+    out["jump_every"] = jump_every;
+  }
+  return out;
+}
 
 HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   const toml::table root = parse_toml(path);
@@ -170,6 +211,7 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   for (long j = 0; j < seeds; ++j) c.seeds.push_back(derived_seed(j));
 
   read_acceleration(reader, root, c);
+  read_wear(reader, c);
   c.depth = reader.positive("grid.depth");
   if (c.depth >= c.R) reader.fail("grid.depth", "must be below surface.R");
   c.depth_points = reader.positive_integer("grid.depth_points", c.depth_points, 10000);
@@ -254,6 +296,7 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
           {"code", {{"runin_version", code.runin_version}, {"lmp_sha256", code.lmp_sha256}}},
           {"cache_format", 1},
       };
+      if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) s.inputs["wear"] = wear;
       s.key = sha256_hex(s.inputs.dump());
       s.dir = cache_dir / s.key;
       samples.push_back(std::move(s));

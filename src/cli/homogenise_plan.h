@@ -37,6 +37,13 @@ struct HomogeniseCase {
   double depth = 0.0;                 // target mean worn depth of the rough body [m]
   long depth_points = 11;             // columns of the law's h grid, 0 .. depth
   long nslide = 100000, nout = 100;
+  // [wear]
+  double wear_k = 0.0;           // the cell's Archard k of both bodies (0: the material file's pair k)
+  double wear_scale = 1.0;       // wear_k / the file's k: the deck's wear_scale besides any acceleration
+  double jump_max_depth = 0.0;   // cycle jumping (fix runin/wear/jump): mean depth per jump, h + h_cf [m]; 0: off
+  long jump_every = 1000;        // steps per phase of the jumps
+  // the wear table as the law's metadata and the samples' key record it (null when the case has none)
+  nlohmann::json wear_json() const;
 };
 
 // Reads and validates CASE (TOML, or JSON when it ends in .json); unknown keys, missing required keys and impossible

@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""`runin homogenise` of a mild-wear law: [wear] k = 1e-5 with cycle jumping on inputs/in.rve_rough.
+
+  check_homogenise_mild.py --runin RUNIN --lmp LMP --workdir DIR
+
+AISI 1020 (potentials/Steel1020.runin, whose pair k is the severe 7e-3), 8^2 + 7^2 summits, 2 and 8 MPa, one seed,
+to h = 0.5 nm. Asserted: the law records the wear table (k, jump_max_depth, jump_every); its wear rate at every
+grid point is Archard's at the case's k, k p / H, within 1 % (the rates are physical: the cell ran at k, not at an
+acceleration of the file's k); the sliding distance to the last depth is h H / (k p) within 1 % (the jumps'
+sliding counted), far beyond what the cell slid physically.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE, "tests", "lammps"))
+from run_deck import mpi_env  # noqa: E402
+sys.path.insert(0, os.path.join(SOURCE, "tools"))
+from runin_common import fail, fresh_dir  # noqa: E402
+
+K, H = 1.0e-5, 1.19e9
+CASE = f"""title = "mild-wear law check"
+[material]
+file = "{SOURCE}/potentials/Steel1020.runin"
+rough = "Steel1020"
+counterface = "Steel1020"
+[surface]
+nside = 8
+[sliding]
+speed = 1.0
+[grid]
+pressure_min = 2.0e6
+pressure_max = 8.0e6
+pressures = 2
+seeds = 1
+depth = 5.0e-10
+depth_points = 3
+nslide = 400000
+nout = 200
+[wear]
+k = {K}
+jump_max_depth = 5.0e-11
+"""
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--runin", required=True)
+    ap.add_argument("--lmp", required=True)
+    ap.add_argument("--workdir", required=True)
+    a = ap.parse_args()
+    fresh_dir(a.workdir)
+    case = os.path.join(a.workdir, "mild.toml")
+    with open(case, "w") as f:
+        f.write(CASE)
+    law_path = os.path.join(a.workdir, "law.json")
+    result = subprocess.run([a.runin, "homogenise", case, "--output", law_path, "--cache-dir",
+                             os.path.join(a.workdir, "cache"), "--np", "2", "--lmp", a.lmp, "--deck",
+                             os.path.join(SOURCE, "inputs", "in.rve_rough")],
+                            cwd=a.workdir, env=mpi_env(), capture_output=True, text=True)
+    if result.returncode != 0:
+        fail(f"runin homogenise exited {result.returncode}: {result.stderr[-1500:]}")
+    law = json.load(open(law_path))
+    wear = law["samples"].get("wear")
+    if wear != {"k": K, "jump_max_depth": 5.0e-11, "jump_every": 1000}:
+        fail(f"the law's samples.wear is {wear}")
+    worst = 0.0
+    for i, p in enumerate(law["pressure"]):
+        for j, h in enumerate(law["worn_depth"]):
+            rate = law["fields"]["wear_rate"]["mean"][i][j]
+            error = abs(rate / (K * p / H) - 1.0)
+            worst = max(worst, error)
+            if error > 0.01:
+                fail(f"p = {p:g} Pa, h = {h:g} m: wear rate {rate:.6g}, Archard k p / H = {K * p / H:.6g}")
+        s = law["fields"]["sliding_distance"]["mean"][i][-1]
+        want = law["worn_depth"][-1] * H / (K * p)
+        if abs(s / want - 1.0) > 0.01:
+            fail(f"p = {p:g} Pa: sliding distance to h = {law['worn_depth'][-1]:g} m is {s:.6g} m, h H / (k p) = "
+                 f"{want:.6g} m")
+        print(f"p = {p:g} Pa: sliding to h = {law['worn_depth'][-1]:g} m {s:.5g} m (h H / (k p) {want:.5g} m)")
+    print(f"wear rates within {100 * worst:.3f} % of k p / H at every grid point")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
