@@ -2,6 +2,7 @@
 #include "runin_errors.h"
 #include "runin_citations.h"
 
+#include "fix_runin_film.h"
 #include "fix_runin_wear_state.h"
 #include "runin_lammps_compat.h"
 #include "runin_material_file.h"
@@ -113,6 +114,7 @@ void PairRuninAsperity::set_sub_model(SubModelKind kind, const std::string &name
 
 void PairRuninAsperity::settings(int narg, char **arg)
 {
+  bool coverage_given = false;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
     if (iarg + 1 >= narg)
@@ -148,6 +150,13 @@ void PairRuninAsperity::settings(int narg, char **arg)
       if (!(speed >= 0.0))
         error->all(FLERR, "pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value);
       contact_settings.restick_speed = speed;
+    } else if (keyword == "coverage") {
+      const double theta =
+          runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "coverage", value.c_str());
+      if (!(theta >= 0.0 && theta <= 1.0))
+        error->all(FLERR, "pair_style runin/asperity: coverage: film coverage must be in [0, 1], got '{}'", value);
+      initial_coverage = theta;
+      coverage_given = true;
     } else if (keyword == "wear_scale") {
       const double factor =
           runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "wear_scale factor", value.c_str());
@@ -157,11 +166,23 @@ void PairRuninAsperity::settings(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, normal, "
-                 "friction, transfer, restick or wear_scale)",
+                 "friction, transfer, restick, wear_scale or coverage)",
                  keyword);
     }
   }
+  if (coverage_given && !film_friction())
+    error->all(FLERR,
+               "pair_style runin/asperity: coverage: friction model '{}' has no surface film (film keywords need "
+               "friction junction/film)",
+               tribo::registered_sub_models(SubModelKind::friction)[choice.of(SubModelKind::friction)].name);
   if ((wear_on || plastic_normal()) && domain->box_exist) attach_wear_state();
+  if (film_friction() && domain->box_exist) fix_film = FixRuninFilm::find_or_create(modify, initial_coverage);
+}
+
+bool PairRuninAsperity::film_friction() const
+{
+  static const int index = tribo::find_sub_model(SubModelKind::friction, tribo::JunctionFilmFrictionModel::name);
+  return choice.of(SubModelKind::friction) == index;
 }
 
 bool PairRuninAsperity::plastic_normal() const
@@ -314,9 +335,10 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
   for (int iarg = first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
     if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
-        keyword != "alpha")
+        keyword != "alpha" && keyword != "f_film" && keyword != "s_r" && keyword != "k_g")
       error->all(FLERR,
-                 "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f or alpha)",
+                 "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f, alpha, f_film, "
+                 "s_r or k_g)",
                  keyword);
     const double value =
         runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", keyword,
@@ -331,6 +353,12 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
       p.interface_coefficient = value;
     else if (keyword == "alpha")
       p.junction_alpha = value;
+    else if (keyword == "f_film")
+      p.film_interface_coefficient = value;
+    else if (keyword == "s_r")
+      p.film_removal_distance = value;
+    else if (keyword == "k_g")
+      p.film_growth_rate = value;
     else {
       p.yield_strength = value;
       p.yield_from_hardness = false;
@@ -376,6 +404,8 @@ void PairRuninAsperity::init_style()
   // after read_restart, pair_style settings did not run; plastic flattening needs the state too
   if (wear_on || plastic_normal()) attach_wear_state();
   if (fix_wear) fix_wear->forward_flattened(plastic_normal());    // the ghosts' part for reloads
+  // the film coverage (from the restart file after read_restart: the fix of the same ID takes its values)
+  fix_film = film_friction() ? FixRuninFilm::find_or_create(modify, initial_coverage) : nullptr;
 
   // largest radius per type bounds the contact cutoff
   std::vector<double> local(atom->ntypes + 1, 0.0);
@@ -483,7 +513,17 @@ void PairRuninAsperity::compute(int eflag, int vflag)
                            choice.of(tribo::SubModelKind::friction);
   const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
+  if (fix_film) fix_film->begin_step();
   runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
+  if (fix_film && advance) {
+    // every summit: removed by its contacts' slip, regrown by the kinetics of its type's own pair
+    const int ntypes = atom->ntypes;
+    film_growth.assign(ntypes + 1, 0.0);
+    for (int t = 1; t <= ntypes; t++)
+      if (const tribo::FilmKinetics *kinetics = models[t * (ntypes + 1) + t]->film_kinetics())
+        film_growth[t] = kinetics->growth(dt);
+    fix_film->end_step(force->newton_pair, film_growth.data());
+  }
 
   if (track_wear) {
     if (force->newton_pair) runin_compat::reverse_comm(comm, this);
@@ -584,6 +624,10 @@ void PairRuninAsperity::eval(int eflag)
   constexpr bool PLASTIC_MODEL =
       std::is_same_v<std::tuple_element_t<NORMAL, tribo::NormalModels>, tribo::ElasticPlasticNormalModel>;
   const bool PLASTIC = PLASTIC_MODEL && RESHAPE && advance && increment != nullptr;
+  // a friction model with a surface film reads the summits' coverage and adds to their removal exposure
+  constexpr bool FILM = tribo::HasFilm<std::tuple_element_t<FRICTION, tribo::FrictionModels>>::value;
+  const double *coverage = FILM ? fix_film->coverage() : nullptr;
+  double *film_removal = FILM ? fix_film->exposure() : nullptr;
   RuninContactSums local_sums;
   // NaN and inf propagate through the sum of all pair forces: one add per contact replaces a pass over
   // every atom's force (FixRuninFiniteCheck skips its pass for this pair)
@@ -659,6 +703,7 @@ void PairRuninAsperity::eval(int eflag)
         RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
     tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
     if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
+    if constexpr (FILM) g.film_coverage = 0.5 * (coverage[i] + coverage[j]);
     // a new contact of flattened summits is a reload: the model restores the state that flattened them
     if (PLASTIC_MODEL && RESHAPE && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
       g.flattened_drop = flattened_drop(i, j);
@@ -716,6 +761,12 @@ void PairRuninAsperity::eval(int eflag)
       for (int k = 0; k < 3; k++) local_sums.body_force[k] += side * weight * fpair[k];
     }
 
+    if constexpr (FILM) {
+      if (advance) {
+        film_removal[i] += contact.film_removal;
+        if (j_here) film_removal[j] += contact.film_removal;
+      }
+    }
     if (PLASTIC && contact.normal.residual_increment > 0.0) {
       // the summits sink by the growth of the residual interference, shared by the bodies' hardness
       const double share_i = model.flattening_share_i();
