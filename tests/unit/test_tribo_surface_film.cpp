@@ -77,7 +77,7 @@ TEST(SurfaceFilm, GrowthOffDecaysByTheRemovalClosedForm)
     slid += ds;
     ASSERT_NEAR(theta, 0.9 * std::exp(-slid / 2e-7), 1e-13 * 0.9 * std::exp(-slid / 2e-7)) << k;
   }
-  EXPECT_LT(theta, 0.9 * 0.1);    // 2.5 removal distances slid
+  EXPECT_LT(theta, 0.9 * 0.2);    // about two removal distances slid
 }
 
 // Removal off: the bare fraction decays at the growth rate, theta = 1 - (1 - theta0) exp(-k_g t).
@@ -92,7 +92,7 @@ TEST(SurfaceFilm, RemovalOffGrowsByTheGrowthClosedForm)
     const double want = 1.0 - 0.9 * std::exp(-2e3 * t);
     ASSERT_NEAR(theta, want, 1e-13) << k;
   }
-  EXPECT_GT(theta, 0.8);
+  EXPECT_GT(theta, 0.75);    // about 1.5 growth times
 }
 
 // Both: at a steady slip rate v the coverage relaxes to theta* = k_g / (k_g + v / s_r) at the rate k_g + v / s_r,
