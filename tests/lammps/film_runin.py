@@ -98,6 +98,14 @@ def main():
             fail(f"{name}: the last two windows {w[-2]:.4f}, {w[-1]:.4f} differ by {drift:.1%}: not steady")
         if not tabor(F_FILM) < w[-1] < tabor(F_CLEAN):
             fail(f"{name}: steady mu_body {w[-1]:.4f} outside the film and clean levels")
+        # the steady coverage the adhesion part implies (Tabor inverted, all junctions taken as plastic), and the
+        # fraction phi of the sliding a summit spends in contact that it needs: theta* = k_g / (k_g + phi v / s_r)
+        last = rows[-(len(rows) // 6):]
+        mu_adh = sum(r["mu_adh"] for r in last) / len(last)
+        f = math.sqrt(mu_adh ** 2 * ALPHA / (1.0 + mu_adh ** 2 * ALPHA))
+        theta = (F_CLEAN - f) / (F_CLEAN - F_FILM)
+        phi = film["k_g"] * (1.0 / theta - 1.0) * film["s_r"] / 1.0    # v = 1 m/s
+        print(f"{name}: last window mu_adh {mu_adh:.4f}: f = {f:.3f}, mean coverage {theta:.3f}, phi = {phi:.3f}")
         print(f"ok: {name}: end of loading mu_adh {loaded:.4f} (Tabor at theta_L = {theta_l:.4f}: {start:.4f}); "
               f"mu_body over six windows of s = {rows[-1]['s'] * 1e6:.0f} um: {' '.join(f'{m:.4f}' for m in w)} "
               f"({ratio:.2f} x; last two within {drift:.1%})")
