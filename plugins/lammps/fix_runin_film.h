@@ -6,7 +6,7 @@
 //
 //   fix RUNIN_FILM group RUNIN/FILM [coverage theta0]
 //
-// Output: a per-atom vector, the coverage (f_RUNIN_FILM in dumps, compute reduce, f_RUNIN_FILM[ID] in variables).
+// Output: a per-atom vector, the coverage (f_RUNIN_FILM in dumps and compute reduce).
 #ifdef FIX_CLASS
 // clang-format off
 FixStyle(RUNIN/FILM,FixRuninFilm);

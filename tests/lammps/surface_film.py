@@ -23,7 +23,7 @@ from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps, thermo_blocks  # n
 
 DECKS = os.path.join(SOURCE_DIR, "tests", "lammps", "decks")
 F_CLEAN, F_FILM, ALPHA, DT = 0.8, 0.2, 12.0, 1.0e-9
-KEYS = ("c_fric[1]", "c_fric[2]", "c_fric[13]", "v_theta1", "v_theta2")
+KEYS = ("c_fric[1]", "c_fric[2]", "c_fric[13]", "c_theta1", "c_theta2")
 
 
 def tabor(f, alpha=ALPHA):
@@ -50,7 +50,7 @@ def limits(args):
         worst = max(abs(row["c_fric[2]"] / row["c_fric[1]"] - want) / want for _, row in slid)
         if worst > args.tolerance:
             fail(f"coverage {coverage}: F_t / F_n differs from Tabor's {want:.6g} (f = {f}) by {worst:.3g}")
-        if any(row["v_theta1"] != coverage or row["v_theta2"] != coverage for row in rows):
+        if any(row["c_theta1"] != coverage or row["c_theta2"] != coverage for row in rows):
             fail(f"coverage {coverage}: the coverage changed with removal and growth off")
         last = slid[-1][1]
         print(f"ok: coverage {coverage}: sliding F_t/F_n = {last['c_fric[2]'] / last['c_fric[1]']:.6f}, Tabor at "
@@ -66,10 +66,10 @@ def decay(args):
         if row["c_fric[2]"] > 0.0:
             slid += row["c_fric[13]"] * DT / row["c_fric[2]"]
         want = theta0 * math.exp(-slid / s_r)
-        for key in ("v_theta1", "v_theta2"):
+        for key in ("c_theta1", "c_theta2"):
             worst_theta = max(worst_theta, abs(row[key] - want))
         if row["c_fric[8]"] == 0 and row["c_fric[4]"] == 1:
-            theta = 0.5 * (prev["v_theta1"] + prev["v_theta2"])
+            theta = 0.5 * (prev["c_theta1"] + prev["c_theta2"])
             f = theta * F_FILM + (1.0 - theta) * F_CLEAN
             worst_mu = max(worst_mu, abs(row["c_fric[2]"] / row["c_fric[1]"] - tabor(f)) / tabor(f))
     if worst_theta > 1e-9:
@@ -79,7 +79,7 @@ def decay(args):
     if not slid > 2.0 * s_r:
         fail(f"slid only {slid:.3g} m: the film was not worn")
     last = rows[-1]
-    print(f"ok: growth off, s_r = {s_r} m: after s = {slid:.6g} m theta = {last['v_theta1']:.6g} "
+    print(f"ok: growth off, s_r = {s_r} m: after s = {slid:.6g} m theta = {last['c_theta1']:.6g} "
           f"(theta0 exp(-s/s_r) = {theta0 * math.exp(-slid / s_r):.6g}, worst abs. error {worst_theta:.2g}); "
           f"F_t/F_n {last['c_fric[2]'] / last['c_fric[1]']:.6f} (worst rel. error vs Tabor at f(theta) {worst_mu:.2g})")
 
@@ -113,7 +113,7 @@ def restart(args):
     tail = [row for row in full if row["Step"] >= start]
     worst = compare(tail, second, "restart vs uninterrupted", 1e-15)
     print(f"ok: restart at step {start}: {len(second)} rows equal to the uninterrupted run to {worst:.2g} "
-          f"(coverage at the end {second[-1]['v_theta1']:.6g})")
+          f"(coverage at the end {second[-1]['c_theta1']:.6g})")
 
 
 def ranks(args):
@@ -121,7 +121,7 @@ def ranks(args):
     two = shear(args, BOTH, "log.np2", np=2)
     worst = compare(one, two, "1 vs 2 MPI ranks", 1e-12)
     print(f"ok: 1 and 2 MPI ranks agree to {worst:.2g} over {len(one)} rows (coverage at the end "
-          f"{one[-1]['v_theta1']:.6g})")
+          f"{one[-1]['c_theta1']:.6g})")
 
 
 def main():
