@@ -6,12 +6,15 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "input.h"
 #include "memory.h"
 #include "modify.h"
+#include "variable.h"
 #include "utils.h"
 
 #include <algorithm>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 namespace tribo = runin::tribo;
@@ -27,10 +30,15 @@ FixRuninFilm::FixRuninFilm(LAMMPS *lmp, int narg, char **arg) :
   comm_forward = 1;
   comm_reverse = 1;
 
+  const char *per_atom = nullptr;    // coverage v_name: an atom-style variable, evaluated once below
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg) error->all(FLERR, "fix RUNIN/FILM: keyword '{}' needs a value", arg[iarg]);
     if (strcmp(arg[iarg], "coverage") != 0)
       error->all(FLERR, "fix RUNIN/FILM: unknown keyword '{}' (expected coverage)", arg[iarg]);
+    if (strncmp(arg[iarg + 1], "v_", 2) == 0) {
+      per_atom = arg[iarg + 1];
+      continue;
+    }
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (!(value >= 0.0 && value <= 1.0))
       error->all(FLERR, "fix RUNIN/FILM: coverage: film coverage must be in [0, 1], got {}", arg[iarg + 1]);
@@ -41,6 +49,23 @@ FixRuninFilm::FixRuninFilm(LAMMPS *lmp, int narg, char **arg) :
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+  if (per_atom) {
+    // per-atom initial coverage (e.g. one body covered, the other clean); atoms outside the group keep `initial`
+    const int ivar = input->variable->find(per_atom + 2);
+    if (ivar < 0 || !input->variable->atomstyle(ivar))
+      error->all(FLERR, "fix RUNIN/FILM: coverage needs a number in [0, 1] or an atom-style variable, got '{}'",
+                 per_atom);
+    std::vector<double> result(atom->nlocal + 1, 0.0);
+    input->variable->compute_atom(ivar, igroup, result.data(), 1, 0);
+    const int *mask = atom->mask;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!(mask[i] & groupbit)) continue;
+      if (!(result[i] >= 0.0 && result[i] <= 1.0))
+        error->one(FLERR, "fix RUNIN/FILM: coverage: film coverage must be in [0, 1], got {} for atom {}", result[i],
+                   atom->tag[i]);
+      theta[i] = result[i];
+    }
+  }
 }
 
 FixRuninFilm *FixRuninFilm::find(Modify *modify)

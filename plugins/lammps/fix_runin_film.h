@@ -4,8 +4,10 @@
 // summits'); a per-step removal exposure (sum of slip / s_r over the summit's contacts) is gathered from ghosts by
 // reverse communication and cleared every step.
 //
-//   fix RUNIN_FILM group RUNIN/FILM [coverage theta0]
+//   fix RUNIN_FILM group RUNIN/FILM [coverage theta0 | coverage v_name]
 //
+// Defined by the user (before pair_style, with this ID) only to start from per-atom coverages (an atom-style
+// variable, evaluated once).
 // Output: a per-atom vector, the coverage (f_RUNIN_FILM in dumps and compute reduce).
 #ifdef FIX_CLASS
 // clang-format off

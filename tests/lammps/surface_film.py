@@ -3,7 +3,8 @@
 asperities pressed into the plastic regime and sheared at constant normal load through gross sliding.
 
   limits   coverage 1 with removal and growth off: F_t / F_n while sliding is Tabor's f / sqrt(alpha (1 - f^2)) at
-           f = f_film; coverage 0: at f = f_clean (within --tolerance, 2 %), and the coverage stays as it was
+           f = f_film; coverage 0: at f = f_clean; the lower summit covered, the upper clean: at (f_film + f_clean) / 2
+           (within --tolerance, 2 %), and the coverage stays as it was
   decay    growth off: the coverage after each step is theta0 exp(-s / s_r), s the slip so far (each step's slip from
            the frictional power, entry 13: P dt / F_t), to 1e-9; F_t / F_n of every sliding step is Tabor's at the
            f of the coverage before it (1e-9)
@@ -41,8 +42,10 @@ def sliding(rows):
 
 
 def limits(args):
-    for coverage, f in ((1.0, F_FILM), (0.0, F_CLEAN)):
-        rows = shear(args, {"coverage": coverage}, f"log.limits.{coverage}")
+    # the third case: the lower summit covered, the upper one clean (per-atom initial coverage, fix RUNIN/FILM
+    # coverage v_name): the contact shears at the mean coverage 1/2
+    for coverage, top, f in ((1.0, 1.0, F_FILM), (0.0, 0.0, F_CLEAN), (1.0, 0.0, 0.5 * (F_FILM + F_CLEAN))):
+        rows = shear(args, {"coverage": coverage, "coverage_top": top}, f"log.limits.{coverage}.{top}")
         slid = sliding(rows)
         if len(slid) < 100:
             fail(f"coverage {coverage}: only {len(slid)} sliding steps")
@@ -50,10 +53,10 @@ def limits(args):
         worst = max(abs(row["c_fric[2]"] / row["c_fric[1]"] - want) / want for _, row in slid)
         if worst > args.tolerance:
             fail(f"coverage {coverage}: F_t / F_n differs from Tabor's {want:.6g} (f = {f}) by {worst:.3g}")
-        if any(row["c_theta1"] != coverage or row["c_theta2"] != coverage for row in rows):
-            fail(f"coverage {coverage}: the coverage changed with removal and growth off")
+        if any(row["c_theta1"] != coverage or row["c_theta2"] != top for row in rows):
+            fail(f"coverage {coverage}, {top}: the coverage changed with removal and growth off")
         last = slid[-1][1]
-        print(f"ok: coverage {coverage}: sliding F_t/F_n = {last['c_fric[2]'] / last['c_fric[1]']:.6f}, Tabor at "
+        print(f"ok: coverage {coverage}, {top}: sliding F_t/F_n = {last['c_fric[2]'] / last['c_fric[1]']:.6f}, Tabor at "
               f"f = {f}: {want:.6f} (worst rel. error {worst:.2g} over {len(slid)} sliding steps)")
 
 
