@@ -513,17 +513,21 @@ void PairRuninAsperity::compute(int eflag, int vflag)
                            choice.of(tribo::SubModelKind::friction);
   const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
-  if (fix_film) fix_film->begin_step();
-  runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
-  if (fix_film && advance) {
-    // every summit: removed by its contacts' slip, regrown by the kinetics of its type's own pair
+  if (fix_film) {
+    // the film of each type: its own I,I pair's removal distance and growth rate
     const int ntypes = atom->ntypes;
     film_growth.assign(ntypes + 1, 0.0);
+    film_inverse_removal_.assign(ntypes + 1, 0.0);
     for (int t = 1; t <= ntypes; t++)
-      if (const tribo::FilmKinetics *kinetics = models[t * (ntypes + 1) + t]->film_kinetics())
+      if (const tribo::FilmKinetics *kinetics = models[t * (ntypes + 1) + t]->film_kinetics()) {
         film_growth[t] = kinetics->growth(dt);
-    fix_film->end_step(force->newton_pair, film_growth.data());
+        film_inverse_removal_[t] = kinetics->removal(1.0);
+      }
+    fix_film->begin_step();
   }
+  runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
+  // every summit: removed by its contacts' slip, regrown by its type's growth rate
+  if (fix_film && advance) fix_film->end_step(force->newton_pair, film_growth.data());
 
   if (track_wear) {
     if (force->newton_pair) runin_compat::reverse_comm(comm, this);
@@ -628,6 +632,7 @@ void PairRuninAsperity::eval(int eflag)
   constexpr bool FILM = tribo::HasFilm<std::tuple_element_t<FRICTION, tribo::FrictionModels>>::value;
   const double *coverage = FILM ? fix_film->coverage() : nullptr;
   double *film_removal = FILM ? fix_film->exposure() : nullptr;
+  const double *film_inverse_removal = FILM ? film_inverse_removal_.data() : nullptr;
   RuninContactSums local_sums;
   // NaN and inf propagate through the sum of all pair forces: one add per contact replaces a pass over
   // every atom's force (FixRuninFiniteCheck skips its pass for this pair)
@@ -762,9 +767,11 @@ void PairRuninAsperity::eval(int eflag)
     }
 
     if constexpr (FILM) {
+      // each summit's film is worn over its own body's removal distance (1/s_r of its type, 0: no removal)
       if (advance) {
-        film_removal[i] += contact.film_removal;
-        if (j_here) film_removal[j] += contact.film_removal;
+        const double slip = contact.tangential.slip_increment;
+        film_removal[i] += slip * film_inverse_removal[itype];
+        if (j_here) film_removal[j] += slip * film_inverse_removal[jtype];
       }
     }
     if (PLASTIC && contact.normal.residual_increment > 0.0) {

@@ -562,7 +562,8 @@ class JunctionFrictionModel {
 // Junction growth with a surface film (doc/surface_films.md): Tabor's junction (JunctionFrictionModel) whose
 // interface coefficient follows the film coverage theta of the contact's two summits (their mean, given by the host
 // in ContactGeometry::film_coverage), f = theta f_film + (1 - theta) f_clean; the coverage itself is the hosts'
-// per-summit state, advanced with kinetics() (surface_film.h: removal distance s_r, growth rate k_g).
+// per-summit state, advanced with kinetics() (surface_film.h: removal distance s_r, growth rate k_g), those of the
+// film of each body: the pair host takes a summit's from its type's own I,I pair.
 class JunctionFilmFrictionModel {
  public:
   static constexpr const char *name = "junction/film";
@@ -792,7 +793,6 @@ struct ContactResult {
   FrictionStrengthParts strength; // adhesion and ploughing parts of the friction limit (strength model)
   WearExchange wear;              // volumes lost and gained by body i (a) and the counter-body (b)
   double worn_volume = 0.0;       // volume removed from the contact in this step (lost by both bodies)
-  double film_removal = 0.0;      // friction with a film: removal exposure slip / s_r of this step (each summit)
 };
 
 // Storage for the chosen alternative of a kind: one std::optional per registered class, exactly one set.
@@ -842,8 +842,6 @@ class ContactModel {
     if constexpr (GrowsJunction<Friction>::value)
       out.normal.real_area =
           std::get<FRICTION>(friction_)->junction_area(out.normal, g.flat_radius, fn, out.tangential.force_magnitude);
-    if constexpr (HasFilm<Friction>::value)
-      out.film_removal = std::get<FRICTION>(friction_)->kinetics().removal(out.tangential.slip_increment);
     if (WEAR && out.tangential.slip_increment > 0.0) {
       out.wear = wear().wear(fn, out.tangential.slip_increment);
       out.worn_volume = out.wear.lost_a + out.wear.lost_b;
