@@ -142,7 +142,7 @@ TEST(SurfaceFilm, JunctionFrictionFollowsTheCoverage)
   const tribo::ContactModel model(choice, tribo::contact_coefficients(choice, steel(f_clean, f_film, s_r)), {});
   ASSERT_NE(model.film_kinetics(), nullptr);
   EXPECT_EQ(model.film_kinetics()->removal_distance(), s_r);
-  EXPECT_EQ(model.film_kinetics()->removal(3e-9), 3e-9 / s_r);
+  EXPECT_DOUBLE_EQ(model.film_kinetics()->removal(3e-9), 3e-9 / s_r);
   const double omega_c = tribo::JacksonGreen(1.092e11, R, 350e6, 0.29).critical_interference();
   for (double theta : {1.0, 0.0, 0.25, 0.5}) {
     double history[tribo::CONTACT_HISTORY_SIZE] = {0.0};
