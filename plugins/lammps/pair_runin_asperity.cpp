@@ -2,6 +2,7 @@
 #include "runin_errors.h"
 #include "runin_citations.h"
 
+#include "fix_runin_film.h"
 #include "fix_runin_wear_state.h"
 #include "runin_lammps_compat.h"
 #include "runin_material_file.h"
@@ -113,6 +114,7 @@ void PairRuninAsperity::set_sub_model(SubModelKind kind, const std::string &name
 
 void PairRuninAsperity::settings(int narg, char **arg)
 {
+  bool coverage_given = false;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
     if (iarg + 1 >= narg)
@@ -151,6 +153,13 @@ void PairRuninAsperity::settings(int narg, char **arg)
       if (!(speed >= 0.0))
         error->all(FLERR, "pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value);
       contact_settings.restick_speed = speed;
+    } else if (keyword == "coverage") {
+      const double theta =
+          runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "coverage", value.c_str());
+      if (!(theta >= 0.0 && theta <= 1.0))
+        error->all(FLERR, "pair_style runin/asperity: coverage: film coverage must be in [0, 1], got '{}'", value);
+      initial_coverage = theta;
+      coverage_given = true;
     } else if (keyword == "wear_scale") {
       const double factor =
           runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "wear_scale factor", value.c_str());
@@ -160,14 +169,26 @@ void PairRuninAsperity::settings(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, rise, normal, "
-                 "friction, transfer, restick or wear_scale)",
+                 "friction, transfer, restick, wear_scale or coverage)",
                  keyword);
     }
   }
   if (rise_on && (!plastic_normal() || !reshape))
     error->all(FLERR, "pair_style runin/asperity: rise yes needs normal elastic/plastic and reshape yes (only "
                       "plastically flattened summits displace material); set rise no");
+  if (coverage_given && !film_friction())
+    error->all(FLERR,
+               "pair_style runin/asperity: coverage: friction model '{}' has no surface film (film keywords need "
+               "friction junction/film)",
+               tribo::registered_sub_models(SubModelKind::friction)[choice.of(SubModelKind::friction)].name);
   if ((wear_on || plastic_normal()) && domain->box_exist) attach_wear_state();
+  if (film_friction() && domain->box_exist) fix_film = FixRuninFilm::find_or_create(modify, initial_coverage);
+}
+
+bool PairRuninAsperity::film_friction() const
+{
+  static const int index = tribo::find_sub_model(SubModelKind::friction, tribo::JunctionFilmFrictionModel::name);
+  return choice.of(SubModelKind::friction) == index;
 }
 
 bool PairRuninAsperity::plastic_normal() const
@@ -339,10 +360,10 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
       continue;
     }
     if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
-        keyword != "alpha")
+        keyword != "alpha" && keyword != "f_film" && keyword != "s_r" && keyword != "k_g")
       error->all(FLERR,
-                 "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f, alpha or "
-                 "interface)",
+                 "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f, alpha, interface, "
+                 "f_film, s_r or k_g)",
                  keyword);
     const double value =
         runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", keyword,
@@ -357,6 +378,12 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
       p.interface_coefficient = value;
     else if (keyword == "alpha")
       p.junction_alpha = value;
+    else if (keyword == "f_film")
+      p.film_interface_coefficient = value;
+    else if (keyword == "s_r")
+      p.film_removal_distance = value;
+    else if (keyword == "k_g")
+      p.film_growth_rate = value;
     else {
       p.yield_strength = value;
       p.yield_from_hardness = false;
@@ -411,6 +438,8 @@ void PairRuninAsperity::init_style()
                         "a body is lx ly); set rise no or make x and y periodic");
   }
   if (fix_wear) fix_wear->forward_rise(rise_on);
+  // the film coverage (from the restart file after read_restart: the fix of the same ID takes its values)
+  fix_film = film_friction() ? FixRuninFilm::find_or_create(modify, initial_coverage) : nullptr;
 
   // largest radius per type bounds the contact cutoff
   std::vector<double> local(atom->ntypes + 1, 0.0);
@@ -528,7 +557,21 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   // Archard wear only with wear yes: the increments of a plastic model without wear carry flattening alone
   const int index = (models_index << NFLAGS) | (wear_on && advance ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
+  if (fix_film) {
+    // the film of each type: its own I,I pair's removal distance and growth rate
+    const int ntypes = atom->ntypes;
+    film_growth.assign(ntypes + 1, 0.0);
+    film_inverse_removal_.assign(ntypes + 1, 0.0);
+    for (int t = 1; t <= ntypes; t++)
+      if (const tribo::FilmKinetics *kinetics = models[t * (ntypes + 1) + t]->film_kinetics()) {
+        film_growth[t] = kinetics->growth(dt);
+        film_inverse_removal_[t] = kinetics->removal(1.0);
+      }
+    fix_film->begin_step();
+  }
   runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
+  // every summit: removed by its contacts' slip, regrown by its type's growth rate
+  if (fix_film && advance) fix_film->end_step(force->newton_pair, film_growth.data());
 
   if (track_wear) {
     if (force->newton_pair) runin_compat::reverse_comm(comm, this);
@@ -689,6 +732,11 @@ void PairRuninAsperity::eval(int eflag)
   constexpr bool PLASTIC_MODEL =
       std::is_same_v<std::tuple_element_t<NORMAL, tribo::NormalModels>, tribo::ElasticPlasticNormalModel>;
   const bool PLASTIC = PLASTIC_MODEL && RESHAPE && advance && increment != nullptr;
+  // a friction model with a surface film reads the summits' coverage and adds to their removal exposure
+  constexpr bool FILM = tribo::HasFilm<std::tuple_element_t<FRICTION, tribo::FrictionModels>>::value;
+  const double *coverage = FILM ? fix_film->coverage() : nullptr;
+  double *film_removal = FILM ? fix_film->exposure() : nullptr;
+  const double *film_inverse_removal = FILM ? film_inverse_removal_.data() : nullptr;
   RuninContactSums local_sums;
   // NaN and inf propagate through the sum of all pair forces: one add per contact replaces a pass over
   // every atom's force (FixRuninFiniteCheck skips its pass for this pair)
@@ -768,6 +816,7 @@ void PairRuninAsperity::eval(int eflag)
         RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
     tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
     if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
+    if constexpr (FILM) g.film_coverage = 0.5 * (coverage[i] + coverage[j]);
     // a new contact of flattened summits is a reload: the model restores the state that flattened them
     if (PLASTIC_MODEL && RESHAPE && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
       g.flattened_drop = flattened_drop(i, j);
@@ -825,6 +874,14 @@ void PairRuninAsperity::eval(int eflag)
       for (int k = 0; k < 3; k++) local_sums.body_force[k] += side * weight * fpair[k];
     }
 
+    if constexpr (FILM) {
+      // each summit's film is worn over its own body's removal distance (1/s_r of its type, 0: no removal)
+      if (advance) {
+        const double slip = contact.tangential.slip_increment;
+        film_removal[i] += slip * film_inverse_removal[itype];
+        if (j_here) film_removal[j] += slip * film_inverse_removal[jtype];
+      }
+    }
     if (PLASTIC && contact.normal.residual_increment > 0.0) {
       // the summits sink by the growth of the residual interference, shared by the bodies' hardness
       const double share_i = model.flattening_share_i();

@@ -130,6 +130,13 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   class FixDummy *fix_dummy;
   class FixNeighHistory *fix_history;
   class FixRuninWearState *fix_wear;
+  // Surface film (friction models with a film, friction junction/film): the per-summit coverage, its initial value
+  // (pair_style keyword coverage), and per type (from its own I,I pair) the growth exposure k_g dt and 1 / s_r
+  class FixRuninFilm *fix_film = nullptr;
+  double initial_coverage = 1.0;
+  std::vector<double> film_growth;
+  std::vector<double> film_inverse_removal_;
+  bool film_friction() const;
 
   void allocate();
   void attach_wear_state();

@@ -64,7 +64,8 @@ inline std::vector<const char *> model_citations(const runin::tribo::ContactMode
   }
   if (chosen(SubModelKind::tangential) == "mindlin") entries.push_back(kCiteMindlin);
   if (chosen(SubModelKind::friction) == "brizmer") entries.push_back(kCiteBrizmer);
-  if (chosen(SubModelKind::friction) == "junction") entries.push_back(kCiteTabor);
+  if (chosen(SubModelKind::friction) == "junction" || chosen(SubModelKind::friction) == "junction/film")
+    entries.push_back(kCiteTabor);
   if (wear && chosen(SubModelKind::wear) == "archard") entries.push_back(kCiteArchard);
   if (wall) entries.push_back(kCiteGreenwoodWilliamson);
   return entries;

@@ -41,6 +41,15 @@ inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
 #endif
 }
 
+inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
+{
+#ifdef RUNIN_COMM_OVERLOADS
+  comm->reverse_comm(fix);
+#else
+  comm->reverse_comm_fix(fix);
+#endif
+}
+
 inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)
 {
 #ifdef RUNIN_COMM_OVERLOADS

@@ -4,6 +4,7 @@
 #include "compute_runin_roughness.h"
 #include "fix_runin_wall.h"
 #include "fix_runin_wear_jump.h"
+#include "fix_runin_film.h"
 #include "fix_runin_wear_state.h"
 #include "pair_runin_asperity.h"
 #include "runin_timestep_guard.h"
@@ -42,12 +43,14 @@ template <typename T> Compute *compute_creator(LAMMPS *lmp, int narg, char **arg
 const std::vector<StyleEntry> &styles()
 {
   static const std::vector<StyleEntry> table = {
-      {"pair", "runin/asperity", "RunIn asperity contact: Hertz or elastic/plastic normal, Mindlin with coulomb, strength, brizmer or junction friction, Archard wear",
+      {"pair", "runin/asperity", "RunIn asperity contact: Hertz or elastic/plastic normal, Mindlin with coulomb, strength, brizmer, junction or junction/film friction, Archard wear",
        &create_pair<PairRuninAsperity>, nullptr},
       {"fix", "RUNIN/WEAR_STATE", "RunIn per-atom wear state (internal)", nullptr,
        &create_with_args<FixRuninWearState>},
       {"fix", "runin/wear/jump", "RunIn cycle jumping of asperity wear (slow wear: each phase stands for M phases)",
        nullptr, &create_with_args<FixRuninWearJump>},
+      {"fix", "RUNIN/FILM", "RunIn per-atom surface-film coverage (internal)", nullptr,
+       &create_with_args<FixRuninFilm>},
       {"fix", "RUNIN/FINITE_CHECK", "RunIn non-finite force check (internal)", nullptr,
        &create_with_args<FixRuninFiniteCheck>},
       {"fix", "runin/wall", "RunIn asperities against a rigid flat counterface (displacement or load control)",
@@ -65,6 +68,7 @@ void register_styles(LAMMPS *lmp)
   (*lmp->force->pair_map)["runin/asperity"] = &pair_creator<PairRuninAsperity>;
   (*lmp->modify->fix_map)["RUNIN/WEAR_STATE"] = &fix_creator<FixRuninWearState>;
   (*lmp->modify->fix_map)["runin/wear/jump"] = &fix_creator<FixRuninWearJump>;
+  (*lmp->modify->fix_map)["RUNIN/FILM"] = &fix_creator<FixRuninFilm>;
   (*lmp->modify->fix_map)["RUNIN/FINITE_CHECK"] = &fix_creator<FixRuninFiniteCheck>;
   (*lmp->modify->fix_map)["runin/wall"] = &fix_creator<FixRuninWall>;
   (*lmp->modify->compute_map)["runin/friction"] = &compute_creator<ComputeRuninFriction>;

@@ -243,6 +243,10 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
   if (!friction_model_name.empty())
     c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
         tribo::find_sub_model(tribo::SubModelKind::friction, friction_model_name);
+  // the film coverage is a per-summit state that only pair runin/asperity keeps
+  if (friction_model_name == tribo::JunctionFilmFrictionModel::name)
+    fail(hooks, "fix runin/wall: friction_model 'junction/film' is not supported on the wall (the film coverage "
+                "is kept by pair runin/asperity only); use 'junction'");
   // S_y and nu of the yielding body: keyword 'yield', else the material file, else Tabor's H / 2.8
   if (yield_given) {
     parameters.yield_strength = yield_strength;

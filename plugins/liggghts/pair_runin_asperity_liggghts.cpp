@@ -100,6 +100,10 @@ void PairRuninAsperityLiggghts::set_sub_model(SubModelKind kind, const std::stri
 {
   choice.index[static_cast<int>(kind)] = runin_liggghts::kernel_call(
       lmp, FLERR, "pair_style runin/asperity", true, [&] { return tribo::find_sub_model(kind, name); });
+  // the film coverage is a per-summit state that only the LAMMPS pair keeps
+  if (kind == SubModelKind::friction && name == tribo::JunctionFilmFrictionModel::name)
+    error->all(FLERR, "pair_style runin/asperity: friction 'junction/film' is not supported in LIGGGHTS (the film "
+                      "coverage is kept by the LAMMPS pair only); use 'junction'");
 }
 
 bool PairRuninAsperityLiggghts::plastic_normal() const

@@ -248,6 +248,9 @@ ContactModel::ContactModel(const ContactModelChoice &choice, const ContactCoeffi
   if (std::get<std::optional<JunctionFrictionModel>>(friction_) &&
       !std::get<std::optional<ElasticPlasticNormalModel>>(normal_))
     throw InvalidCoefficient("friction model 'junction' needs the normal model 'elastic/plastic'");
+  if (std::get<std::optional<JunctionFilmFrictionModel>>(friction_) &&
+      !std::get<std::optional<ElasticPlasticNormalModel>>(normal_))
+    throw InvalidCoefficient("friction model 'junction/film' needs the normal model 'elastic/plastic'");
   if (std::get<std::optional<BrizmerFrictionModel>>(friction_)) {
     const auto &plastic = std::get<std::optional<ElasticPlasticNormalModel>>(normal_);
     if (!plastic)
@@ -351,6 +354,31 @@ ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const
       throw InvalidCoefficient("f: friction model 'junction' needs the interface coefficient f, 0 <= f < 1 "
                                "(pair_coeff keyword 'f X', fix runin/wall keyword 'junction f alpha')");
     c.of(K::friction) = {interface_coefficient, p.junction_alpha};
+  }
+  else if (friction == JunctionFilmFrictionModel::name) {
+    if (p.yield_from_hardness)
+      throw InvalidCoefficient("S_y: friction model 'junction/film' needs the yield strength of the softer body, "
+                               "not Tabor's H / 2.8 (pair_coeff keyword 'S_y X' or the material's 6th value in a "
+                               "coefficient file)");
+    if (std::isnan(p.interface_coefficient))
+      throw InvalidCoefficient("f: friction model 'junction/film' needs the clean interface coefficient f, "
+                               "0 <= f < 1 (pair_coeff keyword 'f X')");
+    if (std::isnan(p.film_interface_coefficient))
+      throw InvalidCoefficient("f_film: friction model 'junction/film' needs the film's interface coefficient, "
+                               "0 <= f_film < 1 (pair_coeff keyword 'f_film X')");
+    const auto off_unless_given = [](double v) { return std::isnan(v) ? 0.0 : v; };
+    c.of(K::friction) = {p.interface_coefficient, p.film_interface_coefficient, p.junction_alpha,
+                         off_unless_given(p.film_removal_distance), off_unless_given(p.film_growth_rate)};
+  }
+  // a film's values on a pair whose friction model has none would be ignored: refused
+  if (friction != JunctionFilmFrictionModel::name) {
+    const char *given = !std::isnan(p.film_interface_coefficient) ? "f_film"
+                        : !std::isnan(p.film_removal_distance)    ? "s_r"
+                        : !std::isnan(p.film_growth_rate)         ? "k_g"
+                                                                  : nullptr;
+    if (given)
+      throw InvalidCoefficient(std::string(given) + ": friction model '" + friction +
+                               "' has no surface film (film keywords need friction junction/film)");
   }
   c.of(K::wear) = {p.wear_coefficient, p.hardness_i, p.wear_coefficient, p.hardness_j};
   check_coefficient_counts(choice, c);

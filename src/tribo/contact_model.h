@@ -14,6 +14,7 @@
 #include "tribo/contact.h"
 #include "tribo/elastic_plastic.h"
 #include "tribo/friction_strength.h"
+#include "tribo/surface_film.h"
 #include "tribo/wear.h"
 
 #include <algorithm>
@@ -44,6 +45,9 @@ struct ContactGeometry {
   double normal[3] = {0.0, 0.0, 0.0};    // unit normal, from the counter-body towards body i
   double normal_velocity = 0.0;     // v_n of i relative to the counter-body (< 0: approach) [m/s]
   double tangential_velocity[3] = {0.0, 0.0, 0.0};    // v_t at the contact point, rolling included [m/s]
+  // Mean film coverage of the two summits, in [0, 1]: read only by friction models with a film (HasFilm), so
+  // hosts set it only for them.
+  double film_coverage = 0.0;
 };
 
 // Per-contact history stored by the host (zero for a new contact): the tangential slots, then the slots of
@@ -555,6 +559,79 @@ class JunctionFrictionModel {
   double elastic_ratio_ = 0.0, sliding_ratio_ = 0.0;
 };
 
+// Junction growth with a surface film (doc/surface_films.md): Tabor's junction (JunctionFrictionModel) whose
+// interface coefficient follows the film coverage theta of the contact's two summits (their mean, given by the host
+// in ContactGeometry::film_coverage), f = theta f_film + (1 - theta) f_clean; the coverage itself is the hosts'
+// per-summit state, advanced with kinetics() (surface_film.h: removal distance s_r, growth rate k_g), those of the
+// film of each body: the pair host takes a summit's from its type's own I,I pair.
+class JunctionFilmFrictionModel {
+ public:
+  static constexpr const char *name = "junction/film";
+  static constexpr std::array<const char *, 5> coefficient_names{"f_clean", "f_film", "alpha", "s_r", "k_g"};
+  explicit JunctionFilmFrictionModel(const double *c)
+      : clean_(checked_junction(c[0], c[2], "f_clean")), film_(checked_junction(c[1], c[2], "f_film")),
+        kinetics_(c[3], c[4]), f_clean_(c[0]), f_film_(c[1]), alpha_(c[2])
+  {
+  }
+  Coefficients values() const
+  {
+    return {f_clean_, f_film_, alpha_, kinetics_.removal_distance(), kinetics_.growth_rate()};
+  }
+  static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
+  {
+    Coefficients out(ii.size());
+    for (std::size_t k = 0; k < ii.size(); ++k) out[k] = mix_geometric(ii[k], jj[k]);
+    return out;
+  }
+  const FilmKinetics &kinetics() const { return kinetics_; }
+  const JunctionFrictionModel &clean() const { return clean_; }
+  const JunctionFrictionModel &film() const { return film_; }
+  // The interface coefficient at coverage theta.
+  double interface_coefficient(double theta) const
+  {
+    return FilmKinetics::interpolate(theta, f_clean_, f_film_);
+  }
+  double film_limit(double theta, double normal_force, const NormalContact &normal, double flat_radius,
+                    FrictionStrengthParts &parts) const
+  {
+    if (!(normal_force > 0.0)) return 0.0;
+    const double f = interface_coefficient(theta);
+    const double ratio = JunctionFrictionModel::plastic_junction(normal, flat_radius)
+                             ? f / std::sqrt(alpha_ * (1.0 - f * f))
+                             : f / std::sqrt(alpha_);
+    parts.adhesion = ratio * normal_force;
+    return parts.adhesion;
+  }
+  // The grown area does not depend on f (the criterion's alpha only).
+  double junction_area(const NormalContact &normal, double flat_radius, double normal_force,
+                       double tangential_force) const
+  {
+    return clean_.junction_area(normal, flat_radius, normal_force, tangential_force);
+  }
+
+ private:
+  static JunctionFrictionModel checked_junction(double f, double alpha, const char *what)
+  {
+    try {
+      const double c[2] = {f, alpha};
+      return JunctionFrictionModel(c);
+    } catch (const InvalidCoefficient &e) {
+      const std::string message = e.what();
+      // the junction's own message names f: name the film model's coefficient instead
+      throw InvalidCoefficient(message.rfind("f:", 0) == 0 ? what + message.substr(1) : message);
+    }
+  }
+  JunctionFrictionModel clean_, film_;    // the limits at theta = 0 and 1 (checks, closed forms)
+  FilmKinetics kinetics_;
+  double f_clean_, f_film_, alpha_;
+};
+
+// A friction law that reads the film coverage of the contact (film_limit) and whose summits carry a film the host
+// advances (kinetics()): the hosts keep the per-summit coverage only for these, at compile time.
+template <class Model, class = void> struct HasFilm : std::false_type {};
+template <class Model>
+struct HasFilm<Model, std::void_t<decltype(&Model::film_limit)>> : std::true_type {};
+
 // A friction law whose limit needs the contact's flat and whose real area grows with the tangential force
 // (junction_limit, junction_area): ContactModel::evaluate calls them at compile time, so the other laws do not
 // pay for it.
@@ -621,8 +698,8 @@ constexpr int contact_history_size = TANGENTIAL_HISTORY_SIZE + std::tuple_elemen
 int contact_history_size_of(int normal_index);
 using DampingModels = std::tuple<RestitutionDampingModel>;
 using TangentialModels = std::tuple<MindlinTangentialModel>;
-using FrictionModels =
-    std::tuple<CoulombFrictionModel, StrengthFrictionModel, BrizmerFrictionModel, JunctionFrictionModel>;
+using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel, BrizmerFrictionModel,
+                                  JunctionFrictionModel, JunctionFilmFrictionModel>;
 using WearModels = std::tuple<ArchardWearModel>;
 
 enum class SubModelKind { normal = 0, damping, tangential, friction, wear };
@@ -690,6 +767,11 @@ struct ContactParameters {
   // (-1: none): tau_s = m S_y / sqrt(3) for strength and brizmer, f = m for junction
   InterfaceFactors interface_factors = no_interface_factors();
   int interface_state = -1;
+  // friction junction/film: f is f_clean; the film's f, removal distance and growth rate (NaN: not given; refused
+  // for a friction model without a film, f_film needed, s_r and k_g 0 = off by default)
+  double film_interface_coefficient = std::numeric_limits<double>::quiet_NaN();
+  double film_removal_distance = std::numeric_limits<double>::quiet_NaN();
+  double film_growth_rate = std::numeric_limits<double>::quiet_NaN();
 };
 // Tabor's fallback S_y = H / 2.8 where a material gives no yield strength.
 constexpr double kTaborConstraintFactor = 2.8;
@@ -746,7 +828,10 @@ class ContactModel {
     double &slip = history[HISTORY_SLIP];
     using Friction = std::tuple_element_t<FRICTION, FrictionModels>;
     const double limit = [&] {
-      if constexpr (GrowsJunction<Friction>::value)
+      if constexpr (HasFilm<Friction>::value)
+        return std::get<FRICTION>(friction_)->film_limit(g.film_coverage, fn, out.normal, g.flat_radius,
+                                                         out.strength);
+      else if constexpr (GrowsJunction<Friction>::value)
         return std::get<FRICTION>(friction_)->junction_limit(fn, out.normal, g.flat_radius, out.strength);
       else
         return std::get<FRICTION>(friction_)->limit(slip, fn, out.normal, g.overlap, out.strength);
@@ -800,6 +885,13 @@ class ContactModel {
     const double hi = wear().body_i().hardness(), hj = wear().body_j().hardness();
     return hj / (hi + hj);
   }
+  // The film kinetics of the chosen friction model, or nullptr when it has no film.
+  const FilmKinetics *film_kinetics() const
+  {
+    const FilmKinetics *out = nullptr;
+    std::apply([&](const auto &...slot) { (film_of(slot, out), ...); }, friction_);
+    return out;
+  }
   const RestitutionDampingModel &damping() const { return *std::get<0>(damping_); }
   const MindlinTangentialModel &tangential() const { return *std::get<0>(tangential_); }
 
@@ -815,6 +907,11 @@ class ContactModel {
   SubModelSlots<FrictionModels>::type friction_;
   SubModelSlots<WearModels>::type wear_;
   double restick_speed_;
+  template <class Slot> static void film_of(const Slot &slot, const FilmKinetics *&out)
+  {
+    if constexpr (HasFilm<typename Slot::value_type>::value)
+      if (slot) out = &slot->kinetics();
+  }
 };
 
 namespace detail {

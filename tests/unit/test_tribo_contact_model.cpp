@@ -49,7 +49,7 @@ TEST(ContactModelRegistry, NamesAndUnknownModelsListTheKnownOnes)
     tribo::find_sub_model(SubModelKind::friction, "amontons");
     FAIL() << "an unknown friction model was accepted";
   } catch (const tribo::InvalidCoefficient &e) {
-    EXPECT_EQ(std::string(e.what()), "unknown friction model 'amontons' (known: coulomb, strength, brizmer, junction)");
+    EXPECT_EQ(std::string(e.what()), "unknown friction model 'amontons' (known: coulomb, strength, brizmer, junction, junction/film)");
   }
 }
 
