@@ -26,12 +26,14 @@ int dump_to_vtk(const std::string &dump_path, const std::string &output_dir, con
   } catch (const coupling::InputFormatError &e) {
     throw InputError(e.what());
   }
-  // The per-atom wear state's columns (fix RUNIN/WEAR_STATE, ID RUNIN_WEAR_STATE) under the names of what they
+  // The per-atom wear state's columns (fix RUNIN/WEAR_STATE, ID RUNIN_WEAR_STATE) and the film coverage (fix
+  // RUNIN/FILM, ID RUNIN_FILM) under the names of what they
   // hold, so that ParaView lists worn_depth rather than f_RUNIN_WEAR_STATE[3]
   static const std::map<std::string, std::string> readable = {
       {"f_RUNIN_WEAR_STATE[1]", "volume_lost"},   {"f_RUNIN_WEAR_STATE[2]", "volume_gained"},
       {"f_RUNIN_WEAR_STATE[3]", "worn_depth"},    {"f_RUNIN_WEAR_STATE[4]", "flat_radius"},
-      {"f_RUNIN_WEAR_STATE[5]", "volume_flattened"}};
+      {"f_RUNIN_WEAR_STATE[5]", "volume_flattened"}, {"f_RUNIN_WEAR_STATE[6]", "surface_rise"},
+      {"f_RUNIN_FILM", "film_coverage"}};
   for (auto &snapshot : snapshots)
     for (auto &column : snapshot.columns)
       if (const auto name = readable.find(column); name != readable.end()) column = name->second;

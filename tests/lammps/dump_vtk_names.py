@@ -6,7 +6,8 @@
 
 The deck dumps f_RUNIN_WEAR_STATE[1..4] (fix RUNIN/WEAR_STATE: volume lost, volume gained, worn depth, flat
 radius); asserted: every .vtp of the series has the point arrays volume_lost, volume_gained, worn_depth and
-flat_radius, and none named f_RUNIN_WEAR_STATE[n].
+flat_radius, and none named f_RUNIN_WEAR_STATE[n]; a one-atom dump with columns 5 and 6 and the film coverage
+(f_RUNIN_FILM) gets volume_flattened, surface_rise and film_coverage.
 """
 import argparse
 import glob
@@ -50,6 +51,21 @@ def main():
         if missing or raw:
             fail(f"{os.path.basename(path)}: arrays {names}: missing {missing}, unnamed {raw}")
     print(f"{len(files)} .vtp files, arrays: {', '.join(names)}")
+    # the columns the deck does not dump: flattened volume, surface rise (pair rise) and film coverage (junction/film)
+    with open(os.path.join(workdir, "columns.dump"), "w") as f:
+        f.write("ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS pp pp ff\n0 1\n0 1\n0 1\n"
+                "ITEM: ATOMS id type x y z f_RUNIN_WEAR_STATE[5] f_RUNIN_WEAR_STATE[6] f_RUNIN_FILM\n"
+                "1 1 0.5 0.5 0.5 1e-21 2e-9 0.75\n")
+    result = subprocess.run([args.runin, "dump-to-vtk", "columns.dump", "--output-dir", "vtk_columns"], cwd=workdir,
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        fail(f"runin dump-to-vtk exited with {result.returncode}: {result.stdout}{result.stderr}")
+    text = "".join(open(p, errors="replace").read() for p in glob.glob(os.path.join(workdir, "vtk_columns", "*.vtp")))
+    names = re.findall(r'<DataArray[^>]*Name="([^"]+)"', text)
+    missing = [n for n in ("volume_flattened", "surface_rise", "film_coverage") if n not in names]
+    if missing or [n for n in names if n.startswith("f_RUNIN")]:
+        fail(f"columns.dump: arrays {names}: missing {missing}")
+    print(f"flattened volume, rise and film coverage: {', '.join(names)}")
     print("PASS")
 
 
