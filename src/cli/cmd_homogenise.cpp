@@ -170,6 +170,10 @@ void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &de
       {"nslide", std::to_string(c.nslide)}, {"nout", std::to_string(c.nout)}, {"out", s.output().string()},
   };
   if (!c.heights_file.empty()) vars.insert(vars.end(), {{"height_source", "list"}, {"heights", c.heights_file}});
+  if (!c.contact_json().is_null()) {
+    vars.emplace_back("friction", c.friction);
+    if (!c.interface.empty()) vars.emplace_back("interface", c.interface);
+  }
   if (c.jump_max_depth > 0.0)    // M unbounded: the mean depth per jump sets each jump
     vars.insert(vars.end(), {{"jump", "1e12"}, {"jump_every", std::to_string(c.jump_every)},
                              {"jump_max_depth", g17(c.jump_max_depth)}});
@@ -396,6 +400,10 @@ void check_deck(const HomogeniseCase &c, const fs::path &deck, const std::string
   if (!c.heights_file.empty() && deck_text.find("height_source") == std::string::npos)
     throw InputError(c.path + ": key 'surface.heights': the deck " + deck.string() +
                      " does not read a summit list (it has no height_source variable; inputs/in.rve_wall does)");
+  if (!c.contact_json().is_null() && deck_variable(deck_text, "interface").empty())
+    throw InputError(c.path + ": key 'contact.friction': the deck " + deck.string() +
+                     " takes no friction model or interface state (it has no interface variable; inputs/in.rve_rough "
+                     "and inputs/in.rve_wall do)");
   if (c.jump_max_depth > 0.0 && deck_variable(deck_text, "jump").empty())
     throw InputError(c.path + ": key 'wear.jump_max_depth': the deck " + deck.string() +
                      " does not support cycle jumping (it has no jump variable; inputs/in.rve_rough does)");
@@ -559,6 +567,7 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
         {"host", host_name()}}},
   };
   if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) metadata["samples"]["wear"] = wear;
+  if (const nlohmann::json contact = c.contact_json(); !contact.is_null()) metadata["samples"]["contact"] = contact;
   if (!c.heights_file.empty()) {
     metadata["surface"]["heights"] = portable_path(c.heights_file);
     metadata["surface"]["heights_sha256"] = c.heights_sha256;

@@ -10,6 +10,7 @@
 
 #include "cli/case_file.h"
 #include "cli/case_reader.h"
+#include "tribo/friction_strength.h"
 #include "tribo/material_file.h"
 
 namespace runin::cli {
@@ -20,10 +21,11 @@ namespace {
 
 const Schema &schema() {
   static const Schema s = {
-      {"", {"title", "deck", "material", "surface", "sliding", "grid", "wear"}},
+      {"", {"title", "deck", "material", "surface", "sliding", "grid", "contact", "wear"}},
       {"material", {"file", "rough", "counterface"}},
       {"surface", {"R", "sigma", "spacing", "nside", "heights"}},
       {"sliding", {"speed"}},
+      {"contact", {"friction", "interface"}},
       {"wear", {"k", "jump_max_depth", "jump_every"}},
       {"grid",
        {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "nslide",
@@ -131,6 +133,29 @@ void read_acceleration(const CaseReader &reader, const toml::table &root, Homoge
   }
 }
 
+// [contact]: the cell's friction sub-model and the interface state whose friction factor m the material file gives
+// (tau_s = m S_y / sqrt(3) for strength and brizmer, f = m for junction; doc/interface_strength.md). The state is
+// checked here against the file's pair (a missing line names the key); the deck's pair_coeff checks the rest.
+void read_contact(const CaseReader &reader, HomogeniseCase &c) {
+  c.friction = reader.choice("contact.friction", {"strength", "brizmer", "junction"}, c.friction);
+  c.interface = reader.text("contact.interface", "");
+  if (c.friction == "junction" && c.interface.empty())
+    reader.fail("contact.friction", "junction needs contact.interface (its f is the state's friction factor m)");
+  if (c.interface.empty()) return;
+  try {
+    const int state = tribo::find_interface_state(c.interface);
+    std::ifstream in(c.material_file);
+    const auto pair = tribo::parse_material_file(in, c.material_file).pair(c.rough, c.counterface);
+    if (std::isnan(pair.interface_factor[static_cast<std::size_t>(state)]))
+      reader.fail("contact.interface", fmt::format("the file {} has no 'interface {} {} {} m' line", c.material_file,
+                                                   c.rough, c.counterface, c.interface));
+  } catch (const std::invalid_argument &e) {    // an unknown state (InvalidCoefficient) or a bad file
+    reader.fail("contact.interface", e.what());
+  } catch (const std::runtime_error &e) {
+    reader.fail("contact.interface", e.what());
+  }
+}
+
 // [wear]: the cell's Archard k (both bodies; the material file's pair k when absent) and cycle jumping for mild k
 // (fix runin/wear/jump, doc/rve_cell.md "Mild wear"). A k of its own is the physical k of the cell, not an
 // acceleration: the deck runs it as wear_scale = k / k_file, and grid.acceleration cannot be given with it.
@@ -160,6 +185,13 @@ void read_wear(const CaseReader &reader, HomogeniseCase &c) {
 }
 
 }  // namespace
+
+nlohmann::json HomogeniseCase::contact_json() const {
+  if (friction == "strength" && interface.empty()) return nullptr;
+  nlohmann::json out = {{"friction", friction}};
+  if (!interface.empty()) out["interface"] = interface;
+  return out;
+}
 
 nlohmann::json HomogeniseCase::wear_json() const {
   if (!(wear_k > 0.0) && !(jump_max_depth > 0.0)) return nullptr;
@@ -211,6 +243,7 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   for (long j = 0; j < seeds; ++j) c.seeds.push_back(derived_seed(j));
 
   read_acceleration(reader, root, c);
+  read_contact(reader, c);
   read_wear(reader, c);
   c.depth = reader.positive("grid.depth");
   if (c.depth >= c.R) reader.fail("grid.depth", "must be below surface.R");
@@ -297,6 +330,7 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
           {"cache_format", 1},
       };
       if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) s.inputs["wear"] = wear;
+      if (const nlohmann::json contact = c.contact_json(); !contact.is_null()) s.inputs["contact"] = contact;
       s.key = sha256_hex(s.inputs.dump());
       s.dir = cache_dir / s.key;
       samples.push_back(std::move(s));

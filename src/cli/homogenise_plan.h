@@ -37,11 +37,16 @@ struct HomogeniseCase {
   double depth = 0.0;                 // target mean worn depth of the rough body [m]
   long depth_points = 11;             // columns of the law's h grid, 0 .. depth
   long nslide = 100000, nout = 100;
+  // [contact]
+  std::string friction = "strength";  // the cell's friction sub-model (the deck's `friction` variable)
+  std::string interface;              // interface state of the material file (clean, oxidised, boundary); empty: none
   // [wear]
   double wear_k = 0.0;           // the cell's Archard k of both bodies (0: the material file's pair k)
   double wear_scale = 1.0;       // wear_k / the file's k: the deck's wear_scale besides any acceleration
   double jump_max_depth = 0.0;   // cycle jumping (fix runin/wear/jump): mean depth per jump, h + h_cf [m]; 0: off
   long jump_every = 1000;        // steps per phase of the jumps
+  // the contact table as the law's metadata and the samples' key record it (null at the defaults)
+  nlohmann::json contact_json() const;
   // the wear table as the law's metadata and the samples' key record it (null when the case has none)
   nlohmann::json wear_json() const;
 };

@@ -1,14 +1,20 @@
 #!/usr/bin/env python3
-"""`runin homogenise` of a mild-wear law: [wear] k = 1e-5 with cycle jumping on inputs/in.rve_rough.
+"""`runin homogenise` of a mild-wear law ([wear] k = 1e-5 with cycle jumping) and of a dry junction law ([contact]
+friction junction at the file's oxidised state) on inputs/in.rve_rough.
 
-  check_homogenise_mild.py --runin RUNIN --lmp LMP --workdir DIR
+  check_homogenise_mild.py --runin RUNIN --lmp LMP --workdir DIR [--mode wear|contact]
 
 AISI 1020 (potentials/Steel1020.runin, whose pair k is the severe 7e-3), 8^2 + 7^2 summits, 2 and 8 MPa, one seed,
 to h = 0.5 nm. Asserted: the law records the wear table (k, jump_max_depth, jump_every); its wear rate at every
 grid point is Archard's at the case's k, k p / H, within 1 % (the rates are physical: the cell ran at k, not at an
 acceleration of the file's k); the sliding distance to the last depth is h H / (k p) within 1 % (the jumps'
 sliding counted), far beyond what the cell slid physically.
+contact: the same cell at the file's k with [contact] friction = "junction", interface = "oxidised": the law records
+the table, and its mu_body at every grid point is Tabor's f / sqrt(alpha (1 - f^2)) for f = the file's oxidised m
+and alpha = 12, within 5 % (every contact of a worn rough-on-rough cell is a plastic junction; the rest is the
+normal forces' tilt, ~2-3 %, doc/interface_strength.md).
 """
+import math
 import argparse
 import json
 import os
@@ -46,16 +52,43 @@ jump_max_depth = 5.0e-11
 """
 
 
+def oxidised_m():
+    """m of the Steel1020 pair's 'interface ... oxidised m' line."""
+    for line in open(os.path.join(SOURCE, "potentials", "Steel1020.runin")):
+        words = line.split()
+        if words[:1] == ["interface"] and words[3:4] == ["oxidised"]:
+            return float(words[4])
+    fail("potentials/Steel1020.runin has no oxidised interface line")
+
+
+def check_contact(law):
+    if law["samples"].get("contact") != {"friction": "junction", "interface": "oxidised"}:
+        fail(f"the law's samples.contact is {law['samples'].get('contact')}")
+    f = oxidised_m()
+    tabor = f / math.sqrt(12.0 * (1.0 - f * f))
+    mu = [v for row in law["fields"]["mu_body"]["mean"] for v in row[1:]]
+    worst = max(abs(v / tabor - 1.0) for v in mu)
+    print(f"junction, oxidised (m = {f}): mu_body {min(mu):.4f}-{max(mu):.4f}, Tabor {tabor:.4f}, "
+          f"worst {100 * worst:.2f} %")
+    if worst > 0.05:
+        fail(f"mu_body {min(mu):.4f}-{max(mu):.4f} is not within 5 % of Tabor's {tabor:.4f}")
+    print("PASS")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--runin", required=True)
     ap.add_argument("--lmp", required=True)
     ap.add_argument("--workdir", required=True)
+    ap.add_argument("--mode", choices=("wear", "contact"), default="wear")
     a = ap.parse_args()
     fresh_dir(a.workdir)
     case = os.path.join(a.workdir, "mild.toml")
+    text = CASE
+    if a.mode == "contact":
+        text = text[:text.index("[wear]")] + '[contact]\nfriction = "junction"\ninterface = "oxidised"\n'
     with open(case, "w") as f:
-        f.write(CASE)
+        f.write(text)
     law_path = os.path.join(a.workdir, "law.json")
     result = subprocess.run([a.runin, "homogenise", case, "--output", law_path, "--cache-dir",
                              os.path.join(a.workdir, "cache"), "--np", "2", "--lmp", a.lmp, "--deck",
@@ -64,6 +97,9 @@ def main():
     if result.returncode != 0:
         fail(f"runin homogenise exited {result.returncode}: {result.stderr[-1500:]}")
     law = json.load(open(law_path))
+    if a.mode == "contact":
+        check_contact(law)
+        return
     wear = law["samples"].get("wear")
     if wear != {"k": K, "jump_max_depth": 5.0e-11, "jump_every": 1000}:
         fail(f"the law's samples.wear is {wear}")
