@@ -45,6 +45,9 @@ DENSE_EXTRA = {
     "f": ("runin/asperity, all physics + elastic/plastic, reshape no (no worn or flattened summit in the "
           "contact)", "(f) = (e), reshape no", "pair_runin_full.in",
           {"normal": "elastic/plastic", "reshape": "no"}),
+    "g": ("runin/asperity, (f) with friction junction/film (junction growth, per-summit film coverage worn off "
+          "and regrown)", "(g) = (f), junction/film", "pair_runin_film.in",
+          {"normal": "elastic/plastic", "reshape": "no"}),
 }
 TARGET_STYLES = {"e": 0.85, "d": 1.15}    # Pair-timer ratio to (a), from the issue
 TIMER_ROWS = ("Pair", "Neigh", "Comm", "Output", "Modify", "Other")
