@@ -24,6 +24,9 @@
 
 using namespace LAMMPS_NS;
 
+static_assert(ComputeRuninRoughness::S_RZ - ComputeRuninRoughness::S_RA == runin_roughness::RZ - runin_roughness::RA,
+              "the surface entries follow runin_roughness::Entry");
+
 ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), sign(1.0), nmax(0), peratom(nullptr), fix_wear(nullptr), surface_dx(0.0)
 {
@@ -164,15 +167,8 @@ void ComputeRuninRoughness::compute_surface(double *out)
   }
   MPI_Allreduce(MPI_IN_PLACE, z.data(), static_cast<int>(z.size()), MPI_DOUBLE, MPI_MAX, world);
   const runin::tribo::EnvelopeStatistics stats = runin::tribo::envelope_statistics(z, -counts[1]);
-  const auto &r = stats.roughness;
-  out[S_RA] = r.Ra;
-  out[S_RQ] = r.Rq;
-  out[S_RSK] = r.Rsk;
-  out[S_RKU] = r.Rku;
-  out[S_RP] = r.Rp;
-  out[S_RV] = r.Rv;
-  out[S_RZ] = r.Rz;
-  out[S_MEAN] = r.mean;
+  runin_roughness::write_fixed(stats.roughness, out + S_RA);
+  out[S_MEAN] = stats.roughness.mean;
   out[S_COVERED] = stats.covered;
 }
 

@@ -21,6 +21,7 @@ class ComputeRuninRoughness : public Compute {
  public:
   enum PerAtomColumn { HEIGHT = 0, WEAR_DEPTH, NPERATOM };
   // Entries of the surface (height-field) statistics, appended after the bearing ratios (keyword surface).
+  // S_RA .. S_RZ in the order of runin_roughness::Entry (runin_roughness::write_fixed fills them)
   enum SurfaceEntry { S_RA = 0, S_RQ, S_RSK, S_RKU, S_RP, S_RV, S_RZ, S_MEAN, S_COVERED, NSURFACE };
 
   ComputeRuninRoughness(class LAMMPS *, int, char **);

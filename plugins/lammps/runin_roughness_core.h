@@ -15,6 +15,19 @@ namespace runin_roughness {
 // Entries of the global vector: Ra Rq Rsk Rku Rp Rv Rz, then one bearing ratio per depth.
 enum Entry { RA = 0, RQ, RSK, RKU, RP, RV, RZ, NFIXED };
 
+// The seven fixed statistics into out[RA .. RZ] (the summit entries, and the surface entries that follow them in
+// the same order).
+inline void write_fixed(const runin::tribo::RoughnessStatistics &stats, double *out)
+{
+  out[RA] = stats.Ra;
+  out[RQ] = stats.Rq;
+  out[RSK] = stats.Rsk;
+  out[RKU] = stats.Rku;
+  out[RP] = stats.Rp;
+  out[RV] = stats.Rv;
+  out[RZ] = stats.Rz;
+}
+
 // `member(i)` selects the local summits, `height(i)` gives a summit's height; fills vector[0 .. NFIXED + depths).
 // Collective on `world`; tribo::roughness may throw (the caller's kernel_call turns that into an ERROR).
 template <class Member, class Height>
@@ -37,13 +50,7 @@ void compute_vector(MPI_Comm world, int nlocal, Member member, Height height, co
     if (member(i)) moments.add(height(i));
   MPI_Allreduce(MPI_IN_PLACE, moments.sums().data(), static_cast<int>(moments.size()), MPI_DOUBLE, MPI_SUM, world);
   const auto stats = runin::tribo::roughness(range, moments);
-  vector[RA] = stats.Ra;
-  vector[RQ] = stats.Rq;
-  vector[RSK] = stats.Rsk;
-  vector[RKU] = stats.Rku;
-  vector[RP] = stats.Rp;
-  vector[RV] = stats.Rv;
-  vector[RZ] = stats.Rz;
+  write_fixed(stats, vector);
   for (std::size_t k = 0; k < depths.size(); k++) vector[NFIXED + k] = stats.bearing[k];
 }
 

@@ -92,8 +92,9 @@ long derived_seed(long j) { return 4711 + 7919 * j; }
 namespace {
 
 // [material]: a RunIn coefficient file (relative: beside the case file, else the current directory, else the RunIn
-// source tree, the last two with a note; find_case_file) and the two bodies' materials in it.
-void read_cell_materials(const CaseReader &reader, HomogeniseCase &c) {
+// source tree, the last two with a note; find_case_file) and the two bodies' materials in it. Returns the file, parsed
+// once, for the tables that read its pair ([contact], [wear]); a defect of the file is named at material.rough.
+tribo::MaterialFile read_cell_materials(const CaseReader &reader, HomogeniseCase &c) {
   const std::string file = required_text(reader, "material.file");
   const fs::path resolved = find_case_file(reader, "material.file", file);
   c.material_file = fs::absolute(resolved).lexically_normal().string();
@@ -101,14 +102,23 @@ void read_cell_materials(const CaseReader &reader, HomogeniseCase &c) {
     reader.fail("material.file", "the resolved path must not contain blanks or quotes: " + c.material_file);
   c.rough = required_text(reader, "material.rough");
   c.counterface = required_text(reader, "material.counterface");
+  tribo::MaterialFile materials;
+  try {
+    std::ifstream in(c.material_file);
+    if (!in) throw std::invalid_argument("cannot open " + c.material_file);
+    materials = tribo::parse_material_file(in, c.material_file);
+  } catch (const std::exception &e) {    // MaterialFileError, InvalidCoefficient: both name the file
+    reader.fail("material.rough", e.what());
+  }
   for (const auto &[key, name] : {std::make_pair("material.rough", c.rough), std::make_pair("material.counterface",
                                                                                             c.counterface)}) {
     try {
-      read_runin_material(c.material_file, name);
-    } catch (const std::invalid_argument &e) {
+      materials.material(name);
+    } catch (const std::exception &e) {
       reader.fail(key, e.what());
     }
   }
+  return materials;
 }
 
 // grid.acceleration: one number, or one per pressure; 1 (none) when absent.
@@ -136,7 +146,7 @@ void read_acceleration(const CaseReader &reader, const toml::table &root, Homoge
 // [contact]: the cell's friction sub-model and the interface state whose friction factor m the material file gives
 // (tau_s = m S_y / sqrt(3) for strength and brizmer, f = m for junction; doc/interface_strength.md). The state is
 // checked here against the file's pair (a missing line names the key); the deck's pair_coeff checks the rest.
-void read_contact(const CaseReader &reader, HomogeniseCase &c) {
+void read_contact(const CaseReader &reader, const tribo::MaterialFile &materials, HomogeniseCase &c) {
   c.friction = reader.choice("contact.friction", {"strength", "brizmer", "junction"}, c.friction);
   c.interface = reader.text("contact.interface", "");
   if (c.friction == "junction" && c.interface.empty())
@@ -144,14 +154,11 @@ void read_contact(const CaseReader &reader, HomogeniseCase &c) {
   if (c.interface.empty()) return;
   try {
     const int state = tribo::find_interface_state(c.interface);
-    std::ifstream in(c.material_file);
-    const auto pair = tribo::parse_material_file(in, c.material_file).pair(c.rough, c.counterface);
+    const auto pair = materials.pair(c.rough, c.counterface);
     if (std::isnan(pair.interface_factor[static_cast<std::size_t>(state)]))
       reader.fail("contact.interface", fmt::format("the file {} has no 'interface {} {} {} m' line", c.material_file,
                                                    c.rough, c.counterface, c.interface));
-  } catch (const std::invalid_argument &e) {    // an unknown state (InvalidCoefficient) or a bad file
-    reader.fail("contact.interface", e.what());
-  } catch (const std::runtime_error &e) {
+  } catch (const std::exception &e) {    // an unknown state (InvalidCoefficient) or no pair (MaterialFileError)
     reader.fail("contact.interface", e.what());
   }
 }
@@ -159,7 +166,7 @@ void read_contact(const CaseReader &reader, HomogeniseCase &c) {
 // [wear]: the cell's Archard k (both bodies; the material file's pair k when absent) and cycle jumping for mild k
 // (fix runin/wear/jump, doc/rve_cell.md "Mild wear"). A k of its own is the physical k of the cell, not an
 // acceleration: the deck runs it as wear_scale = k / k_file, and grid.acceleration cannot be given with it.
-void read_wear(const CaseReader &reader, HomogeniseCase &c) {
+void read_wear(const CaseReader &reader, const tribo::MaterialFile &materials, HomogeniseCase &c) {
   if (reader.has("wear.k")) {
     if (reader.has("grid.acceleration"))
       reader.fail("wear.k", "give the cell's physical k or grid.acceleration, not both");
@@ -168,8 +175,7 @@ void read_wear(const CaseReader &reader, HomogeniseCase &c) {
                                                               c.wear_k));
     double file_k = 0.0;
     try {
-      std::ifstream in(c.material_file);
-      file_k = tribo::parse_material_file(in, c.material_file).pair(c.rough, c.counterface).wear_coefficient;
+      file_k = materials.pair(c.rough, c.counterface).wear_coefficient;
     } catch (const std::exception &e) {
       reader.fail("wear.k", e.what());
     }
@@ -212,7 +218,7 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   c.path = path;
   c.title = reader.text("title", "");
 
-  read_cell_materials(reader, c);
+  const tribo::MaterialFile materials = read_cell_materials(reader, c);
 
   // [surface]
   c.R = reader.positive("surface.R", c.R);
@@ -243,8 +249,8 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   for (long j = 0; j < seeds; ++j) c.seeds.push_back(derived_seed(j));
 
   read_acceleration(reader, root, c);
-  read_contact(reader, c);
-  read_wear(reader, c);
+  read_contact(reader, materials, c);
+  read_wear(reader, materials, c);
   c.depth = reader.positive("grid.depth");
   if (c.depth >= c.R) reader.fail("grid.depth", "must be below surface.R");
   c.depth_points = reader.positive_integer("grid.depth_points", c.depth_points, 10000);

@@ -57,6 +57,25 @@ def run_lammps(args, deck, variables=None, log="log.lammps", np=1):
     return text
 
 
+def run_lammps_two_at_a_time(args, deck, runs):
+    """Runs args.lmp on `deck` (a path) once per (name, variables) of `runs`, two at a time (one per core), in
+    args.workdir with -log log.NAME and -var NAME VALUE for each variable; a run that exits non-zero fails the test
+    with the tail of its stderr."""
+    pending, running = list(runs), []
+    while pending or running:
+        while pending and len(running) < 2:
+            name, variables = pending.pop(0)
+            command = [args.lmp, "-in", deck, "-log", f"log.{name}", "-screen", "none"]
+            for key, value in variables.items():
+                command += ["-var", key, str(value)]
+            running.append((name, subprocess.Popen(command, cwd=args.workdir, env=mpi_env(),
+                                                   stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)))
+        name, proc = running.pop(0)
+        _, err = proc.communicate()
+        if proc.returncode != 0:
+            fail(f"cell {name}: LAMMPS exited with {proc.returncode}: {err[-1000:]}")
+
+
 # Worn-asperity geometry for the checks, independent of the C++ kernels (bisection for the cap height).
 def cap_height(radius, volume):
     """Root of pi h^2 (3R - h) / 3 = V in [0, 2R], by bisection to the last bit."""

@@ -20,11 +20,10 @@ import argparse
 import json
 import math
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_deck import SOURCE_DIR, fail, fresh_dir, mpi_env  # noqa: E402
+from run_deck import SOURCE_DIR, fail, fresh_dir, run_lammps_two_at_a_time  # noqa: E402
 sys.path.insert(0, os.path.join(SOURCE_DIR, "tools"))
 from state_law import StateLaw, sample_at_depth, sample_rows  # noqa: E402
 
@@ -37,23 +36,13 @@ MU, RQ = 4, 5   # columns: step s h h_cf mu_body rq ...
 
 def run_cells(args, cells):
     """Runs the cells (name, variables) two at a time (2 cores); returns {name: sliding rows}."""
-    pending = list(cells)
-    running = []
+    run_lammps_two_at_a_time(args, DECK, [(name, {"material": MATERIAL, "accel": 1, "nslide": 2000000,
+                                                  "out": f"{name}.dat", **variables}) for name, variables in cells])
     out = {}
-    while pending or running:
-        while pending and len(running) < 2:
-            name, variables = pending.pop(0)
-            command = [args.lmp, "-in", DECK, "-log", f"log.{name}", "-screen", "none", "-var", "material", MATERIAL,
-                       "-var", "accel", "1", "-var", "nslide", "2000000", "-var", "out", f"{name}.dat"]
-            for k, v in variables.items():
-                command += ["-var", k, str(v)]
-            running.append((name, subprocess.Popen(command, cwd=args.workdir, env=mpi_env(),
-                                                   stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)))
-        name, proc = running.pop(0)
-        _, err = proc.communicate()
+    for name, _ in cells:
         path = os.path.join(args.workdir, f"{name}.dat")
-        if proc.returncode != 0 or not os.path.exists(path):
-            fail(f"cell {name}: LAMMPS exited with {proc.returncode}: {err[-1000:]}")
+        if not os.path.exists(path):
+            fail(f"cell {name}: no output {path}")
         out[name] = sample_rows(path)
     return out
 

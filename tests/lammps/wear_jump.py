@@ -18,11 +18,10 @@ convergence (study, ~10 min): 24^2 summits to h = 5 nm, 2 seeds: halving max_dep
 import argparse
 import math
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_deck import SOURCE_DIR, fail, fresh_dir, mpi_env, numeric_table, run_lammps  # noqa: E402
+from run_deck import SOURCE_DIR, fail, fresh_dir, numeric_table, run_lammps, run_lammps_two_at_a_time  # noqa: E402
 
 DECK = os.path.join(SOURCE_DIR, "inputs", "in.rve_rough")
 MATERIAL = os.path.join(SOURCE_DIR, "potentials", "Steel1020.runin")
@@ -99,23 +98,15 @@ def binned(rows, column, edges):
     return out
 
 
+def rms_relative(reference, other):
+    """RMS over the bins of (other - reference) / reference."""
+    return math.sqrt(sum(((y - x) / x) ** 2 for x, y in zip(reference, other)) / len(reference))
+
+
 def run_all(args, cells):
     """Runs the cells two at a time (2 cores); returns {name: rows}."""
-    pending, running, out = list(cells.items()), [], {}
-    while pending or running:
-        while pending and len(running) < 2:
-            name, variables = pending.pop(0)
-            command = [args.lmp, "-in", DECK, "-log", f"log.{name}", "-screen", "none"]
-            for key, value in variables.items():
-                command += ["-var", key, str(value)]
-            running.append((name, subprocess.Popen(command, cwd=args.workdir, env=mpi_env(),
-                                                   stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)))
-        name, proc = running.pop(0)
-        _, err = proc.communicate()
-        if proc.returncode != 0:
-            fail(f"cell {name}: LAMMPS exited with {proc.returncode}: {err[-1000:]}")
-        out[name] = rows_of(args, cells[name]["out"])
-    return out
+    run_lammps_two_at_a_time(args, DECK, list(cells.items()))
+    return {name: rows_of(args, variables["out"]) for name, variables in cells.items()}
 
 
 def convergence(args):
@@ -153,14 +144,12 @@ def convergence(args):
     failures = []
     for other, label in (("k1e-5_half", "max_depth halved"), ("k1e-6", "k = 1e-6")):
         for column in ("mu", "rq"):
-            a, b = means["k1e-5", column], means[other, column]
-            rms = math.sqrt(sum(((y - x) / x) ** 2 for x, y in zip(a, b)) / len(a))
+            rms = rms_relative(means["k1e-5", column], means[other, column])
             print(f"{label}: {column}(h) RMS difference {100 * rms:.2f} % over h = 1-5 nm")
             if rms > 0.03:
                 failures.append(f"{label}: {column}(h) differs by {100 * rms:.2f} % RMS > 3 %")
     for column in ("mu", "rq"):
-        a, b = means["k1e-5", column], means["severe", column]
-        rms = math.sqrt(sum(((y - x) / x) ** 2 for x, y in zip(a, b)) / len(a))
+        rms = rms_relative(means["k1e-5", column], means["severe", column])
         print(f"severe k = 7e-3 against k = 1e-5: {column}(h) RMS difference {100 * rms:.1f} % over h = 1-5 nm")
     if failures:
         fail("; ".join(failures))
