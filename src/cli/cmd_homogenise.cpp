@@ -549,6 +549,7 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
        {{"seeds", c.seeds},
         {"acceleration", c.acceleration},
         {"depth", c.depth},
+        {"depth_spacing", c.depth_first > 0.0 ? "geometric" : "linear"},
         {"nslide", c.nslide},
         {"nout", c.nout},
         {"band", "low/high: minimum/maximum over the good seeds at each point; mean: their mean"},
@@ -619,7 +620,7 @@ int run_homogenise(const Options &o) {
   std::fflush(stdout);
 
   std::vector<Failure> failures = run_samples(c, todo, np, p.lmp, p.deck, p.cache_dir, start);
-  const std::vector<double> grid = depth_grid(c.depth, c.depth_points);
+  const std::vector<double> grid = depth_grid(c.depth, c.depth_points, c.depth_first);
   const auto curves = read_curves(samples, grid, failures);
   coupling::HomogenisationSamples good = good_seeds(c, samples, grid, curves, failures);
   good.metadata = law_metadata(o, c, p, samples, curves, failures);

@@ -28,7 +28,7 @@ const Schema &schema() {
       {"contact", {"friction", "interface"}},
       {"wear", {"k", "jump_max_depth", "jump_every"}},
       {"grid",
-       {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "nslide",
+       {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "depth_first", "nslide",
         "nout"}},
   };
   return s;
@@ -255,6 +255,13 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   if (c.depth >= c.R) reader.fail("grid.depth", "must be below surface.R");
   c.depth_points = reader.positive_integer("grid.depth_points", c.depth_points, 10000);
   if (c.depth_points < 2) reader.fail("grid.depth_points", "must be at least 2 (0 and depth)");
+  if (reader.has("grid.depth_first")) {
+    c.depth_first = reader.positive("grid.depth_first");
+    if (!(c.depth_first < c.depth))
+      reader.fail("grid.depth_first", fmt::format("must be below grid.depth = {:g}", c.depth));
+    if (c.depth_points < 3)
+      reader.fail("grid.depth_first", "needs grid.depth_points >= 3 (0, depth_first and depth)");
+  }
   c.nslide = reader.positive_integer("grid.nslide", c.nslide, 1000000000L);
   c.nout = reader.positive_integer("grid.nout", c.nout, 1000000000L);
   if (c.nout > c.nslide) reader.fail("grid.nout", fmt::format("must be at most grid.nslide = {}", c.nslide));

@@ -36,6 +36,7 @@ struct HomogeniseCase {
   std::vector<double> acceleration;   // one per pressure (one number in the case: repeated)
   double depth = 0.0;                 // target mean worn depth of the rough body [m]
   long depth_points = 11;             // columns of the law's h grid, 0 .. depth
+  double depth_first = 0.0;           // > 0: the grid is 0, then geometric from depth_first to depth
   long nslide = 100000, nout = 100;
   // [contact]
   std::string friction = "strength";  // the cell's friction sub-model (the deck's `friction` variable)

@@ -73,8 +73,15 @@ CellSeries cell_series(const coupling::AveTimeTable &table) {
   return c;
 }
 
-std::vector<double> depth_grid(double depth, long points) {
+std::vector<double> depth_grid(double depth, long points, double first) {
   std::vector<double> grid;
+  if (first > 0.0 && points >= 3) {
+    grid.push_back(0.0);
+    const double n = static_cast<double>(points - 2);
+    for (long j = 0; j < points - 1; ++j)
+      grid.push_back(j == points - 2 ? depth : first * std::pow(depth / first, static_cast<double>(j) / n));
+    return grid;
+  }
   for (long j = 0; j < points; ++j)
     grid.push_back(j == points - 1 ? depth : depth * static_cast<double>(j) / static_cast<double>(points - 1));
   return grid;
@@ -103,6 +110,14 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
     throw std::runtime_error("reached h = " + g6(H.back()) + " m of depth " + g6(depth) +
                              " m within nslide (raise grid.nslide or grid.acceleration)");
   const double dh = grid.size() > 1 ? grid[1] - grid[0] : depth;
+  // the windows below and above a depth: half a step of the grid on each side (the first step on an even grid, so
+  // that its windows do not move with the round-off of grid[j] - grid[j - 1])
+  bool even = true;
+  for (std::size_t j = 1; j < grid.size(); ++j) even = even && std::fabs(grid[j] - grid[j - 1] - dh) <= 1e-9 * dh;
+  const auto step_below = [&](std::size_t j) { return even || j == 0 ? dh : grid[j] - grid[j - 1]; };
+  const auto step_above = [&](std::size_t j) {
+    return even ? dh : (j + 1 < grid.size() ? grid[j + 1] - grid[j] : grid[j] - grid[j - 1]);
+  };
   DepthCurves out;
   for (auto &f : out.field) f.resize(grid.size());
   using F = coupling::StateField;
@@ -122,8 +137,8 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
     // the rows within half a grid step of hj, at hj, kept within those rows' range (one-sided at the last depth);
     // exact for a linear trend, and it averages the contact noise of the rows instead of taking the two that
     // bracket hj (fewer than 3 rows: those two). h = 0 stays the state when sliding begins (the first row).
-    const std::size_t wa = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj - 0.5 * dh) - H.begin());
-    const std::size_t wb_end = static_cast<std::size_t>(std::upper_bound(H.begin(), H.end(), hj + 0.5 * dh) - H.begin());
+    const std::size_t wa = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj - 0.5 * step_below(j)) - H.begin());
+    const std::size_t wb_end = static_cast<std::size_t>(std::upper_bound(H.begin(), H.end(), hj + 0.5 * step_above(j)) - H.begin());
     auto smoothed = [&](const std::vector<double> &v) {
       double value;
       if (j == 0 || wb_end <= wa || !local_line(H, v, wa, wb_end - 1, hj, value)) return at(v);
@@ -140,8 +155,8 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
     field(F::SlidingDistance)[j] =
         (i == 0 && H[0] > hj ? c.s[0] * (H[0] > 0.0 ? hj / H[0] : 0.0) : at(c.s)) * acceleration;
     // wear rates: least-squares slope over the rows with h within one grid step of hj (at least 3 rows)
-    std::size_t a = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj - dh) - H.begin());
-    std::size_t b = static_cast<std::size_t>(std::upper_bound(H.begin(), H.end(), hj + dh) - H.begin());
+    std::size_t a = static_cast<std::size_t>(std::lower_bound(H.begin(), H.end(), hj - step_below(j)) - H.begin());
+    std::size_t b = static_cast<std::size_t>(std::upper_bound(H.begin(), H.end(), hj + step_above(j)) - H.begin());
     a = std::min(a, H.size() - 1);
     b = b == 0 ? 0 : b - 1;
     if (b < a) b = a;

@@ -21,15 +21,17 @@ struct CellSeries {
 // (coupling::InputFormatError) or a non-finite value (naming the column and row).
 CellSeries cell_series(const coupling::AveTimeTable &table);
 
-// 0 .. depth in `points` even steps (the last one exactly depth).
-std::vector<double> depth_grid(double depth, long points);
+// 0 .. depth in `points` even steps (the last one exactly depth); with first > 0: 0, then points - 1 depths in
+// geometric progression from first to depth, for a law whose state changes fast in the first nanometres and slowly
+// over hundreds (cycle jumping with a tolerance relative to h, doc/rve_cell.md "Mild wear").
+std::vector<double> depth_grid(double depth, long points, double first = 0.0);
 
 
 // Every field of the state law on `grid` for one sample run at `acceleration` (physical s = acceleration x cell s,
 // physical rates = cell rates / acceleration). Uses the rows with s > 0; h made non-decreasing by a running
 // maximum; Rq, Rsk and the sliding distance linear in h between the last row below a grid depth and the first at
 // or above it; mu_body and the area fraction (a few contacts at a time: noisy), past h = 0, the least-squares line
-// over the rows within half a grid step of the depth, at the depth, kept within those rows' range (the bracket
+// over the rows within half the grid step on each side of the depth, at the depth, kept within those rows' range (the bracket
 // when fewer than 3 rows; h = 0 is the first sliding row); wear rates a
 // least-squares slope dh/ds over the rows within one grid step (at least 3 rows). Throws std::runtime_error when
 // fewer than 2 rows slide or the sample's h stops short of grid.back() ("reached h = ... m of depth ... m").

@@ -53,6 +53,25 @@ TEST(HomogeniseCurves, LinearWearGivesExactRatesAndPhysicalDistance) {
   EXPECT_EQ(field(c, StateField::SlidingDistance)[0], 0.0);
 }
 
+TEST(HomogeniseCurves, GeometricGridResolvesTheFirstNanometresAndKeepsLinearFieldsExact) {
+  const auto grid = depth_grid(1e-7, 6, 1e-9);  // 0, then 1, 3.16, 10, 31.6, 100 nm
+  ASSERT_EQ(grid.size(), 6u);
+  EXPECT_EQ(grid[0], 0.0);
+  EXPECT_DOUBLE_EQ(grid[1], 1e-9);
+  EXPECT_NEAR(grid[3], 1e-8, 1e-20);
+  EXPECT_EQ(grid.back(), 1e-7);
+  for (std::size_t j = 2; j < grid.size(); ++j) EXPECT_NEAR(grid[j] / grid[j - 1], std::sqrt(10.0), 1e-12);
+  // a cell whose fields are linear in h: every field exact on the uneven grid (the windows follow the local steps)
+  const double a = 1e-3;
+  const auto c = resample_on_depth_grid(linear_cell(a, 2000, 1e-7), grid, 1.0);  // reaches h = 2e-7
+  for (std::size_t j = 1; j < grid.size(); ++j) {
+    EXPECT_NEAR(field(c, StateField::MuBody)[j], 0.2 + 1e8 * grid[j], 1e-12);
+    EXPECT_NEAR(field(c, StateField::AreaFraction)[j], 0.01 + 1e6 * grid[j], 1e-14);
+    EXPECT_NEAR(field(c, StateField::WearRate)[j], a, 1e-12 * a);
+    EXPECT_NEAR(field(c, StateField::SlidingDistance)[j], grid[j] / a, 1e-9 * grid[j] / a);
+  }
+}
+
 TEST(HomogeniseCurves, FlatStretchesAndDipsAreCrossedWithoutDivisionByZero) {
   CellSeries c;
   // h: 0, 1, 1, 1, 0.999999 (a round-off dip), 1, 2, 3, 4 (nm); s: 1..9 (um)
