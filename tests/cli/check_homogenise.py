@@ -16,10 +16,11 @@ MODE fail:   a deck that stops with an ERROR for one (pressure, seed): the other
              no law written.
 MODE launcher: --launcher names a wrapper script (written in the work directory) that logs its arguments and
              execs mpirun: the cold run goes through it (one call, -np 2 and -partition 2x1 for the 2 partitions),
-             and the law equals, to the bit, the one of a cold run with the default launcher in its own cache
-             (all but the provenance and the cache path).
-MODE launcher_alone: the same wrapper with a deck that fails at one (pressure, seed): after the 2-partition run,
-             the sample run alone goes through the wrapper too (-np 1).
+             and the law equals, to the bit, the one mode build wrote with the default launcher in its own cache
+             (WORKDIR/build/law.json; all but the provenance and the cache path).
+MODE launcher_alone: the same wrapper named by the case's [run] launcher = "./launch.sh ..." (beside the case
+             file, runin started elsewhere) with a deck that fails at one (pressure, seed): the 2-partition run and,
+             after it, the sample run alone go through the wrapper (-np 2, then -np 1).
 MODE interrupt: SIGTERM to runin homogenise after its first finished sample (shipped cell, 4 samples of 576
              summits, several seconds each): it stops its mpirun (no lmp_runin or mpirun left with the work
              directory in its command line), exits 1 with one line naming the signal, keeps the finished samples;
@@ -234,8 +235,9 @@ def mode_launcher(args):
     work, case = setup(args, "launcher")
     wrapper, log, launcher = write_wrapper(work)
 
-    law_default = os.path.join(work, "law_default.json")
-    _, cold_default = homogenise(args, case, law_default, os.path.join(work, "cache_default"), args.deck, 0)
+    law_default = os.path.join(args.workdir, "build", "law.json")  # mode build's, same case, deck and --np
+    if not os.path.isfile(law_default):
+        fail(f"no {law_default}: run mode build first (ctest: cli_homogenise_build)")
     law = os.path.join(work, "law.json")
     result, cold = homogenise(args, case, law, os.path.join(work, "cache"), args.deck, 0, launcher)
     if f"{wrapper} -np 2 --oversubscribe ..." not in result.stdout or "sample 4/4 done" not in result.stdout:
@@ -246,18 +248,23 @@ def mode_launcher(args):
         fail(f"the wrapper was not the one launcher of the 2 partitions: {calls}")
     if law_without_run(law) != law_without_run(law_default):
         fail("the law through the wrapper differs from the default launcher's")
-    print(f"check_homogenise: launcher: cold {cold:.2f} s through the wrapper, {cold_default:.2f} s default")
+    print(f"check_homogenise: launcher: cold {cold:.2f} s through the wrapper")
 
 
 def mode_launcher_alone(args):
     work, case = setup(args, "launcher_alone")
-    _, log, launcher = write_wrapper(work)
+    _, log, _ = write_wrapper(work)
+    with open(case, "a") as f:
+        f.write('[run]\nlauncher = "./launch.sh -np {np} --oversubscribe"\n')
+    if os.path.samefile(os.getcwd(), work):
+        fail("run from the case's directory: ./launch.sh would not test the lookup beside the case file")
     deck = failing_deck(args, work, f"${{pressure}} > 3.0e6 && ${{seed}} == {SEED_1}")
-    homogenise(args, case, os.path.join(work, "law_fail.json"), os.path.join(work, "cache_fail"), deck, 1, launcher)
+    homogenise(args, case, os.path.join(work, "law_fail.json"), os.path.join(work, "cache_fail"), deck, 1)
     with open(log) as f:
         calls = f.read().splitlines()
     alone = [c for c in calls if c.startswith(f"-np 1 --oversubscribe {args.lmp} -in ")]
-    if not calls[0].startswith("-np 2 ") or len(alone) != len(calls) - 1 or not alone:
+    if not calls or not calls[0].startswith(f"-np 2 --oversubscribe {args.lmp} -partition 2x1 ") \
+            or len(alone) != len(calls) - 1 or not alone:
         fail(f"the samples run alone did not go through the wrapper: {calls}")
     print(f"check_homogenise: launcher: {len(alone)} sample(s) alone through the wrapper after the failure")
 
