@@ -47,7 +47,8 @@ using coupling::DepthCurves;
 using coupling::resample_on_depth_grid;
 
 struct Options {
-  std::string case_path, output = "law.json", output_dir, cache_dir, lmp, deck;
+  std::string case_path, output = "law.json", output_dir, cache_dir, lmp, deck, launcher;
+  bool launcher_given = false;  // --launcher "" is an error, not the default
   int np = 0;  // 0: the number of cores
   std::string command_line;
 };
@@ -57,14 +58,19 @@ struct Options {
 
 std::string quoted(const std::string &text) { return "\"" + text + "\""; }
 
+bool is_executable_file(const fs::path &path) {
+  std::error_code error;
+  return access(path.c_str(), X_OK) == 0 && fs::is_regular_file(path, error);
+}
+
 // `name` as given if it holds a '/', else the first executable of that name on PATH; empty if none.
 std::string find_executable(const std::string &name) {
-  if (name.find('/') != std::string::npos) return access(name.c_str(), X_OK) == 0 ? name : std::string();
+  if (name.find('/') != std::string::npos) return is_executable_file(name) ? name : std::string();
   const char *path = std::getenv("PATH");
   std::stringstream dirs(path ? path : "");
   for (std::string dir; std::getline(dirs, dir, ':');) {
     const fs::path candidate = fs::path(dir.empty() ? "." : dir) / name;
-    if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
+    if (is_executable_file(candidate)) return candidate.string();
   }
   return {};
 }
@@ -89,15 +95,44 @@ std::vector<std::string> mpi_environment() {
   return out;
 }
 
+std::string mpirun_program() {
+  const char *env = std::getenv("RUNIN_MPIRUN");
+  return env && *env ? env : "mpirun";
+}
+
+// How every LAMMPS run starts: the launcher's words ({np}: the ranks), then lmp_runin and its arguments. The
+// default, $RUNIN_MPIRUN (else mpirun) -np {np} --oversubscribe, is the command runin has always run.
+struct Launcher {
+  std::vector<std::string> words;
+  std::string name;  // what its errors name: --launcher, the case's key, RUNIN_MPIRUN
+  bool is_default = false;
+  std::vector<std::string> command(int np, const std::vector<std::string> &lmp_args) const {
+    std::vector<std::string> args = expand_launcher(words, np);
+    args.insert(args.end(), lmp_args.begin(), lmp_args.end());
+    return args;
+  }
+  std::string program() const { return fs::path(words.front()).filename().string(); }
+};
+
+// --launcher, else the case's run.launcher, else the default.
+Launcher resolve_launcher(const Options &o, const HomogeniseCase &c) {
+  if (o.launcher_given) return {parse_launcher(o.launcher, "--launcher"), "--launcher", false};
+  if (!c.launcher.empty()) return {c.launcher, c.path + ": key 'run.launcher'", false};
+  return {{mpirun_program(), "-np", "{np}", "--oversubscribe"}, "RUNIN_MPIRUN", true};
+}
+
 // Starts `args` in `cwd` with stdout and stderr to `output`, in the mpirun environment; returns the pid.
-pid_t spawn(const std::vector<std::string> &args, const fs::path &cwd, const fs::path &output) {
+pid_t spawn(const std::vector<std::string> &args, const Launcher &launcher, const fs::path &cwd,
+            const fs::path &output) {
   ChildStreams streams;
   streams.stdout_file = output;
   streams.working_directory = cwd;
   try {
     return start_child(args, streams, mpi_environment());
   } catch (const std::runtime_error &) {
-    throw std::runtime_error("cannot start " + args.front() + " (set RUNIN_MPIRUN to the mpirun to use)");
+    throw std::runtime_error("cannot start " + args.front() +
+                             (launcher.is_default ? " (set RUNIN_MPIRUN to the mpirun to use)"
+                                                  : " (" + launcher.name + ")"));
   }
 }
 
@@ -137,11 +172,6 @@ void stop_if_interrupted(const std::vector<pid_t> &children) {
   throw std::runtime_error(fmt::format("interrupted by signal {} ({}): the running samples were stopped; the "
                                        "finished ones are cached, a rerun continues from them",
                                        signal, strsignal(signal)));
-}
-
-std::string mpirun_program() {
-  const char *env = std::getenv("RUNIN_MPIRUN");
-  return env && *env ? env : "mpirun";
 }
 
 std::string first_line_starting(const fs::path &file, const std::string &prefix) {
@@ -236,8 +266,8 @@ class Progress {
 // All `todo` samples under one mpirun: N partitions of one rank each, a uloop over the samples. Returns mpirun's
 // exit status. An ERROR in one partition aborts the whole mpirun (lmp_runin turns LAMMPS's partition-mode abort
 // exception into MPI_Abort); what completed before stays in the cache.
-int run_partitioned(const std::vector<const Sample *> &todo, int n, const std::string &lmp, const fs::path &cache_dir,
-                    Progress &progress) {
+int run_partitioned(const std::vector<const Sample *> &todo, int n, const Launcher &launcher, const std::string &lmp,
+                    const fs::path &cache_dir, Progress &progress) {
   const fs::path work = make_workdir(cache_dir);
   for (std::size_t k = 0; k < todo.size(); ++k) {
     std::ofstream f(work / fmt::format("sample_{}.in", k + 1));
@@ -253,15 +283,18 @@ int run_partitioned(const std::vector<const Sample *> &todo, int n, const std::s
            << "jump SELF runin_next\n";
     if (!driver) throw std::runtime_error("cannot write " + (work / "driver.in").string());
   }
-  std::vector<std::string> args = {mpirun_program(), "-np", std::to_string(n), "--oversubscribe", lmp};
-  if (n > 1) args.insert(args.end(), {"-partition", fmt::format("{}x1", n)});
-  args.insert(args.end(), {"-in", (work / "driver.in").string(), "-log", (work / "log.lammps").string(), "-screen",
-                           "none"});
-  fmt::print("runin homogenise: {} {} ... ({} samples, {} partitions; logs in each sample's directory)\n", args[0],
-             fmt::format("-np {}", n), todo.size(), n);
+  std::vector<std::string> lmp_args = {lmp};
+  if (n > 1) lmp_args.insert(lmp_args.end(), {"-partition", fmt::format("{}x1", n)});
+  lmp_args.insert(lmp_args.end(), {"-in", (work / "driver.in").string(), "-log", (work / "log.lammps").string(),
+                                   "-screen", "none"});
+  const std::vector<std::string> args = launcher.command(n, lmp_args);
+  std::string shown;
+  for (const auto &word : expand_launcher(launcher.words, n)) shown += word + " ";
+  fmt::print("runin homogenise: {}... ({} samples, {} partitions; logs in each sample's directory)\n", shown,
+             todo.size(), n);
   std::fflush(stdout);
   const InterruptGuard guard;
-  const pid_t pid = spawn(args, work, work / "mpirun.out");
+  const pid_t pid = spawn(args, launcher, work, work / "mpirun.out");
   std::optional<int> status;
   while (!(status = poll_child(pid))) {
     stop_if_interrupted({pid});
@@ -275,8 +308,8 @@ int run_partitioned(const std::vector<const Sample *> &todo, int n, const std::s
 
 // Each sample alone (its own mpirun -np 1), up to `n` at a time: a failing sample no longer takes the others down,
 // and its log names its ERROR.
-std::vector<Failure> run_isolated(const std::vector<const Sample *> &todo, int n, const std::string &lmp,
-                                  const fs::path &cache_dir, Progress &progress) {
+std::vector<Failure> run_isolated(const std::vector<const Sample *> &todo, int n, const Launcher &launcher,
+                                  const std::string &lmp, const fs::path &cache_dir, Progress &progress) {
   const fs::path work = make_workdir(cache_dir);
   std::vector<Failure> failures;
   std::vector<std::pair<pid_t, std::size_t>> running;
@@ -295,11 +328,10 @@ std::vector<Failure> run_isolated(const std::vector<const Sample *> &todo, int n
     for (const auto &r : running) children.push_back(r.first);
     stop_if_interrupted(children);
     while (next < todo.size() && static_cast<int>(running.size()) < n) {
-      const std::vector<std::string> args = {mpirun_program(), "-np", "1", "--oversubscribe", lmp,
-                                             "-in", (todo[next]->dir / "sample.in").string(),
-                                             "-log", (work / fmt::format("sample_{}.log", next + 1)).string(),
-                                             "-screen", "none"};
-      running.emplace_back(spawn(args, work, work / fmt::format("sample_{}.out", next + 1)), next);
+      const std::vector<std::string> args =
+          launcher.command(1, {lmp, "-in", (todo[next]->dir / "sample.in").string(), "-log",
+                               (work / fmt::format("sample_{}.log", next + 1)).string(), "-screen", "none"});
+      running.emplace_back(spawn(args, launcher, work, work / fmt::format("sample_{}.out", next + 1)), next);
       ++next;
     }
     for (auto it = running.begin(); it != running.end();) {
@@ -417,14 +449,22 @@ void check_deck(const HomogeniseCase &c, const fs::path &deck, const std::string
                                  c.path, top, deck.string()));
 }
 
-// The MPI launcher, before any sample starts (a fully cached rerun needs none), and the cache directory.
-void check_launcher_and_cache(bool samples_to_run, const fs::path &cache_dir) {
-  if (samples_to_run && find_executable(mpirun_program()).empty())
+// The MPI launcher, before any sample starts (a fully cached rerun needs none), and the cache directory. A
+// launcher path with a '/' is made absolute: the runs start in a scratch directory.
+void check_launcher_and_cache(bool samples_to_run, Launcher &launcher, const fs::path &cache_dir) {
+  const std::string program = launcher.words.front();
+  const std::string found = samples_to_run ? find_executable(program) : program;
+  if (found.empty() && launcher.is_default)
     throw InputError(std::getenv("RUNIN_MPIRUN") && *std::getenv("RUNIN_MPIRUN")
                          ? "RUNIN_MPIRUN: not an executable: " + mpirun_program() +
                                "; set it to the MPI launcher (mpirun or mpiexec) or unset it"
                          : "RUNIN_MPIRUN: mpirun is not on PATH; install an MPI (Open MPI, MPICH) or set RUNIN_MPIRUN "
                            "to its launcher (e.g. mpiexec)");
+  if (found.empty())
+    throw InputError(launcher.name + ": " + program + " is not an executable" +
+                     (program.find('/') == std::string::npos ? " on PATH" : "") +
+                     "; name the MPI launcher (mpirun, mpiexec, srun) or give its path");
+  if (program.find('/') != std::string::npos) launcher.words.front() = fs::absolute(found).string();
   std::error_code error;
   fs::create_directories(cache_dir, error);
   if (error || !fs::is_directory(cache_dir))
@@ -434,27 +474,29 @@ void check_launcher_and_cache(bool samples_to_run, const fs::path &cache_dir) {
 
 // Runs the samples not in the cache: all under one mpirun, then each missing one alone to name the failing ones.
 std::vector<Failure> run_samples(const HomogeniseCase &c, const std::vector<const Sample *> &todo, int np,
-                                 const std::string &lmp, const fs::path &deck, const fs::path &cache_dir,
-                                 Clock::time_point start) {
+                                 const Launcher &launcher, const std::string &lmp, const fs::path &deck,
+                                 const fs::path &cache_dir, Clock::time_point start) {
   std::vector<Failure> failures;
   if (todo.empty()) return failures;
   for (const Sample *s : todo) prepare_sample(c, *s, deck);
   Progress progress(todo, todo.size(), start);
-  const int status = run_partitioned(todo, np, lmp, cache_dir, progress);
+  const int status = run_partitioned(todo, np, launcher, lmp, cache_dir, progress);
   std::vector<const Sample *> missing;
   for (const Sample *s : todo)
     if (!s->complete()) missing.push_back(s);
   if (missing.size() == 1 && todo.size() == 1) {
     // it ran alone already: its log names the ERROR
     std::string error = first_line_starting(missing.front()->log(), "ERROR");
-    if (error.empty()) error = fmt::format("no output and no ERROR line in its log (mpirun exit status {})", status);
+    if (error.empty())
+      error = fmt::format("no output and no ERROR line in its log ({} exit status {})", launcher.program(), status);
     failures.push_back({missing.front(), error});
   } else if (!missing.empty()) {
-    fmt::print("runin homogenise: mpirun exited with status {}, {} samples incomplete; running each alone to find "
+    fmt::print("runin homogenise: {} exited with status {}, {} samples incomplete; running each alone to find "
                "the failing ones\n",
-               status, missing.size());
+               launcher.program(), status, missing.size());
     std::fflush(stdout);
-    failures = run_isolated(missing, std::min<int>(np, static_cast<int>(missing.size())), lmp, cache_dir, progress);
+    failures = run_isolated(missing, std::min<int>(np, static_cast<int>(missing.size())), launcher, lmp, cache_dir,
+                            progress);
   }
   return failures;
 }
@@ -598,6 +640,7 @@ int run_homogenise(const Options &o) {
   const auto start = Clock::now();
   const HomogeniseCase c = read_homogenise_case(o.case_path, !o.deck.empty());
   if (o.np < 0) throw InputError("--np: must be positive");
+  Launcher launcher = resolve_launcher(o, c);
   Provenance p;
   p.deck = resolve_deck(o, c);
   p.lmp = resolve_lmp(o);
@@ -610,7 +653,7 @@ int run_homogenise(const Options &o) {
   std::vector<const Sample *> todo;
   for (const auto &s : samples)
     if (!s.complete()) todo.push_back(&s);
-  check_launcher_and_cache(!todo.empty(), p.cache_dir);
+  check_launcher_and_cache(!todo.empty(), launcher, p.cache_dir);
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int np = static_cast<int>(std::min<std::size_t>(o.np > 0 ? o.np : cores, std::max<std::size_t>(1, todo.size())));
   fmt::print("runin homogenise: {}: {} pressures x {} seeds = {} samples of {} summits; {} cached in {}\n",
@@ -619,7 +662,7 @@ int run_homogenise(const Options &o) {
   fmt::print("runin homogenise: {} samples to run\n", todo.size());
   std::fflush(stdout);
 
-  std::vector<Failure> failures = run_samples(c, todo, np, p.lmp, p.deck, p.cache_dir, start);
+  std::vector<Failure> failures = run_samples(c, todo, np, launcher, p.lmp, p.deck, p.cache_dir, start);
   const std::vector<double> grid = depth_grid(c.depth, c.depth_points, c.depth_first);
   const auto curves = read_curves(samples, grid, failures);
   coupling::HomogenisationSamples good = good_seeds(c, samples, grid, curves, failures);
@@ -656,15 +699,20 @@ Subcommand add_homogenise_command(CLI::App &app) {
       ->check(non_empty_path());
   cmd->add_option("--np", o->np, "MPI ranks = LAMMPS partitions (default: the number of cores)")
       ->check(CLI::Range(1, 100000));
+  auto *launcher = cmd->add_option(
+      "--launcher", o->launcher,
+      "MPI launcher of the LAMMPS runs, split at blanks (no shell), {np} = ranks; e.g. \"srun -n {np}\" (default: "
+      "the case's run.launcher, else $RUNIN_MPIRUN or mpirun, -np {np} --oversubscribe)");
   cmd->add_option("--lmp", o->lmp, "LAMMPS executable with the RunIn styles (default: lmp_runin beside runin)");
   cmd->add_option("--deck", o->deck,
                   "cell deck (default: the case's `deck`, else inputs/in.rve_rough of the RunIn source tree, the "
                   "rough-on-rough cell; inputs/in.rve_wall is the rough-on-flat one)");
-  return {cmd, [o] {
+  return {cmd, [o, launcher] {
             // the command line as run, for the provenance: /proc/self/cmdline (NUL-separated)
             std::ifstream in("/proc/self/cmdline", std::ios::binary);
             for (std::string arg; std::getline(in, arg, '\0');) o->command_line += (o->command_line.empty() ? "" : " ") + arg;
             if (!o->output_dir.empty()) o->output = (fs::path(o->output_dir) / "law.json").string();
+            o->launcher_given = launcher->count() > 0;
             return run_homogenise(*o);
           }};
 }

@@ -21,12 +21,13 @@ namespace {
 
 const Schema &schema() {
   static const Schema s = {
-      {"", {"title", "deck", "material", "surface", "sliding", "grid", "contact", "wear"}},
+      {"", {"title", "deck", "material", "surface", "sliding", "grid", "contact", "wear", "run"}},
       {"material", {"file", "rough", "counterface"}},
       {"surface", {"R", "sigma", "spacing", "nside", "heights"}},
       {"sliding", {"speed"}},
       {"contact", {"friction", "interface"}},
       {"wear", {"k", "jump_max_depth", "jump_every"}},
+      {"run", {"launcher"}},
       {"grid",
        {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "depth_first", "nslide",
         "nout"}},
@@ -190,7 +191,68 @@ void read_wear(const CaseReader &reader, const tribo::MaterialFile &materials, H
     reader.fail("wear.jump_every", "needs wear.jump_max_depth (cycle jumping is off without it)");
 }
 
+// What is wrong with a launcher text (empty: nothing); its words into `words`.
+std::string launcher_problem(const std::string &text, std::vector<std::string> &words) {
+  std::istringstream in(text);
+  for (std::string word; in >> word;) words.push_back(word);
+  if (words.empty())
+    return "empty; give the MPI launcher's command with {np} for the number of ranks, e.g. \"srun -n {np}\"";
+  bool has_np = false;
+  for (const auto &word : words) {
+    if (word.find_first_of("'\"\\$`") != std::string::npos)
+      return "the word " + word + " holds a quote, backslash, backtick or $: the launcher is split at blanks " +
+             "without a shell (no quoting, no $variables); write the values out, or name a wrapper script";
+    for (std::size_t i = 0; i < word.size(); ++i) {
+      if (word[i] == '}')
+        return "unmatched '}' in '" + word + "'; the only placeholder is {np}, the number of MPI ranks";
+      if (word[i] != '{') continue;
+      const auto close = word.find('}', i);
+      if (close == std::string::npos)
+        return "unmatched '{' in '" + word + "'; the only placeholder is {np}, the number of MPI ranks";
+      const std::string placeholder = word.substr(i, close - i + 1);
+      if (placeholder != "{np}")
+        return "unknown placeholder '" + placeholder + "' in '" + word +
+               "'; the only one is {np}, the number of MPI ranks";
+      has_np = true;
+      i = close;
+    }
+  }
+  if (words.front().find('{') != std::string::npos)
+    return "the first word names the launcher program, not '" + words.front() + "'";
+  if (!has_np)  // LAMMPS needs as many ranks as partitions: the launcher must take runin's count
+    return "no {np} in \"" + text + "\": say where the number of ranks goes, e.g. \"srun -n {np}\" or " +
+           "\"mpirun --hostfile hosts -np {np}\"";
+  return {};
+}
+
+// [run]: the MPI launcher of the samples (--launcher overrides it); a program path relative as material.file.
+void read_run(const CaseReader &reader, HomogeniseCase &c) {
+  if (!reader.has("run.launcher")) return;
+  std::vector<std::string> words;
+  if (const std::string problem = launcher_problem(reader.text("run.launcher", ""), words); !problem.empty())
+    reader.fail("run.launcher", problem);
+  if (words.front().find('/') != std::string::npos && fs::path(words.front()).is_relative())
+    words.front() = fs::absolute(find_case_file(reader, "run.launcher", words.front())).lexically_normal().string();
+  c.launcher = words;
+}
+
 }  // namespace
+
+std::vector<std::string> parse_launcher(const std::string &text, const std::string &name) {
+  std::vector<std::string> words;
+  if (const std::string problem = launcher_problem(text, words); !problem.empty())
+    throw InputError(name + ": " + problem);
+  return words;
+}
+
+std::vector<std::string> expand_launcher(const std::vector<std::string> &words, int np) {
+  std::vector<std::string> out;
+  for (std::string word : words) {
+    for (std::size_t at; (at = word.find("{np}")) != std::string::npos;) word.replace(at, 4, std::to_string(np));
+    out.push_back(word);
+  }
+  return out;
+}
 
 nlohmann::json HomogeniseCase::contact_json() const {
   if (friction == "strength" && interface.empty()) return nullptr;
@@ -272,6 +334,7 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   if (reader.has("deck") && deck.empty()) reader.fail("deck", "must not be empty");
   if (!deck.empty() && !deck_given)
     c.deck_file = fs::absolute(find_case_file(reader, "deck", deck)).lexically_normal().string();
+  read_run(reader, c);
   return c;
 }
 

@@ -46,6 +46,8 @@ struct HomogeniseCase {
   double wear_scale = 1.0;       // wear_k / the file's k: the deck's wear_scale besides any acceleration
   double jump_max_depth = 0.0;   // cycle jumping (fix runin/wear/jump): mean depth per jump, h + h_cf [m]; 0: off
   long jump_every = 1000;        // steps per phase of the jumps
+  // [run]
+  std::vector<std::string> launcher;  // run.launcher's words ({np} kept, a relative program resolved); empty: none
   // the contact table as the law's metadata and the samples' key record it (null at the defaults)
   nlohmann::json contact_json() const;
   // the wear table as the law's metadata and the samples' key record it (null when the case has none)
@@ -63,6 +65,13 @@ long derived_seed(long j);
 // The value of `variable NAME <style> VALUE` in a deck's text (the first such line, comments stripped); empty if
 // the deck has none. How a deck declares what it supports (height_source, accel_invariant).
 std::string deck_variable(const std::string &deck_text, const std::string &name);
+
+// The MPI launcher (--launcher, the case's run.launcher): its words, split at blanks without a shell, with the
+// placeholder {np} where the number of ranks goes. Empty, a quote, backslash or '$', another placeholder or no {np}:
+// InputError "<name>: <problem>".
+std::vector<std::string> parse_launcher(const std::string &text, const std::string &name);
+// The launcher's words with {np} replaced by `np`.
+std::vector<std::string> expand_launcher(const std::vector<std::string> &words, int np);
 
 std::string sha256_hex(const std::string &bytes);
 std::string file_bytes(const std::filesystem::path &path);  // throws std::runtime_error naming the file

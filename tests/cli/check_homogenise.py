@@ -14,6 +14,13 @@ MODE fail:   a deck that stops with an ERROR for one (pressure, seed): the other
              the failing one is named with its ERROR line, the law is written from the other seed, exit 1; a
              rerun runs only the failing sample again. A deck that fails at every seed of one pressure: exit 1,
              no law written.
+MODE launcher: --launcher names a wrapper script (written in the work directory) that logs its arguments and
+             execs mpirun: the cold run goes through it (one call, -np 2 and -partition 2x1 for the 2 partitions),
+             and the law equals, to the bit, the one mode build wrote with the default launcher in its own cache
+             (WORKDIR/build/law.json; all but the provenance and the cache path).
+MODE launcher_alone: the same wrapper named by the case's [run] launcher = "./launch.sh ..." (beside the case
+             file, runin started elsewhere) with a deck that fails at one (pressure, seed): the 2-partition run and,
+             after it, the sample run alone go through the wrapper (-np 2, then -np 1).
 MODE interrupt: SIGTERM to runin homogenise after its first finished sample (shipped cell, 4 samples of 576
              summits, several seconds each): it stops its mpirun (no lmp_runin or mpirun left with the work
              directory in its command line), exits 1 with one line naming the signal, keeps the finished samples;
@@ -53,8 +60,9 @@ SEED_1 = 4711 + 7919  # the second derived seed (homogenise_plan.cpp: derived_se
 K, H = 7.0e-3, 1.19e9  # the fixture's Archard k and hardness
 
 
-def homogenise(args, case, law, cache, deck, expect):
+def homogenise(args, case, law, cache, deck, expect, extra=()):
     command = [args.runin, "homogenise", case, "--output", law, "--cache-dir", cache, "--np", "2", "--lmp", args.lmp]
+    command += list(extra)
     if deck != "default":  # default: runin's own, inputs/in.rve_rough
         command += ["--deck", deck]
     start = time.monotonic()
@@ -194,6 +202,73 @@ def mode_fail(args):
         fail("a law was written with a pressure that has no good seed")
 
 
+WRAPPER = """#!/bin/sh
+# a user's MPI launcher: logs its arguments, then runs mpirun with them
+printf '%s\\n' "$*" >> "{log}"
+exec "{mpirun}" "$@"
+"""
+
+
+def law_without_run(path):
+    """The law's content that does not depend on how or when it was run."""
+    with open(path) as f:
+        doc = json.load(f)
+    del doc["provenance"]
+    del doc["samples"]["cache_dir"]
+    return doc
+
+
+def write_wrapper(work):
+    """The wrapper script, its log and the --launcher option naming it."""
+    mpirun = shutil.which(os.environ.get("RUNIN_MPIRUN") or "mpirun")
+    if not mpirun:
+        fail("no mpirun to wrap")
+    log = os.path.join(work, "launcher.log")
+    wrapper = os.path.join(work, "launch.sh")
+    with open(wrapper, "w") as f:
+        f.write(WRAPPER.format(log=log, mpirun=mpirun))
+    os.chmod(wrapper, 0o755)
+    return wrapper, log, ["--launcher", f"{wrapper} -np {{np}} --oversubscribe"]
+
+
+def mode_launcher(args):
+    work, case = setup(args, "launcher")
+    wrapper, log, launcher = write_wrapper(work)
+
+    law_default = os.path.join(args.workdir, "build", "law.json")  # mode build's, same case, deck and --np
+    if not os.path.isfile(law_default):
+        fail(f"no {law_default}: run mode build first (ctest: cli_homogenise_build)")
+    law = os.path.join(work, "law.json")
+    result, cold = homogenise(args, case, law, os.path.join(work, "cache"), args.deck, 0, launcher)
+    if f"{wrapper} -np 2 --oversubscribe ..." not in result.stdout or "sample 4/4 done" not in result.stdout:
+        fail("the run did not announce the wrapper or did not finish its 4 samples")
+    with open(log) as f:
+        calls = f.read().splitlines()
+    if len(calls) != 1 or not calls[0].startswith(f"-np 2 --oversubscribe {args.lmp} -partition 2x1 -in "):
+        fail(f"the wrapper was not the one launcher of the 2 partitions: {calls}")
+    if law_without_run(law) != law_without_run(law_default):
+        fail("the law through the wrapper differs from the default launcher's")
+    print(f"check_homogenise: launcher: cold {cold:.2f} s through the wrapper")
+
+
+def mode_launcher_alone(args):
+    work, case = setup(args, "launcher_alone")
+    _, log, _ = write_wrapper(work)
+    with open(case, "a") as f:
+        f.write('[run]\nlauncher = "./launch.sh -np {np} --oversubscribe"\n')
+    if os.path.samefile(os.getcwd(), work):
+        fail("run from the case's directory: ./launch.sh would not test the lookup beside the case file")
+    deck = failing_deck(args, work, f"${{pressure}} > 3.0e6 && ${{seed}} == {SEED_1}")
+    homogenise(args, case, os.path.join(work, "law_fail.json"), os.path.join(work, "cache_fail"), deck, 1)
+    with open(log) as f:
+        calls = f.read().splitlines()
+    alone = [c for c in calls if c.startswith(f"-np 1 --oversubscribe {args.lmp} -in ")]
+    if not calls or not calls[0].startswith(f"-np 2 --oversubscribe {args.lmp} -partition 2x1 ") \
+            or len(alone) != len(calls) - 1 or not alone:
+        fail(f"the samples run alone did not go through the wrapper: {calls}")
+    print(f"check_homogenise: launcher: {len(alone)} sample(s) alone through the wrapper after the failure")
+
+
 def mode_interrupt(args):
     import signal
     work = os.path.abspath(args.workdir)
@@ -248,9 +323,11 @@ def main():
     parser = argparse.ArgumentParser()
     for option in ("--runin", "--lmp", "--reader", "--deck", "--workdir", "--material"):
         parser.add_argument(option, required=True)
-    parser.add_argument("--mode", choices=["build", "fail", "interrupt"], required=True)
+    modes = {"build": mode_build, "fail": mode_fail, "interrupt": mode_interrupt, "launcher": mode_launcher,
+             "launcher_alone": mode_launcher_alone}
+    parser.add_argument("--mode", choices=list(modes), required=True)
     args = parser.parse_args()
-    {"build": mode_build, "fail": mode_fail, "interrupt": mode_interrupt}[args.mode](args)
+    modes[args.mode](args)
     print("check_homogenise: ok")
 
 
