@@ -14,6 +14,7 @@ double jump_extra(double requested, double phase_depth, double max_depth)
     throw InvalidCoefficient("max_depth: largest mean worn depth per jump must be > 0 and finite");
   if (!(phase_depth >= 0.0) || !std::isfinite(phase_depth))
     throw InvalidCoefficient("phase worn depth must be >= 0 and finite");
+  if (phase_depth == 0.0) return 0.0;    // nothing wore (no contact in the phase): nothing to repeat
   return requested * phase_depth > max_depth ? max_depth / phase_depth : requested;
 }
 

@@ -11,7 +11,8 @@ namespace runin::tribo {
 // The extra phases (M - 1) a jump applies: the requested ones, or fewer when they would add more than max_depth to
 // the mean worn depth (worn volume over the nominal area; phase_depth is the phase's own addition to it). The state
 // tolerance is on the mean depth, not on single summits: the summits in contact in a phase wear many times the
-// mean, and a jump moves the load onto others, as sliding does. requested >= 0, phase_depth >= 0 and max_depth > 0,
+// mean, and a jump moves the load onto others, as sliding does. A phase that wore nothing (the counter-body out of
+// contact, e.g. still settling after the last jump) is not repeated: 0. requested >= 0, phase_depth >= 0 and max_depth > 0,
 // all finite (throws InvalidCoefficient naming the argument otherwise).
 double jump_extra(double requested, double phase_depth, double max_depth);
 
