@@ -206,7 +206,7 @@ void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &de
   }
   if (c.jump_max_depth > 0.0)    // M unbounded: the mean depth per jump sets each jump
     vars.insert(vars.end(), {{"jump", "1e12"}, {"jump_every", std::to_string(c.jump_every)},
-                             {"jump_max_depth", g17(c.jump_max_depth)}});
+                             {"jump_max_depth", g17(c.jump_depth_at(s.pressure))}});
   std::string text = "# runin homogenise: sample " + s.key + " (" + s.label() + ")\n";
   text += "log " + quoted(s.log().string()) + "\n";
   text += "print \"$(version)\" file " + quoted((s.dir / "lammps_version").string()) + " screen no\n";

@@ -26,7 +26,7 @@ const Schema &schema() {
       {"surface", {"R", "sigma", "spacing", "nside", "heights"}},
       {"sliding", {"speed"}},
       {"contact", {"friction", "interface"}},
-      {"wear", {"k", "jump_max_depth", "jump_every"}},
+      {"wear", {"k", "jump_max_depth", "jump_every", "jump_reference_pressure"}},
       {"run", {"launcher"}},
       {"grid",
        {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "depth_first", "nslide",
@@ -189,6 +189,11 @@ void read_wear(const CaseReader &reader, const tribo::MaterialFile &materials, H
   c.jump_every = reader.positive_integer("wear.jump_every", c.jump_every, 1000000000L);
   if (reader.has("wear.jump_every") && !(c.jump_max_depth > 0.0))
     reader.fail("wear.jump_every", "needs wear.jump_max_depth (cycle jumping is off without it)");
+  if (reader.has("wear.jump_reference_pressure")) {
+    if (!(c.jump_max_depth > 0.0))
+      reader.fail("wear.jump_reference_pressure", "needs wear.jump_max_depth (cycle jumping is off without it)");
+    c.jump_reference_pressure = reader.positive("wear.jump_reference_pressure");
+  }
 }
 
 // What is wrong with a launcher text (empty: nothing); its words into `words`.
@@ -268,6 +273,7 @@ nlohmann::json HomogeniseCase::wear_json() const {
   if (jump_max_depth > 0.0) {
     out["jump_max_depth"] = jump_max_depth;
     out["jump_every"] = jump_every;
+    if (jump_reference_pressure > 0.0) out["jump_reference_pressure"] = jump_reference_pressure;
   }
   return out;
 }

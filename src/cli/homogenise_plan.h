@@ -46,6 +46,12 @@ struct HomogeniseCase {
   double wear_scale = 1.0;       // wear_k / the file's k: the deck's wear_scale besides any acceleration
   double jump_max_depth = 0.0;   // cycle jumping (fix runin/wear/jump): mean depth per jump, h + h_cf [m]; 0: off
   long jump_every = 1000;        // steps per phase of the jumps
+  double jump_reference_pressure = 0.0;  // > 0: the tolerance at pressure p is jump_max_depth x p / this
+  // The jump tolerance of the sample at pressure p: the summits in contact move about D / (contact fraction) per
+  // jump and that fraction goes with p, so D proportional to p keeps their change per jump the same at every p.
+  double jump_depth_at(double pressure) const {
+    return jump_reference_pressure > 0.0 ? jump_max_depth * pressure / jump_reference_pressure : jump_max_depth;
+  }
   // [run]
   std::vector<std::string> launcher;  // run.launcher's words ({np} kept, a relative program resolved); empty: none
   // the contact table as the law's metadata and the samples' key record it (null at the defaults)
