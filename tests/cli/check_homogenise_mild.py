@@ -5,7 +5,8 @@ friction junction at the file's oxidised state) on inputs/in.rve_rough.
   check_homogenise_mild.py --runin RUNIN --lmp LMP --workdir DIR [--mode wear|contact]
 
 AISI 1020 (potentials/Steel1020.runin, whose pair k is the severe 7e-3), 8^2 + 7^2 summits, 2 and 8 MPa, one seed,
-to h = 0.5 nm. Asserted: the law records the wear table (k, jump_max_depth, jump_every); its wear rate at every
+to h = 0.5 nm on a geometric depth grid (grid.depth_first). Asserted: the law records the wear table (k,
+jump_max_depth, jump_every, jump_reference_pressure) and each sample ran at the tolerance D p / P_ref; its wear rate at every
 grid point is Archard's at the case's k, k p / H, within 1 % (the rates are physical: the cell ran at k, not at an
 acceleration of the file's k); the sliding distance to the last depth is h H / (k p) within 1 % (the jumps'
 sliding counted), far beyond what the cell slid physically.
@@ -28,6 +29,7 @@ sys.path.insert(0, os.path.join(SOURCE, "tools"))
 from runin_common import fail, fresh_dir  # noqa: E402
 
 K, H = 1.0e-5, 1.19e9
+P_REF = 4.0e6    # the jump tolerance 5e-11 m holds here; proportional to p elsewhere
 CASE = f"""title = "mild-wear law check"
 [material]
 file = "{SOURCE}/potentials/Steel1020.runin"
@@ -43,12 +45,14 @@ pressure_max = 8.0e6
 pressures = 2
 seeds = 1
 depth = 5.0e-10
-depth_points = 3
+depth_points = 4
+depth_first = 1.0e-10
 nslide = 400000
 nout = 200
 [wear]
 k = {K}
 jump_max_depth = 5.0e-11
+jump_reference_pressure = {P_REF}
 """
 
 
@@ -101,8 +105,19 @@ def main():
         check_contact(law)
         return
     wear = law["samples"].get("wear")
-    if wear != {"k": K, "jump_max_depth": 5.0e-11, "jump_every": 1000}:
+    if wear != {"k": K, "jump_max_depth": 5.0e-11, "jump_every": 1000, "jump_reference_pressure": P_REF}:
         fail(f"the law's samples.wear is {wear}")
+    # each sample's deck got the tolerance D p / P_REF (wear.jump_reference_pressure)
+    for entry in law["samples"]["list"]:
+        deck = open(os.path.join(a.workdir, "cache", entry["key"], "sample.in")).read()
+        got = float(deck.split("variable jump_max_depth index")[1].split()[0].strip('"'))
+        want = 5.0e-11 * entry["pressure"] / P_REF
+        if abs(got / want - 1.0) > 1e-12:
+            fail(f"sample at p = {entry['pressure']:g} Pa ran with jump_max_depth {got:g}, want D p / P_ref = {want:g}")
+    # the geometric depth grid (grid.depth_first): 0, then 1e-10 .. 5e-10 m in ratio 5^(1/2)
+    grid = law["worn_depth"]
+    if len(grid) != 4 or grid[0] != 0.0 or abs(grid[1] / 1e-10 - 1) > 1e-12 or abs(grid[2] / (1e-10 * 5 ** 0.5) - 1) > 1e-12:
+        fail(f"worn-depth grid {grid}: not 0, then geometric from 1e-10 to 5e-10 m")
     worst = 0.0
     for i, p in enumerate(law["pressure"]):
         for j, h in enumerate(law["worn_depth"]):

@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""The error of the state law's rule below its lowest pressure, against direct cells there.
+
+  check_below_grid.py --runin RUNIN --lmp LMP --workdir DIR [--cache-dir DIR]
+
+A node below the lowest grid pressure of the pipeline's dry law (inputs/state_law_steel_mild.json, 1.26-20 MPa) takes
+friction and surface state at that pressure and wear rates proportional to p (out_of_range = "archard",
+doc/state_law.md). `runin homogenise tests/data/state_law/steel_mild_below_grid.toml` builds direct cells at 0.5
+and 0.79 MPa (same contact, wear and jump rule in a cell twice as wide, 2 seeds, to h = 0.15 nm); at each of their
+depths > 0 the law's mu_body and Rq at 1.26 MPa are compared with the cells' seed means. Asserted: RMS over the depths within 3 %
+for mu_body and 2 % for Rq at both pressures, and the cells' wear rates are Archard's k p / H within 1 % (the part
+of the rule that is exact). The numbers are printed for doc/rve_cell.md.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+
+SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE, "tools"))
+from state_law import StateLaw  # noqa: E402  (the C++ reader's interpolation rule)
+from runin_common import fail, mpi_env  # noqa: E402
+
+LAW = os.path.join(SOURCE, "inputs", "state_law_steel_mild.json")
+CASE = os.path.join(SOURCE, "tests", "data", "state_law", "steel_mild_below_grid.toml")
+BOUNDS = {"mu_body": 0.03, "rq": 0.02}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--runin", required=True)
+    ap.add_argument("--lmp", required=True)
+    ap.add_argument("--workdir", required=True)
+    ap.add_argument("--cache-dir", default=None)
+    a = ap.parse_args()
+    os.makedirs(a.workdir, exist_ok=True)
+    cells_path = os.path.join(a.workdir, "below_grid.json")
+    cache = a.cache_dir or os.path.join(a.workdir, "cache")
+    result = subprocess.run([a.runin, "homogenise", CASE, "--output", cells_path, "--cache-dir", cache, "--np", "2",
+                             "--lmp", a.lmp], cwd=SOURCE, env=mpi_env(), capture_output=True, text=True)
+    if result.returncode != 0:
+        fail(f"runin homogenise exited {result.returncode}: {result.stderr[-1500:]}")
+    law = StateLaw(LAW)
+    cells = json.load(open(cells_path))
+    p_min = law.p[0]
+    k = cells["samples"]["wear"]["k"]
+    hardness = None
+    for line in open(os.path.join(SOURCE, cells["material"]["file"])):
+        w = line.split()
+        if w[:2] == ["material", cells["material"]["rough"]]:
+            hardness = float(w[5])
+    problems = []
+    for i, p in enumerate(cells["pressure"]):
+        for field in ("mu_body", "rq"):
+            errors = []
+            for j, h in enumerate(cells["worn_depth"]):
+                if h <= 0.0:
+                    continue
+                direct = cells["fields"][field]["mean"][i][j]
+                ruled = law.value(field, p_min, h)
+                errors.append(ruled / direct - 1.0)
+            rms = math.sqrt(sum(e * e for e in errors) / len(errors))
+            worst = max(abs(e) for e in errors)
+            print(f"p = {p / 1e6:.3f} MPa, {field}: the law at {p_min / 1e6:g} MPa against the direct cells: RMS "
+                  f"{100 * rms:.2f} %, largest {100 * worst:.2f} % over h = {cells['worn_depth'][1]:.3g}-"
+                  f"{cells['worn_depth'][-1]:.3g} m")
+            if rms > BOUNDS[field]:
+                problems.append(f"{field} at {p:g} Pa: RMS {100 * rms:.2f} % > {100 * BOUNDS[field]:g} %")
+        rates = [cells["fields"]["wear_rate"]["mean"][i][j] for j in range(len(cells["worn_depth"]))]
+        archard = k * p / hardness
+        worst = max(abs(r / archard - 1.0) for r in rates)
+        print(f"p = {p / 1e6:.3f} MPa: wear rates within {100 * worst:.3f} % of k p / H")
+        if worst > 0.01:
+            problems.append(f"wear rate at {p:g} Pa off Archard's by {100 * worst:.2f} %")
+    if problems:
+        fail("; ".join(problems))
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
