@@ -1,7 +1,10 @@
 #include "continuum/pin_state_law.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
 #include <string>
 
 namespace runin::continuum {
@@ -107,8 +110,158 @@ PinStateLaw::State PinStateLaw::state() const {
   return row;
 }
 
+void PinStateLaw::restore(const Snapshot &s) {
+  pin_ = s.pin;
+  nodes_ = s.nodes;
+  disk_ = s.disk;
+  slid_ = s.slid;
+  t_now_ = s.t_now;
+  held_.held_kinetic = s.held_kinetic;
+  wear_steps_ = s.wear_steps;
+}
+
 double PinStateLaw::profile_height(int ring) const {
   return pin_ ? pin_->profile_height(ring) : nodes_.state()[static_cast<std::size_t>(ring)];
+}
+
+void WearSteps::validate() const {
+  if (!(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1))
+    throw std::invalid_argument("wear steps: tolerance must be in (0, 0.1], got " + g(tolerance));
+  if (!(std::isfinite(max_fraction) && max_fraction > 0.0 && max_fraction <= 1.0))
+    throw std::invalid_argument("wear steps: max_fraction must be in (0, 1], got " + g(max_fraction));
+  if (max_steps <= 0) throw std::invalid_argument("wear steps: max_steps must be positive");
+}
+
+namespace {
+// A slow step's failure as a status (split_run's rule).
+template <class F>
+bool guarded(SplitReport &report, double t, const F &step) {
+  try {
+    step();
+    return true;
+  } catch (const SlowStepError &e) {
+    report.status = e.status, report.message = e.what();
+  } catch (const std::out_of_range &e) {
+    report.status = SplitStatus::LawOutOfRange, report.message = e.what();
+  } catch (const std::invalid_argument &e) {
+    report.status = SplitStatus::InvalidState, report.message = e.what();
+  }
+  report.time = t;
+  return false;
+}
+
+// The step's error estimate over the tolerance: the relative change of mu_eff (the lag of F/W behind the state,
+// first order in the step) and each node's move inside the law's depth range over that range's length.
+double step_error(double mu0, double mu1, const std::vector<double> &h0, const std::vector<double> &h1,
+                  double depth_range, double tolerance) {
+  double e = std::abs(mu1 - mu0) / std::max(std::abs(mu0), 1e-12);
+  if (depth_range > 0.0)
+    for (std::size_t i = 0; i < h0.size(); ++i)
+      e = std::max(e, std::abs(std::min(h1[i], depth_range) - std::min(h0[i], depth_range)) / depth_range);
+  return e / tolerance;
+}
+}  // namespace
+
+SplitReport run_pin_split(const PinOnDiskSystem &system, const PinOnDiskRun &run, PinStateLaw &pin,
+                          const WearSteps &steps, const std::function<void(const PinOnDiskSample &)> &observer) {
+  if (!steps.adaptive)
+    return split_run<PinOnDiskSample>(
+        pin, [&](const auto &on_sample, const auto &refresh) { return simulate(system, run, on_sample, refresh); },
+        observer);
+  steps.validate();
+  run.validate();
+  const auto &p = system.parameters();
+  if (p.drive != PinDrive::Speed)
+    throw std::invalid_argument("adaptive wear steps need the speed drive (under a held torque the speed follows mu "
+                                "and stick-slip is possible)");
+
+  // The drive prescribes s(t) (a linear ramp of V, then V held): the pin's dynamics are kinematic, F = mu_eff W
+  // (+ alpha V), and the drive's torque adds J dw/dt on the ramp (PinOnDiskSystem::sample). Only the slow system
+  // is stepped, in distance.
+  const double V = p.sliding_speed, ramp = p.ramp_time, s_ramp = 0.5 * V * ramp;
+  const auto distance_at = [&](double t) { return ramp > 0.0 && t <= ramp ? 0.5 * V * t * t / ramp : s_ramp + V * (t - ramp); };
+  const auto time_at = [&](double s) { return s <= s_ramp ? std::sqrt(2.0 * ramp * s / V) : ramp + (s - s_ramp) / V; };
+  const double R0 = system.friction().initial_state();
+  const auto sample_at = [&](double t, double s) {
+    const double y[PinOnDiskSystem::state_size] = {p.prescribed_speed(t) / p.track_radius, s, R0};
+    return system.sample(t, y, ContactState::Slip, 1);  // F/W: the coefficient held over the step that ends here
+  };
+
+  SplitReport report;
+  report.fast.breakaway_times.push_back(0.0);  // the drive moves the pin from t = 0 (as simulate)
+  if (!guarded(report, 0.0, [&] { pin.start(); })) return report;
+  const PinOnDiskSample first = sample_at(0.0, 0.0);
+  if (!guarded(report, 0.0, [&] { pin.step(first); })) return report;
+  if (observer) observer(first);
+
+  const double s_end = distance_at(run.t_end);
+  const double max_step = steps.max_fraction * s_end;
+  const double smallest = 1e-12 * s_end;
+  std::vector<double> stops;
+  for (double t : steps.stop_times)
+    if (t > 0.0 && t < run.t_end) stops.push_back(distance_at(t));
+  std::sort(stops.begin(), stops.end());
+  stops.push_back(s_end);
+  std::size_t next_stop = 0;
+  const double depth_range = pin.nodes().law().worn_depth().back();
+  // First try: the distance of the first output interval (of a fixed-interval run).
+  double s = 0.0, ds = std::min(distance_at(std::min(run.output_interval, run.t_end)), max_step);
+  long tries = 0;
+  while (s < s_end) {
+    while (stops[next_stop] <= s) ++next_stop;
+    const bool at_stop = s + ds >= stops[next_stop] * (1.0 - 1e-14);
+    const double s1 = at_stop ? stops[next_stop] : s + ds;
+    const double t1 = s1 >= s_end ? run.t_end : time_at(s1);
+    if (++tries > steps.max_steps) {
+      report.status = SplitStatus::TooManySlowSteps;
+      report.message = "adaptive wear steps at t = " + g(t1) + " s: more than " + std::to_string(steps.max_steps) +
+                       " steps";
+      report.time = t1;
+      return report;
+    }
+    const PinOnDiskSample sample = sample_at(t1, s1);
+    const auto before = pin.save();
+    const double mu0 = pin.held().held_kinetic;
+    if (!guarded(report, t1, [&] { pin.step(sample); })) return report;
+    const double err = step_error(mu0, pin.held().held_kinetic, before.nodes.state(), pin.nodes().state(),
+                                  depth_range, steps.tolerance);
+    if (err > 1.0) {  // rejected: back, and a shorter step (first order: the change goes as the step)
+      pin.restore(before);
+      if (s1 - s <= smallest) {
+        report.status = SplitStatus::SlowFailure;
+        report.message = "adaptive wear steps at t = " + g(t1) + " s: the change of mu_eff or of the node states "
+                         "exceeds the tolerance over a step of " + g(s1 - s) + " m (a jump in the law?)";
+        report.time = t1;
+        return report;
+      }
+      ++report.rejected_steps;
+      ds = std::max((s1 - s) * std::max(0.2, 0.9 / err), smallest);
+      continue;
+    }
+    ++report.slow_steps;
+    report.time = t1;
+    if (observer) observer(sample);
+    const double grow = err > 0.0 ? std::clamp(0.9 / err, 0.2, 2.0) : 2.0;
+    // a step cut short by a stop does not set the next one
+    ds = std::min(max_step, at_stop && s1 - s < ds ? ds : (s1 - s) * grow);
+    s = s1;
+  }
+  report.fast.end_time = run.t_end;
+  return report;
+}
+
+ArchardRatios archard_ratios(const coupling::StateLaw &law, double pin_volume, double disk_volume,
+                             double load_distance) {
+  ArchardRatios r;
+  const double p0 = law.pressure().front();
+  const auto slice = law.slice(p0, coupling::OutOfRange::Clamp);
+  r.k_pin = law.value(coupling::StateField::WearRate, slice, 0.0) / p0;
+  r.k_disk = law.value(coupling::StateField::CounterfaceWearRate, slice, 0.0) / p0;
+  if (load_distance > 0.0) {
+    if (r.k_pin > 0.0) r.pin = pin_volume / (r.k_pin * load_distance);
+    if (r.k_disk > 0.0) r.disk = disk_volume / (r.k_disk * load_distance);
+  }
+  return r;
 }
 
 }  // namespace runin::continuum
