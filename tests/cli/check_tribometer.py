@@ -7,7 +7,7 @@ wear steps) and checks its summary against its own CSV and the law (doc/state_la
 - the run-in distance: steady mu = the mean of F/W over the last 10 % of sliding (each row's F/W weighted by the
   distance slid since the row before: F/W is held over it), the settle distance = the first row from which on F/W
   stays within 2 % of it; recomputed here and equal to the summary's (stdout and pin_on_disk_summary.csv);
-- Archard's invariant: worn volume / (K W s) within 2 % of 1 for the pin and for the disk, K = the law's
+- Archard's invariant: worn volume / (K W s) within 2 % of 1 for the pin and for the disk, K = the case's law's
   wear_rate (counterface_wear_rate) / p at its lowest grid pressure and h = 0; recomputed and equal to the summary's;
 - the slow steps are the CSV's rows after the first;
 - check_state_law_pod.py on the output: mu_eff(s) and h(s) within 1 % of the law integrated directly along s at the
@@ -27,7 +27,6 @@ from runin_common import SOURCE_DIR, fail, fresh_dir  # noqa: E402
 from state_law import StateLaw  # noqa: E402
 
 CASE = os.path.join(SOURCE_DIR, "inputs", "pin_on_disk_tribometer.toml")
-LAW = os.path.join(SOURCE_DIR, "inputs", "state_law_steel_rough.json")
 LOAD, SPEED, T_END, RAMP, FLAT_RADIUS = 20.0, 0.5, 2000.0, 0.05, 1.5e-3
 WALL_BOUND = 10.0
 SETTLE_TOLERANCE, TAIL = 0.02, 0.1
@@ -96,7 +95,12 @@ def main():
     if not m or not close(float(m.group(1)), steady, 1e-5) or not close(float(m.group(2)), settle, 1e-5):
         fail("no run-in line matching %.6g m, steady %.6g" % (settle, steady))
 
-    law = StateLaw(LAW)
+    # the case's law (friction.law), as the summary names it
+    m = re.search(r"^  state law +(\S+) \(p ", stdout, re.M)
+    if not m:
+        fail("no state law line")
+    law_path = m.group(1)
+    law = StateLaw(law_path)
     p0 = law.p[0]
     k_pin = law.value("wear_rate", p0, 0.0) / p0
     k_disk = law.value("counterface_wear_rate", p0, 0.0) / p0
@@ -119,7 +123,7 @@ def main():
         fail("no wear-steps line with %d slow steps" % steps)
 
     pressure = LOAD / (math.pi * FLAT_RADIUS ** 2)
-    check = subprocess.run([sys.executable, os.path.join(HERE, "check_state_law_pod.py"), out, "--law", LAW,
+    check = subprocess.run([sys.executable, os.path.join(HERE, "check_state_law_pod.py"), out, "--law", law_path,
                             "--flat", repr(pressure), "--counterface-ratio", "1.0", "--vtk", "3",
                             "--min-distance", "999"], capture_output=True, text=True)
     print(check.stdout.strip())
