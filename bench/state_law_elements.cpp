@@ -163,7 +163,8 @@ Outcome pin_tribometer(const runin::cli::PinOnDiskCase &c, const WearSteps &step
     samples.push_back(s);
     volume = pin.state().wear_volume;
   });
-  if (!report.ok()) throw std::runtime_error(std::string("tribometer: ") + to_string(report.status) + ": " + report.message);
+  if (!report.ok())
+    throw std::runtime_error(std::string("tribometer: ") + to_string(report.status) + ": " + report.message);
   Outcome o;
   o.steps = report.fast.steps;
   o.wear_updates = report.slow_steps;
@@ -317,7 +318,8 @@ int main(int argc, char **argv) {
   static const auto steel_law = pod.friction->state_law()->law;  // inputs/state_law_steel.json
   static const auto tribometer = runin::cli::read_pin_on_disk_case(kSource + "/inputs/pin_on_disk_tribometer.toml", {});
   if (!tribometer.wear_steps.adaptive || tribometer.run.t_end != 2000.0) {
-    std::fprintf(stderr, "state_law_elements: inputs/pin_on_disk_tribometer.toml changed (2000 s, adaptive expected)\n");
+    std::fprintf(stderr,
+                 "state_law_elements: inputs/pin_on_disk_tribometer.toml changed (2000 s, adaptive expected)\n");
     return 1;
   }
 

@@ -179,8 +179,12 @@ SplitReport run_pin_split(const PinOnDiskSystem &system, const PinOnDiskRun &run
   // (+ alpha V), and the drive's torque adds J dw/dt on the ramp (PinOnDiskSystem::sample). Only the slow system
   // is stepped, in distance.
   const double V = p.sliding_speed, ramp = p.ramp_time, s_ramp = 0.5 * V * ramp;
-  const auto distance_at = [&](double t) { return ramp > 0.0 && t <= ramp ? 0.5 * V * t * t / ramp : s_ramp + V * (t - ramp); };
-  const auto time_at = [&](double s) { return s <= s_ramp ? std::sqrt(2.0 * ramp * s / V) : ramp + (s - s_ramp) / V; };
+  const auto distance_at = [&](double t) {
+    return ramp > 0.0 && t <= ramp ? 0.5 * V * t * t / ramp : s_ramp + V * (t - ramp);
+  };
+  const auto time_at = [&](double s) {
+    return s <= s_ramp ? std::sqrt(2.0 * ramp * s / V) : ramp + (s - s_ramp) / V;
+  };
   const double R0 = system.friction().initial_state();
   const auto sample_at = [&](double t, double s) {
     const double y[PinOnDiskSystem::state_size] = {p.prescribed_speed(t) / p.track_radius, s, R0};
