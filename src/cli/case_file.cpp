@@ -425,9 +425,9 @@ void read_wear_steps(const CaseReader &reader, PinOnDiskCase &c, bool state_law)
     return;
   }
   if (!state_law) reader.fail("run.wear_steps", "\"adaptive\" needs friction.model = \"state_law\"");
-  if (c.parameters.drive != continuum::PinDrive::Speed)
-    reader.fail("run.wear_steps", "\"adaptive\" needs loading.drive = \"speed\" (under a held torque the speed "
-                                  "follows mu and stick-slip is possible: use \"fixed\")");
+  if (c.parameters.drive != continuum::PinDrive::Speed && !(c.friction->speed_coefficient() > 0.0))
+    reader.fail("run.wear_steps", "\"adaptive\" under the torque drive needs friction.alpha > 0 (steady sliding at "
+                                  "V_ss = (T / r - mu W) / (alpha W)); without it use \"fixed\" or the speed drive");
   c.wear_steps.adaptive = true;
   c.wear_steps.tolerance = reader.positive_at_most("run.tolerance", 0.1, 1e-3);
 }

@@ -333,11 +333,11 @@ std::string summary_csv_text(const PinOnDiskCase &c, const Curve &curve) {
                                      curve.rows.back().wear_volume});
   if (c.wear_steps.adaptive) {
     const auto r = run_in(curve);
-    header += ",settle_distance_m,steady_mu_last_10pc,slow_steps,rejected_steps,wall_time_s,"
+    header += ",settle_distance_m,steady_mu_last_10pc,slow_steps,rejected_steps,dynamics_stretches,wall_time_s,"
               "archard_ratio_pin,archard_ratio_disk";
-    row += fmt::format(",{},{:.12g},{},{},{:.6g},{:.12g},{:.12g}",
+    row += fmt::format(",{},{:.12g},{},{},{},{:.6g},{:.12g},{:.12g}",
                        r.distance < 0.0 ? std::string() : fmt::format("{:.12g}", r.distance), r.steady_mu,
-                       curve.split.slow_steps, curve.split.rejected_steps,
+                       curve.split.slow_steps, curve.split.rejected_steps, curve.split.fallbacks,
                        curve.wall_seconds, curve.archard->pin, curve.archard->disk);
   }
   return header + "\n" + row + "\n";
@@ -422,8 +422,14 @@ std::string print_state_law(const PinOnDiskCase &c, const Curve &curve) {
   fmt::print("  law lookups       {}\n", continuum::describe(*curve.range_use, *law->law));
   if (c.wear_steps.adaptive) {
     const auto &sp = curve.split;
-    fmt::print("  wear steps        adaptive, tolerance {:g}: {} slow steps along the drive's s(t) ({} rejected)\n",
-               c.wear_steps.tolerance, sp.slow_steps, sp.rejected_steps);
+    if (c.parameters.drive == continuum::PinDrive::Speed)
+      fmt::print("  wear steps        adaptive, tolerance {:g}: {} slow steps along the drive's s(t) ({} rejected)\n",
+                 c.wear_steps.tolerance, sp.slow_steps, sp.rejected_steps);
+    else
+      fmt::print("  wear steps        adaptive, tolerance {:g}: {} slow steps ({} rejected); full dynamics over the "
+                 "ramp and {} more stretches of {} output intervals where the pin may stick or lag V_ss\n",
+                 c.wear_steps.tolerance, sp.slow_steps, sp.rejected_steps, sp.fallbacks,
+                 c.wear_steps.dynamics_chunk);
     const auto r = run_in(curve);
     fmt::print("  run-in            mu = F/W within {:g} % of its steady value {:.6g} (mean over the last {:g} % of "
                "sliding) from s = {}\n",

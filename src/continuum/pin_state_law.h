@@ -95,16 +95,22 @@ struct WearSteps {
   double max_fraction = 1e-3;      // largest step / the distance of the quasi-static phase
   std::vector<double> stop_times;  // s: steps end exactly at these (VTK frames)
   long max_steps = 10000000;       // accepted + rejected quasi-static steps
+  long dynamics_chunk = 10;        // torque drive: output intervals of full dynamics between steadiness checks
 
   void validate() const;  // throws std::invalid_argument naming the field
 };
 
 // Runs the pin's split. Fixed: split_run at run.output_interval (CVODE over each interval, mu_eff held).
-// Adaptive (speed drive only): the drive prescribes s(t), so the pin's dynamics are kinematic (F = (mu_eff +
-// alpha V) W, plus J dw/dt on the ramp) and only the slow system is stepped, by distances set by the error
-// control of `steps` from t = 0 (the first try: the distance of the first output interval). A sample is emitted
-// after every accepted step, F/W being the coefficient held over it, as in split_run. Failures are statuses
-// (SplitReport); bad settings (std::invalid_argument: a torque drive with adaptive steps, a bad tolerance) throw.
+// Adaptive, speed drive: the drive prescribes s(t), so the pin's dynamics are kinematic (F = (mu_eff + alpha V) W,
+// plus J dw/dt on the ramp) and only the slow system is stepped, by distances set by the error control of `steps`,
+// from t = 0 (the first try: the distance of the first output interval).
+// Adaptive, torque drive (alpha > 0): the full dynamics (split_run at run.output_interval) over the ramp and in
+// stretches of `dynamics_chunk` intervals wherever the pin may stick or would lag its quasi-static speed
+// V_ss = (T / r - mu_eff W) / (alpha W) by more than the tolerance (the lag is tau dV_ss/dt, tau = m / (alpha W));
+// quasi-static distance steps at V_ss(mu_eff) where it slides steadily.
+// A sample is emitted after every accepted step, F/W being the coefficient held over it, as in split_run.
+// Failures are statuses (SplitReport); bad settings (std::invalid_argument: a torque drive without alpha > 0, a
+// bad tolerance) throw.
 SplitReport run_pin_split(const PinOnDiskSystem &system, const PinOnDiskRun &run, PinStateLaw &pin,
                           const WearSteps &steps, const std::function<void(const PinOnDiskSample &)> &observer);
 

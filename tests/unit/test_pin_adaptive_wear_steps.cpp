@@ -28,6 +28,7 @@ const std::shared_ptr<const coupling::StateLaw> &rough_law() {
 // Flat AISI 1020 pin (1.5 mm, 32 rings) on the shipped rough-on-rough law at a set speed.
 struct PinSetup {
   double load = 20.0, speed = 0.1, track_radius = 0.05, ramp = 0.05, t_end = 0.05;
+  double torque = 0.0, alpha = 0.0, mass = 0.001;  // torque > 0: the torque drive
 };
 
 struct Outcome {
@@ -48,7 +49,12 @@ Outcome run(const PinSetup &u, const continuum::WearSteps &steps, double interva
   p.track_radius = u.track_radius;
   p.normal_load = u.load;
   p.ramp_time = u.ramp;
-  const continuum::PinOnDiskSystem system(p, continuum::SlidingFriction::state_law(held));
+  p.mass = u.mass;
+  if (u.torque > 0.0) {
+    p.drive = continuum::PinDrive::Torque;
+    p.applied_torque = u.torque;
+  }
+  const continuum::PinOnDiskSystem system(p, continuum::SlidingFriction::state_law(held, u.alpha));
   continuum::PinStateLawSettings settings;
   settings.flat_radius = 1.5e-3;
   settings.tip.rings = 32;
@@ -137,6 +143,52 @@ TEST(PinAdaptiveWearSteps, FollowsFixedIntervalWithinTolerance) {
   const double coarse_error = mu_error(coarse, ref);
   std::printf("fixed interval 1 ms: max |F/W - mu| / mu = %.3g\n", coarse_error);
   EXPECT_GT(coarse_error, errors.front());
+}
+
+// Torque drive with alpha > 0: the full dynamics (at the output interval) over the ramp and wherever the pin would
+// lag its quasi-static speed V_ss = (T / r - mu_eff W) / (alpha W) by more than the tolerance, quasi-static steps
+// elsewhere. Against a 10 us fixed interval: F/W along s in slip, the sliding distance and the speed at the end.
+TEST(PinAdaptiveWearSteps, TorqueDriveFallsBackToTheDynamics) {
+  PinSetup u;
+  u.track_radius = 0.02;
+  u.ramp = 0.01;
+  u.t_end = 0.1;
+  // alpha W = 20 N s/m (tau = m / (alpha W) = 50 us): V_ss 0.1 -> 0.117 m/s; alpha W = 4 N s/m (250 us): 0.1 -> 0.186
+  for (double alpha : {1.0, 0.2}) {
+    u.alpha = alpha;
+    u.torque = u.track_radius * (0.0397 * 20 + alpha * 20 * 0.1);  // V_ss = 0.1 m/s at the law's peak mu
+    const Outcome ref = run(u, {}, 1e-5);
+    // the reference's own lag of F/W behind its state: what the stretches of dynamics (at its interval) carry
+    double lag = 0.0;
+    for (std::size_t k = 0; k < ref.samples.size(); ++k) {
+      const auto &s = ref.samples[k];
+      if (s.state == continuum::ContactState::Slip && s.distance > 0.0)
+        lag = std::max(lag, std::abs(s.mu - alpha * s.speed - ref.mu_eff[k]) / ref.mu_eff[k]);
+    }
+    for (double tol : {1e-2, 1e-3}) {
+      const Outcome a = run(u, adaptive(tol), 1e-5);  // the dynamics' stretches at the reference's interval
+      double e = 0.0;  // the friction law's part of F/W (F/W - alpha V) against the reference's state
+      for (const auto &s : a.samples)
+        if (s.state == continuum::ContactState::Slip && s.distance > 0.0) {
+          const double mu = at(ref, s.distance);
+          e = std::max(e, std::abs(s.mu - alpha * s.speed - mu) / mu);
+        }
+      const auto &x = a.samples.back(), &y = ref.samples.back();
+      std::printf("torque drive, alpha %g, tolerance %g: %zu samples (%ld rejected, %ld stretches of dynamics, %ld "
+                  "CVODE steps; reference %zu, %ld), max |F/W - alpha V - mu| / mu = %.3g (the reference's own lag "
+                  "%.3g); s / reference - 1 = %.2g, V %.2g\n",
+                  alpha, tol, a.samples.size(), a.report.rejected_steps, a.report.fallbacks, a.report.fast.steps,
+                  ref.samples.size(), ref.report.fast.steps, e, lag, x.distance / y.distance - 1,
+                  x.speed / y.speed - 1);
+      EXPECT_LT(a.samples.size(), ref.samples.size() / 3);
+      EXPECT_GT(a.report.fast.steps, 0);
+      EXPECT_LE(e, std::max(2.0 * tol, 1.05 * lag));
+      EXPECT_NEAR(x.distance / y.distance, 1.0, tol);
+      EXPECT_NEAR(x.speed / y.speed, 1.0, tol);
+    }
+  }
+  u.alpha = 0.0;  // no steady sliding under a held torque
+  EXPECT_THROW(run(u, adaptive(1e-3), 1e-3), std::invalid_argument);
 }
 
 // Samples land on the requested stop times (VTK frames) and at t_end; the torque drive is refused.
