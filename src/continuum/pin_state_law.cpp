@@ -349,8 +349,10 @@ SplitReport run_torque_adaptive(const PinOnDiskSystem &system, const PinOnDiskRu
         fall_back = true;
         break;
       }
-      const double dt = std::min(ds / v, run.t_end - last.t);
-      const double t1 = last.t + dt >= run.t_end * (1.0 - 1e-14) ? run.t_end : last.t + dt;
+      double stop = run.t_end;  // the next VTK time, or the end
+      for (double ts : steps.stop_times)
+        if (ts > last.t * (1.0 + 1e-14) && ts < stop) stop = ts;
+      const double t1 = last.t + ds / v >= stop * (1.0 - 1e-14) ? stop : last.t + ds / v;
       const double s1 = last.distance + v * (t1 - last.t);
       if (++tries > steps.max_steps) {
         report.status = SplitStatus::TooManySlowSteps;

@@ -187,6 +187,14 @@ TEST(PinAdaptiveWearSteps, TorqueDriveFallsBackToTheDynamics) {
       EXPECT_NEAR(x.speed / y.speed, 1.0, tol);
     }
   }
+  // samples land on the stop times in the quasi-static steps too
+  auto stops = adaptive(1e-2);
+  stops.stop_times = {0.0501, 0.0777};
+  const Outcome a = run(u, stops, 1e-5);
+  for (double t : stops.stop_times)
+    EXPECT_TRUE(std::any_of(a.samples.begin(), a.samples.end(),
+                            [&](const continuum::PinOnDiskSample &s) { return std::abs(s.t - t) < 1e-12; }))
+        << t;
   u.alpha = 0.0;  // no steady sliding under a held torque
   EXPECT_THROW(run(u, adaptive(1e-3), 1e-3), std::invalid_argument);
 }
