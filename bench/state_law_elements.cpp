@@ -16,6 +16,9 @@
 //                 the conformal contact's edge nodes fall below the law's 0.2 MPa: friction.out_of_range =
 //                 clamp (as inputs/journal_bearing_state_law.toml), counted. Baseline: static_kinetic(0.95,
 //                 0.76) with the thesis's Archard wear (k = 1e-3, H = 1.2 GPa), wear re-solves included.
+//  tribometer     inputs/pin_on_disk_tribometer.toml: flat pin, 20 N, 0.5 m/s on a 20 mm track, 1 km (2000 s)
+//                 with adaptive wear steps (tolerance 1e-3), against the same case at the fixed 2 ms output
+//                 interval over 1 m and 10 m (2 s, 20 s): the fixed-interval cost grows with the distance.
 //  piston ring    inputs/piston_ring_state_law.toml as read by the CLI's case reader: the thesis pack (rings
 //                 A and B, grooves 81.5 / 80.5 mm, tensions 0.2 / 0.15 MPa, 2 s ramp, BDF 1e-8 / 1e-12) in
 //                 steel, half-plane face contact (128 ring cells, 512 liner cells), clamp, output 2 ms.
@@ -134,6 +137,41 @@ Outcome pin_baseline(const runin::cli::PinOnDiskCase &c, const SlidingFriction &
   check(report, "pin-on-disk (baseline)");
   Outcome o;
   o.steps = report.steps;
+  return o;
+}
+
+// ---------------------------------------------------------------- tribometer (1 km, adaptive wear steps)
+
+// inputs/pin_on_disk_tribometer.toml as cmd_pin_on_disk.cpp runs it (run_state_law_case: PinStateLaw on the case's
+// flat pin, continuum::run_pin_split, the pin's state read at every sample), with `steps` and `t_end` set here.
+Outcome pin_tribometer(const runin::cli::PinOnDiskCase &c, const WearSteps &steps, double t_end) {
+  auto *law = c.friction->state_law();
+  const auto &k = *c.contact;
+  PinStateLawSettings settings;
+  settings.flat_radius = k.flat_radius;
+  settings.tip.rings = k.rings;
+  settings.tip.effective_modulus = k.effective_modulus();
+  settings.load = c.parameters.normal_load;
+  settings.track_radius = c.parameters.track_radius;
+  PinStateLaw pin(settings, *law);
+  const PinOnDiskSystem system(c.parameters, *c.friction);
+  PinOnDiskRun run = c.run;
+  run.t_end = t_end;
+  std::vector<PinOnDiskSample> samples;
+  double volume = 0.0;
+  const auto report = run_pin_split(system, run, pin, steps, [&](const PinOnDiskSample &s) {
+    samples.push_back(s);
+    volume = pin.state().wear_volume;
+  });
+  if (!report.ok())
+    throw std::runtime_error(std::string("tribometer: ") + to_string(report.status) + ": " + report.message);
+  Outcome o;
+  o.steps = report.fast.steps;
+  o.wear_updates = report.slow_steps;
+  o.mu_eff = law->held_kinetic;
+  o.h_max = *std::max_element(pin.nodes().state().begin(), pin.nodes().state().end());
+  o.use = pin.nodes().use();
+  benchmark::DoNotOptimize(volume);
   return o;
 }
 
@@ -278,6 +316,12 @@ int main(int argc, char **argv) {
     return 1;
   }
   static const auto steel_law = pod.friction->state_law()->law;  // inputs/state_law_steel.json
+  static const auto tribometer = runin::cli::read_pin_on_disk_case(kSource + "/inputs/pin_on_disk_tribometer.toml", {});
+  if (!tribometer.wear_steps.adaptive || tribometer.run.t_end != 2000.0) {
+    std::fprintf(stderr,
+                 "state_law_elements: inputs/pin_on_disk_tribometer.toml changed (2000 s, adaptive expected)\n");
+    return 1;
+  }
 
   static const SlidingFriction pod_thesis = SlidingFriction::constant(0.95, 0.68);
   static const auto jb = bearing_thesis();
@@ -308,6 +352,10 @@ int main(int argc, char **argv) {
   };
   reg("pin_on_disk/state_law", [] { return pin_state_law(pod); });
   reg("pin_on_disk/baseline_mu0_alpha", [] { return pin_baseline(pod, pod_thesis); });
+  // 1 km with adaptive wear steps against the fixed output interval (2 ms) over 1 m and 10 m of the same case
+  reg("pin_on_disk_tribometer/adaptive_1km", [] { return pin_tribometer(tribometer, tribometer.wear_steps, 2000.0); });
+  reg("pin_on_disk_tribometer/fixed_1m", [] { return pin_tribometer(tribometer, WearSteps{}, 2.0); });
+  reg("pin_on_disk_tribometer/fixed_10m", [] { return pin_tribometer(tribometer, WearSteps{}, 20.0); });
   reg("journal_bearing/state_law", [] { return bearing(jb_law_parameters, jb_state_law); });
   reg("journal_bearing/baseline_static_kinetic_archard", [] { return bearing(jb, jb_thesis); });
   reg("piston_ring_pack/state_law", [] { return ring_pack_state_law(pr); });
@@ -335,6 +383,16 @@ int main(int argc, char **argv) {
     std::printf("%-42s %12.3f %12.3f %7.2f %6.0f ms %s\n", c.name.c_str(), ms, base_ms, ms / base_ms, c.target_ms,
                 ms < c.target_ms ? "met" : "NOT met");
   }
+  const auto *adaptive = reporter.find("pin_on_disk_tribometer/adaptive_1km");
+  const auto *fixed1 = reporter.find("pin_on_disk_tribometer/fixed_1m");
+  const auto *fixed10 = reporter.find("pin_on_disk_tribometer/fixed_10m");
+  if (adaptive && fixed1 && fixed10)
+    std::printf("\ntribometer, 1 km with adaptive wear steps: %.3f ms (%ld slow steps; target < 10 s %s); fixed 2 ms "
+                "interval: 1 m %.3f ms (%ld steps), 10 m %.3f ms (%ld steps), 1 km at that rate ~%.3g s\n",
+                1e3 * adaptive->seconds, std::lround(adaptive->counter("wear_updates")),
+                adaptive->seconds < 10.0 ? "met" : "NOT met", 1e3 * fixed1->seconds,
+                std::lround(fixed1->counter("wear_updates")), 1e3 * fixed10->seconds,
+                std::lround(fixed10->counter("wear_updates")), 100.0 * fixed10->seconds);
   for (const char *name : {"pin_on_disk/state_law", "journal_bearing/state_law", "piston_ring_pack/state_law"})
     if (const auto *m = reporter.find(name))
       std::printf("%-28s final mu_eff %.5f, h_max %.3g nm, %ld node-law lookups (%ld clamped below p_min, %ld above "

@@ -36,7 +36,7 @@ const Schema kSchema = {
     {"pin", {"mass", "track_radius", "normal_load"}},
     {"loading", {"drive", "ramp_time", "applied_torque", "target_speed", "target_time", "sliding_speed"}},
     {"friction", friction_keys()},
-    {"run", {"t_end", "output_interval", "initial_speed"}},
+    {"run", {"t_end", "output_interval", "initial_speed", "wear_steps", "tolerance"}},
     {"solver", {"method", "rtol", "atol", "max_steps"}},
     {"sweep", {"mu0"}},
 };
@@ -417,6 +417,21 @@ void read_pin_wear(const CaseReader &reader, PinContactCase &k, bool state_law) 
   k.max_wear_steps = reader.positive_integer("wear.max_steps", 1000000);
 }
 
+// run.wear_steps: "fixed" (a slow step per output interval) or "adaptive" (doc/state_law_continuum.md).
+void read_wear_steps(const CaseReader &reader, PinOnDiskCase &c, bool state_law) {
+  const bool adaptive = reader.choice("run.wear_steps", {"fixed", "adaptive"}, std::string("fixed")) == "adaptive";
+  if (!adaptive) {
+    if (reader.has("run.tolerance")) reader.fail("run.tolerance", "needs run.wear_steps = \"adaptive\"");
+    return;
+  }
+  if (!state_law) reader.fail("run.wear_steps", "\"adaptive\" needs friction.model = \"state_law\"");
+  if (c.parameters.drive != continuum::PinDrive::Speed && !(c.friction->speed_coefficient() > 0.0))
+    reader.fail("run.wear_steps", "\"adaptive\" under the torque drive needs friction.alpha > 0 (steady sliding at "
+                                  "V_ss = (T / r - mu W) / (alpha W)); without it use \"fixed\" or the speed drive");
+  c.wear_steps.adaptive = true;
+  c.wear_steps.tolerance = reader.positive_at_most("run.tolerance", 0.1, 1e-3);
+}
+
 void read_pin_sweep(const CaseReader &reader, PinOnDiskCase &c, bool state_law) {
   if (state_law) reader.fail("sweep.mu0", "not available with friction.model = \"state_law\" (mu_static is the law's)");
   if (c.friction_model == "law_file")
@@ -472,6 +487,8 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     if (c.vtk_times.size() > 100) reader.fail("output.vtk_times", "more than 100 frames");
   }
   if (reader.has("sweep")) read_pin_sweep(reader, c, state_law);
+  read_wear_steps(reader, c, state_law);
+  c.wear_steps.stop_times = c.vtk_times;
   return c;
 }
 

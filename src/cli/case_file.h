@@ -11,6 +11,7 @@
 #include "continuum/axisymmetric_contact.h"
 #include "continuum/feedback_system.h"
 #include "continuum/pin_on_disk.h"
+#include "continuum/pin_state_law.h"
 #include "tribo/contact.h"
 #include "tribo/wear.h"
 #include "coupling/friction_law.h"
@@ -59,6 +60,8 @@ struct PinOnDiskCase {
   // eq. 4.11 target (V1, t1) when the torque was targeted; the sweep recomputes T per mu0.
   std::optional<std::pair<double, double>> torque_target;
   std::string friction_model;       // [friction] model
+  // run.wear_steps = "adaptive" (state law, speed drive) with run.tolerance; default: one per output interval
+  continuum::WearSteps wear_steps;
 };
 
 // The case with its static coefficient replaced by `mu0` (see friction_with_static_coefficient), and

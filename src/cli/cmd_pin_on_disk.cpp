@@ -1,6 +1,7 @@
 #include "cli/cmd_pin_on_disk.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -61,6 +62,9 @@ struct Curve {
   std::optional<DiskTrack> disk;  // with wear.disk_k
   std::optional<coupling::RangeUse> range_use;  // friction.model = "state_law"
   double smallest_node_area = 0.0;  // m^2, smallest loaded ring of the pin face at the start (state law)
+  continuum::SplitReport split;     // state law: slow steps (adaptive: quasi-static and rejected ones)
+  std::optional<continuum::ArchardRatios> archard;  // state law
+  double wall_seconds = 0.0;        // of the main run (run_case)
 };
 
 // A wear failure's message, with the key that helps when the worn face left the grid.
@@ -131,6 +135,8 @@ std::string split_error(const continuum::SplitReport &r, const continuum::StateL
     case continuum::SplitStatus::FastFailure:
       return std::string(continuum::to_string(r.fast.status)) + ": " + r.fast.message;
     case continuum::SplitStatus::TooManySlowSteps:
+      if (r.message.find("adaptive wear steps") != std::string::npos)
+        return r.message + "; raise run.tolerance";
       return r.message + "; raise wear.max_steps or lower contact.rings";
     case continuum::SplitStatus::SlowFailure:
       return with_grid_hint(r.message);
@@ -194,11 +200,10 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
     for (; with_frames && next_frame < frame_times.size() && s.t >= frame_times[next_frame] - 1e-12; ++next_frame)
       curve.frames.push_back(state_law_frame(*pin, s.t));
   };
-  const auto split = continuum::split_run<PinOnDiskSample>(
-      *pin, [&](const auto &on_sample, const auto &refresh) { return continuum::simulate(system, c.run, on_sample, refresh); },
-      observer);
+  const auto split = continuum::run_pin_split(system, c.run, *pin, c.wear_steps, observer);
   if (!split.ok()) throw std::runtime_error(split_error(split, *law));
   curve.report = split.fast;
+  curve.split = split;
   curve.summary = continuum::summarise(samples);
   curve.grid_radius = pin->grid_radius();
   curve.smallest_node_area = pin->smallest_node_area();
@@ -208,6 +213,9 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
   curve.range_use = pin->nodes().use();
   const auto &h = pin->nodes().state();
   curve.disk = continuum::summarise(pin->disk(), *std::max_element(h.begin(), h.end()));
+  const auto &last = curve.rows.back();
+  curve.archard = continuum::archard_ratios(*law->law, last.wear_volume, last.disk_wear_volume,
+                                            c.parameters.normal_load * last.s.distance);
   return curve;
 }
 
@@ -309,12 +317,30 @@ struct SweepRun {
   Curve curve;
 };
 
-std::string summary_csv_text(const Curve &curve) {
+// The run-in distance of the curve (continuum::run_in_distance on its samples).
+continuum::RunInDistance run_in(const Curve &curve) {
+  std::vector<PinOnDiskSample> samples;
+  samples.reserve(curve.rows.size());
+  for (const auto &r : curve.rows) samples.push_back(r.s);
+  return continuum::run_in_distance(samples);
+}
+
+// Adaptive wear steps append the run-in distance, the step counts, the wall time and Archard's ratios.
+std::string summary_csv_text(const PinOnDiskCase &c, const Curve &curve) {
   const auto &m = curve.summary;
-  return std::string(kRunSummaryHeader) + "\n" +
-         run_summary_row({m.peak_friction_force, m.peak_time, m.breakaway_time, m.steady_time, m.steady_mu,
-                          curve.rows.back().wear_volume}) +
-         "\n";
+  std::string header = kRunSummaryHeader;
+  std::string row = run_summary_row({m.peak_friction_force, m.peak_time, m.breakaway_time, m.steady_time, m.steady_mu,
+                                     curve.rows.back().wear_volume});
+  if (c.wear_steps.adaptive) {
+    const auto r = run_in(curve);
+    header += ",settle_distance_m,steady_mu_last_10pc,slow_steps,rejected_steps,dynamics_stretches,wall_time_s,"
+              "archard_ratio_pin,archard_ratio_disk";
+    row += fmt::format(",{},{:.12g},{},{},{},{:.6g},{:.12g},{:.12g}",
+                       r.distance < 0.0 ? std::string() : fmt::format("{:.12g}", r.distance), r.steady_mu,
+                       curve.split.slow_steps, curve.split.rejected_steps, curve.split.fallbacks,
+                       curve.wall_seconds, curve.archard->pin, curve.archard->disk);
+  }
+  return header + "\n" + row + "\n";
 }
 
 // The mu0 sweep's curves and its summary table.
@@ -339,7 +365,7 @@ std::pair<std::string, std::string> sweep_csv_text(const std::vector<SweepRun> &
 std::vector<std::string> write_curves(StagedOutput &out, const PinOnDiskCase &c, const Curve &curve,
                                       const std::vector<SweepRun> &sweep, bool no_plot, const PlotRunner &plot) {
   out.write("pin_on_disk.csv", csv_text(curve.rows, c.friction->state_law() != nullptr));
-  out.write("pin_on_disk_summary.csv", summary_csv_text(curve));
+  out.write("pin_on_disk_summary.csv", summary_csv_text(c, curve));
   std::vector<std::string> written = {"pin_on_disk.csv", "pin_on_disk_summary.csv"};
   if (!sweep.empty()) {
     const auto [curves, table] = sweep_csv_text(sweep);
@@ -394,6 +420,27 @@ std::string print_state_law(const PinOnDiskCase &c, const Curve &curve) {
              "{:.4g} m\n",
              d.volume, d.depth, d.width, d.length);
   fmt::print("  law lookups       {}\n", continuum::describe(*curve.range_use, *law->law));
+  if (c.wear_steps.adaptive) {
+    const auto &sp = curve.split;
+    if (c.parameters.drive == continuum::PinDrive::Speed)
+      fmt::print("  wear steps        adaptive, tolerance {:g}: {} slow steps along the drive's s(t) ({} rejected)\n",
+                 c.wear_steps.tolerance, sp.slow_steps, sp.rejected_steps);
+    else
+      fmt::print("  wear steps        adaptive, tolerance {:g}: {} slow steps ({} rejected); full dynamics over the "
+                 "ramp and {} more stretches of {} output intervals where the pin may stick or lag V_ss\n",
+                 c.wear_steps.tolerance, sp.slow_steps, sp.rejected_steps, sp.fallbacks,
+                 c.wear_steps.dynamics_chunk);
+    const auto r = run_in(curve);
+    fmt::print("  run-in            mu = F/W within {:g} % of its steady value {:.6g} (mean over the last {:g} % of "
+               "sliding) from s = {}\n",
+               100 * r.tolerance, r.steady_mu, 100 * r.tail,
+               r.distance < 0.0 ? std::string("never") : fmt::format("{:.6g} m", r.distance));
+    const auto &a = *curve.archard;
+    fmt::print("  Archard           worn volume / (K W s): pin {:.6g} (K = {:.4g} /Pa), disk {:.6g} (K = {:.4g} /Pa); "
+               "K = the law's rate / p at p = {:.4g} Pa, h = 0\n",
+               a.pin, a.k_pin, a.disk, a.k_disk, law->law->pressure().front());
+    fmt::print("  wall time         {:.3g} s (the run, without output)\n", curve.wall_seconds);
+  }
   const auto cell = coupling::cell_scale(*law->law);
   if (!cell) return {};
   const coupling::ScaleSeparation sep{*cell, 2.0 * first.contact_radius, curve.smallest_node_area};
@@ -525,7 +572,9 @@ int run_pin_on_disk(const PinOnDiskOptions &o, const PlotRunner &plot) {
   if (!c.vtk_times.empty())
     throw std::runtime_error("output.vtk_times: this runin was built without VTK (configure with -DRUNIN_WITH_VTK=ON)");
 #endif
-  const Curve curve = run_case(c, true);
+  const auto started = std::chrono::steady_clock::now();
+  Curve curve = run_case(c, true);
+  curve.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::vector<SweepRun> sweep;
   for (double mu0 : c.sweep_mu0) {
     const PinOnDiskCase variant = with_mu0(c, mu0);

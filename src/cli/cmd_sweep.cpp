@@ -130,13 +130,17 @@ double parse_time(const std::string &cell) { return cell.empty() ? -1.0 : std::s
 RunSummary read_summary(const fs::path &file) {
   std::ifstream in(file);
   std::string header, row;
-  if (!std::getline(in, header) || header != kRunSummaryHeader || !std::getline(in, row))
+  // an element may append columns of its own (pin-on-disk with adaptive wear steps): the first six are read
+  const std::string common = kRunSummaryHeader;
+  if (!std::getline(in, header) || header.compare(0, common.size(), common) != 0 ||
+      (header.size() > common.size() && header[common.size()] != ',') || !std::getline(in, row))
     throw std::runtime_error("no run summary in " + file.string());
   std::vector<std::string> cells;
   std::stringstream split(row);
   for (std::string cell; std::getline(split, cell, ',');) cells.push_back(cell);
   if (row.back() == ',') cells.emplace_back();
-  if (cells.size() != 6) throw std::runtime_error("malformed run summary in " + file.string());
+  if (cells.size() < 6 || (header.size() == common.size() && cells.size() != 6))
+    throw std::runtime_error("malformed run summary in " + file.string());
   return {std::stod(cells[0]), std::stod(cells[1]), parse_time(cells[2]), parse_time(cells[3]), std::stod(cells[4]),
           std::stod(cells[5])};
 }

@@ -205,6 +205,29 @@ PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples) {
   return summary;
 }
 
+RunInDistance run_in_distance(const std::vector<PinOnDiskSample> &samples, double tolerance, double tail) {
+  RunInDistance r;
+  r.tolerance = tolerance, r.tail = tail;
+  if (samples.size() < 2) return r;
+  const double s_end = samples.back().distance;
+  const double cut = s_end - tail * (s_end - samples.front().distance);
+  double weighted = 0.0, length = 0.0;
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    const double from = std::max(samples[i - 1].distance, cut), to = samples[i].distance;
+    if (to > from) {
+      weighted += samples[i].mu * (to - from);
+      length += to - from;
+    }
+  }
+  if (!(length > 0.0)) return r;
+  r.steady_mu = weighted / length;
+  for (std::size_t i = samples.size(); i-- > 0;) {
+    if (std::abs(samples[i].mu - r.steady_mu) > tolerance * std::abs(r.steady_mu)) break;
+    r.distance = samples[i].distance;
+  }
+  return r;
+}
+
 ContactStress hertz_contact_stress(double p0, double a, double mu, const tribo::Material &pin,
                                    const tribo::Material &disk, int points) {
   ContactStress c;

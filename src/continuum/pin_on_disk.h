@@ -124,6 +124,16 @@ struct PinOnDiskSummary {
 // "not steady" if that is in the last 10 % of the run.
 PinOnDiskSummary summarise(const std::vector<PinOnDiskSample> &samples);
 
+// Run-in distance of a run: `steady_mu` = the mean of F/W over the last `tail` of the sliding distance (each
+// sample's mu weighted by the distance slid since the previous sample: F/W is held over it), `distance` = the
+// sliding distance of the first sample from which on |mu - steady_mu| <= tolerance |steady_mu| (-1: none).
+struct RunInDistance {
+  double steady_mu = 0.0, distance = -1.0;
+  double tolerance = 0.0, tail = 0.0;
+};
+RunInDistance run_in_distance(const std::vector<PinOnDiskSample> &samples, double tolerance = 0.02,
+                              double tail = 0.1);
+
 // Subsurface stress below the pin contact (doc/subsurface_stress.md): the von Mises field of
 // each body on the section y = 0 through the contact (x along the sliding direction, 64 x 64 points to
 // 1.5 contact radii wide and deep), from the pressure p and the friction shear q = mu p. The disk carries

@@ -5,8 +5,12 @@
 // pin's worn profile advance by the law's wear_rate (the same dh_i: the law is the pin's only wear law), the disk
 // by its counterface_wear_rate, in outer steps bounded by the pressure-wear stability of the tip; the contact is
 // re-solved and mu_eff recomputed.
+//
+// run_pin_split drives it: at the output interval (split_run), or with adaptive wear steps under the speed drive
+// (WearSteps: distance steps whose size is set by the change of mu_eff and of the node states).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -50,9 +54,21 @@ class PinStateLaw final : public SlowSystem<PinOnDiskSample> {
   const std::vector<double> &pressure() const { return pin_ ? pin_->contact().pressure : uniform_; }
   double profile_height(int ring) const;  // the tip's worn profile; flat: h_i
   const NodeStateLaw &nodes() const { return nodes_; }
+  const StateLawFriction &held() const { return held_; }
   const DiskTrackWear &disk() const { return disk_; }
   long wear_steps() const { return wear_steps_; }
   double smallest_node_area() const { return smallest_node_area_; }  // m^2, smallest loaded ring at the start
+
+  // The slow state and the held kinetic coefficient, to take a rejected adaptive step back.
+  struct Snapshot {
+    std::optional<PinWear> pin;
+    NodeStateLaw nodes;
+    DiskTrackWear disk;
+    double slid, t_now, held_kinetic;
+    long wear_steps;
+  };
+  Snapshot save() const { return {pin_, nodes_, disk_, slid_, t_now_, held_.held_kinetic, wear_steps_}; }
+  void restore(const Snapshot &s);
 
  private:
   void wear(double ds);
@@ -69,5 +85,42 @@ class PinStateLaw final : public SlowSystem<PinOnDiskSample> {
   double slid_ = 0.0, t_now_ = 0.0;
   long wear_steps_ = 0;
 };
+
+// How the slow steps are taken (doc/state_law_continuum.md, "Adaptive wear steps").
+struct WearSteps {
+  bool adaptive = false;  // false: one slow step per output interval (split_run)
+  // Adaptive: a step is accepted when the relative change of mu_eff, and the change of every node's h inside the
+  // law's depth range over that range's length, are both <= tolerance.
+  double tolerance = 1e-3;
+  double max_fraction = 1e-3;      // largest step / the distance of the quasi-static phase
+  std::vector<double> stop_times;  // s: steps end exactly at these (VTK frames)
+  long max_steps = 10000000;       // accepted + rejected quasi-static steps
+  long dynamics_chunk = 10;        // torque drive: output intervals of full dynamics between steadiness checks
+
+  void validate() const;  // throws std::invalid_argument naming the field
+};
+
+// Runs the pin's split. Fixed: split_run at run.output_interval (CVODE over each interval, mu_eff held).
+// Adaptive, speed drive: the drive prescribes s(t), so the pin's dynamics are kinematic (F = (mu_eff + alpha V) W,
+// plus J dw/dt on the ramp) and only the slow system is stepped, by distances set by the error control of `steps`,
+// from t = 0 (the first try: the distance of the first output interval).
+// Adaptive, torque drive (alpha > 0): the full dynamics (split_run at run.output_interval) over the ramp and in
+// stretches of `dynamics_chunk` intervals wherever the pin may stick or would lag its quasi-static speed
+// V_ss = (T / r - mu_eff W) / (alpha W) by more than the tolerance (the lag is tau dV_ss/dt, tau = m / (alpha W));
+// quasi-static distance steps at V_ss(mu_eff) where it slides steadily.
+// A sample is emitted after every accepted step, F/W being the coefficient held over it, as in split_run.
+// Failures are statuses (SplitReport); bad settings (std::invalid_argument: a torque drive without alpha > 0, a
+// bad tolerance) throw.
+SplitReport run_pin_split(const PinOnDiskSystem &system, const PinOnDiskRun &run, PinStateLaw &pin,
+                          const WearSteps &steps, const std::function<void(const PinOnDiskSample &)> &observer);
+
+// Archard's invariant of a state-law run: worn volume / (K integral W ds), K = the law's rate / p at its lowest
+// grid pressure and h = 0 (pin: wear_rate; disk: counterface_wear_rate).
+struct ArchardRatios {
+  double pin = 0.0, disk = 0.0;      // 0 when there was no sliding
+  double k_pin = 0.0, k_disk = 0.0;  // 1/Pa
+};
+ArchardRatios archard_ratios(const coupling::StateLaw &law, double pin_volume, double disk_volume,
+                             double load_distance);
 
 }  // namespace runin::continuum

@@ -42,6 +42,9 @@ struct SplitReport {
   std::string message;  // empty on success; the fast stepper's message on FastFailure
   double time = 0.0;    // s, the sample whose slow step failed (or 0: before the run), else where the run ended
   long slow_steps = 0;  // slow steps that changed the held coefficients
+  // Adaptive wear steps (pin_state_law.h, run_pin_split): steps taken back, and (torque drive) the stretches of
+  // full dynamics after the first (each chunk of 10 output intervals).
+  long rejected_steps = 0, fallbacks = 0;
   SolveReport fast;     // the fast stepper's report (partial when the slow stepper stopped the run)
 
   bool ok() const { return status == SplitStatus::Success; }

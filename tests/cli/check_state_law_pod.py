@@ -6,7 +6,7 @@
 --cell-curve (with --flat P on a grid pressure of the law): mu_eff at the cell's own sliding distances (the law's
           sliding_distance column at P) equals the cell's mu_body there within 1 %: the cell's mu(s) reproduced.
 Always:   the friction force of each slip row is the mu_eff held over the interval before it (operator splitting,
-          F = sum_i mu_i p_i A_i = mu_eff W); h and the worn volumes never decrease; the disk's worn volume is
+          F = sum_i mu_i p_i A_i = mu_eff W; plus alpha V W with --alpha); h and the worn volumes never decrease; the disk's worn volume is
           the law's counterface/body ratio (--counterface-ratio) of the pin's.
 --vtk N:  N pin_face_*.vts frames carrying the h_m and mu fields.
 """
@@ -35,6 +35,7 @@ def main():
     ap.add_argument("--no-expect-fall", dest="expect_fall", action="store_false",
                     help="do not require mu_eff to fall (laws from the cell)")
     ap.add_argument("--min-distance", type=float, default=0.0)
+    ap.add_argument("--alpha", type=float, default=0.0, help="the case's speed term: F/W = mu_eff + alpha V")
     a = ap.parse_args()
     rows = list(csv.DictReader(open(os.path.join(a.out_dir, "pin_on_disk.csv"))))
     if len(rows) < 10:
@@ -51,7 +52,8 @@ def main():
             if float(rows[k][key]) < float(rows[k - 1][key]) * (1 - 1e-12):
                 fail("%s decreases at row %d" % (key, k))
         if rows[k]["state_slip"] == "1" and rows[k - 1]["state_slip"] == "1":
-            held, mu = float(rows[k - 1]["mu_eff"]), float(rows[k]["mu"])
+            held = float(rows[k - 1]["mu_eff"])
+            mu = float(rows[k]["mu"]) - a.alpha * float(rows[k]["speed_m_s"])
             if abs(mu - held) > 1e-9 * max(abs(held), 1e-12):
                 fail("row %d: F/W = %.12g but the held mu_eff is %.12g" % (k, mu, held))
     if a.counterface_ratio is not None:
