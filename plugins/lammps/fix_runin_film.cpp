@@ -20,15 +20,15 @@ using namespace LAMMPS_NS;
 namespace tribo = runin::tribo;
 
 FixRuninFilm::FixRuninFilm(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), theta(nullptr), removal(nullptr), initial(1.0)
+    RuninPeratomColumns(lmp, narg, arg, 1, "runin/film:theta"), removal(nullptr)
 {
-  restart_peratom = 1;
-  create_attribute = 1;
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
   comm_forward = 1;
   comm_reverse = 1;
+  forwarded = {0};
+  fill = 1.0;    // the coverage of atoms created after this fix
 
   const char *per_atom = nullptr;    // coverage v_name: an atom-style variable, evaluated once below
   for (int iarg = 3; iarg < narg; iarg += 2) {
@@ -42,15 +42,13 @@ FixRuninFilm::FixRuninFilm(LAMMPS *lmp, int narg, char **arg) :
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (!(value >= 0.0 && value <= 1.0))
       error->all(FLERR, "fix RUNIN/FILM: coverage: film coverage must be in [0, 1], got {}", arg[iarg + 1]);
-    initial = value;
+    fill = value;
   }
 
-  grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
+  grow_arrays(atom->nmax);    // the removal exposure next to the store's coverage
   for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
   if (per_atom) {
-    // per-atom initial coverage (e.g. one body covered, the other clean); atoms outside the group keep `initial`
+    // per-atom initial coverage (e.g. one body covered, the other clean); atoms outside the group keep the coverage above
     const int ivar = input->variable->find(per_atom + 2);
     if (ivar < 0 || !input->variable->atomstyle(ivar))
       error->all(FLERR, "fix RUNIN/FILM: coverage needs a number in [0, 1] or an atom-style variable, got '{}'",
@@ -63,9 +61,10 @@ FixRuninFilm::FixRuninFilm(LAMMPS *lmp, int narg, char **arg) :
       if (!(result[i] >= 0.0 && result[i] <= 1.0))
         error->one(FLERR, "fix RUNIN/FILM: coverage: film coverage must be in [0, 1], got {} for atom {}", result[i],
                    atom->tag[i]);
-      theta[i] = result[i];
+      columns[i][0] = result[i];
     }
   }
+  attach();
 }
 
 FixRuninFilm *FixRuninFilm::find(Modify *modify)
@@ -82,9 +81,6 @@ FixRuninFilm *FixRuninFilm::find_or_create(Modify *modify, double initial_covera
 
 FixRuninFilm::~FixRuninFilm()
 {
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(theta);
   memory->destroy(removal);
 }
 
@@ -98,63 +94,14 @@ void FixRuninFilm::end_step(bool newton, const double *growth)
 {
   if (newton) runin_compat::reverse_comm(comm, this);
   const int *type = atom->type;
+  double *theta = coverage();
   for (int i = 0; i < atom->nlocal; i++) theta[i] = tribo::FilmKinetics::advance(theta[i], removal[i], growth[type[i]]);
 }
 
 void FixRuninFilm::grow_arrays(int nmax)
 {
-  memory->grow(theta, nmax, "runin/film:theta");
+  RuninPeratomColumns::grow_arrays(nmax);
   memory->grow(removal, nmax, "runin/film:removal");
-  vector_atom = theta;
-}
-
-void FixRuninFilm::copy_arrays(int i, int j, int /*delflag*/)
-{
-  theta[j] = theta[i];
-}
-
-void FixRuninFilm::set_arrays(int i)
-{
-  theta[i] = initial;
-  removal[i] = 0.0;
-}
-
-int FixRuninFilm::pack_exchange(int i, double *buf)
-{
-  buf[0] = theta[i];
-  return 1;
-}
-
-int FixRuninFilm::unpack_exchange(int nlocal, double *buf)
-{
-  theta[nlocal] = buf[0];
-  return 1;
-}
-
-int FixRuninFilm::pack_restart(int i, double *buf)
-{
-  buf[0] = 2;    // length of this fix's record (Atom's restart extra layout)
-  buf[1] = theta[i];
-  return 2;
-}
-
-void FixRuninFilm::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  theta[nlocal] = extra[nlocal][m + 1];
-}
-
-int FixRuninFilm::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
-{
-  for (int k = 0; k < n; k++) buf[k] = theta[list[k]];
-  return n;
-}
-
-void FixRuninFilm::unpack_forward_comm(int n, int first, double *buf)
-{
-  for (int k = 0; k < n; k++) theta[first + k] = buf[k];
 }
 
 int FixRuninFilm::pack_reverse_comm(int n, int first, double *buf)
@@ -170,5 +117,5 @@ void FixRuninFilm::unpack_reverse_comm(int n, int *list, double *buf)
 
 double FixRuninFilm::memory_usage()
 {
-  return 2.0 * static_cast<double>(atom->nmax) * sizeof(double);
+  return RuninPeratomColumns::memory_usage() + static_cast<double>(atom->nmax) * sizeof(double);
 }

@@ -1,7 +1,7 @@
 // Per-atom surface-film coverage of RunIn asperities (internal fix, created by pair runin/asperity when its friction
-// model has a film, friction junction/film; doc/surface_films.md). One value per summit, theta in [0, 1], with the
-// full per-atom storage set (grow/copy/exchange/restart), forwarded to ghosts (the friction of a contact reads both
-// summits'); a per-step removal exposure (sum of slip / s_r over the summit's contacts) is gathered from ghosts by
+// model has a film, friction junction/film; doc/surface_films.md). One value per summit, theta in [0, 1], in a
+// one-column per-atom store (runin_peratom_columns.h: exchange, restart), forwarded to ghosts (the friction of a
+// contact reads both summits'); a per-step removal exposure (sum of slip / s_r over the summit's contacts) is gathered from ghosts by
 // reverse communication and cleared every step.
 //
 //   fix RUNIN_FILM group RUNIN/FILM [coverage theta0 | coverage v_name]
@@ -18,11 +18,11 @@ FixStyle(RUNIN/FILM,FixRuninFilm);
 #ifndef LMP_FIX_RUNIN_FILM_H
 #define LMP_FIX_RUNIN_FILM_H
 
-#include "fix.h"
+#include "runin_peratom_columns.h"
 
 namespace LAMMPS_NS {
 
-class FixRuninFilm : public Fix {
+class FixRuninFilm : public RuninPeratomColumns {
  public:
   static constexpr const char *default_id = "RUNIN_FILM";
   static FixRuninFilm *find(class Modify *modify);
@@ -34,7 +34,7 @@ class FixRuninFilm : public Fix {
   ~FixRuninFilm() override;
   int setmask() override { return 0; }
 
-  double *coverage() { return theta; }
+  double *coverage() { return columns ? columns[0] : nullptr; }    // one contiguous column
   double *exposure() { return removal; }
   // Before the force loop: the coverage to the ghosts, the exposure of owned and ghost atoms cleared.
   void begin_step();
@@ -42,25 +42,14 @@ class FixRuninFilm : public Fix {
   // exposure and the growth exposure of its type (growth[type] = k_g dt of the type's own pair).
   void end_step(bool newton, const double *growth);
 
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return 2; }
-  int maxsize_restart() override { return 2; }
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
+  void grow_arrays(int) override;    // the coverage and the removal exposure
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
  private:
-  double *theta;      // coverage per atom (owned: the state; ghosts: forwarded)
-  double *removal;    // removal exposure of this step per atom (owned and ghost)
-  double initial;     // coverage of atoms created after this fix
+  // removal exposure of this step per atom (owned and ghost): cleared by begin_step, moves with no atom
+  double *removal;
 };
 
 }    // namespace LAMMPS_NS

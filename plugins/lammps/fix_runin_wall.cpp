@@ -18,7 +18,6 @@
 #include "error.h"
 #include "input.h"
 #include "math_extra.h"
-#include "memory.h"
 #include "modify.h"
 #include "update.h"
 #include "variable.h"
@@ -36,7 +35,8 @@ using namespace FixConst;
 namespace tribo = runin::tribo;
 
 FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), body_groupbit(0), dt(0.0), history(nullptr), fix_wear(nullptr)
+    RuninPeratomColumns(lmp, narg, arg, HISTORY_SIZE, "fix_runin_wall:history"), body_groupbit(0), dt(0.0),
+    fix_wear(nullptr)
 {
   if (!runin_compat::sphere_atoms(atom)) error->all(FLERR, "fix runin/wall: requires atom_style sphere");
   runin_lammps::require_si_units(lmp, FLERR, "fix runin/wall");
@@ -62,21 +62,8 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
-  restart_peratom = 1;
-  create_attribute = 1;
   std::fill(totals, totals + NOUTPUT, 0.0);
-
-  grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
-}
-
-FixRuninWall::~FixRuninWall()
-{
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(history);
+  attach();
 }
 
 int FixRuninWall::setmask()
@@ -254,52 +241,4 @@ void FixRuninWall::restart(char *buf)
     const std::string problem = runin_wall::read_restart_record(buf, cfg, motion);
     if (!problem.empty()) error->all(FLERR, "fix runin/wall: restart file: {}", problem);
   });
-}
-
-void FixRuninWall::grow_arrays(int nmax)
-{
-  memory->grow(history, nmax, HISTORY_SIZE, "fix_runin_wall:history");
-}
-
-void FixRuninWall::copy_arrays(int i, int j, int)
-{
-  for (int k = 0; k < HISTORY_SIZE; k++) history[j][k] = history[i][k];
-}
-
-void FixRuninWall::set_arrays(int i)
-{
-  for (int k = 0; k < HISTORY_SIZE; k++) history[i][k] = 0.0;
-}
-
-int FixRuninWall::pack_exchange(int i, double *buf)
-{
-  for (int k = 0; k < HISTORY_SIZE; k++) buf[k] = history[i][k];
-  return HISTORY_SIZE;
-}
-
-int FixRuninWall::unpack_exchange(int nlocal, double *buf)
-{
-  for (int k = 0; k < HISTORY_SIZE; k++) history[nlocal][k] = buf[k];
-  return HISTORY_SIZE;
-}
-
-int FixRuninWall::pack_restart(int i, double *buf)
-{
-  buf[0] = HISTORY_SIZE + 1;    // LAMMPS skips per-fix blocks by this count
-  for (int k = 0; k < HISTORY_SIZE; k++) buf[k + 1] = history[i][k];
-  return HISTORY_SIZE + 1;
-}
-
-void FixRuninWall::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int k = 0; k < HISTORY_SIZE; k++) history[nlocal][k] = extra[nlocal][m++];
-}
-
-double FixRuninWall::memory_usage()
-{
-  return static_cast<double>(atom->nmax) * HISTORY_SIZE * sizeof(double);
 }

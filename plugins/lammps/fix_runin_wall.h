@@ -12,9 +12,9 @@ FixStyle(runin/wall,FixRuninWall);
 #ifndef LMP_FIX_RUNIN_WALL_H
 #define LMP_FIX_RUNIN_WALL_H
 
-#include "fix.h"
 #include "runin_contact_range.h"
 #include "runin_contact_sums.h"
+#include "runin_peratom_columns.h"
 #include "runin_wall_core.h"
 #include "tribo/contact_model.h"
 
@@ -22,13 +22,12 @@ FixStyle(runin/wall,FixRuninWall);
 
 namespace LAMMPS_NS {
 
-class FixRuninWall : public Fix, public RuninContactSource {
+class FixRuninWall : public RuninPeratomColumns, public RuninContactSource {
  public:
   // Global vector entries (1-based in input decks).
   enum Output { FX = 0, FY, FZ, WALL_Z, WALL_DX, WALL_DY, WALL_WEAR, CONTACTS, WALL_GAIN, NOUTPUT };
 
   FixRuninWall(class LAMMPS *, int, char **);
-  ~FixRuninWall() override;
   int setmask() override;
   void post_constructor() override;
   void init() override;
@@ -40,16 +39,6 @@ class FixRuninWall : public Fix, public RuninContactSource {
 
   void write_restart(FILE *) override;
   void restart(char *) override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return HISTORY_SIZE + 1; }
-  int maxsize_restart() override { return HISTORY_SIZE + 1; }
-  double memory_usage() override;
 
   const RuninContactSums &contact_sums() const override { return sums; }
   double counterface_wear_volume() const override { return motion.wall_wear; }
@@ -69,7 +58,7 @@ class FixRuninWall : public Fix, public RuninContactSource {
   bigint past_centre_count = 0;    // asperity evaluations past the summit centre in this run (WARNING)
   runin_lammps::ContactRangeMonitor contact_range;    // contacts beyond their normal law's range (WARNING)
 
-  double **history;
+  double **&history = columns;    // per atom: the contact history with the wall (the column store)
   double totals[NOUTPUT];    // reduced over ranks at every evaluation
   RuninContactSums sums;
   class FixRuninWearState *fix_wear;

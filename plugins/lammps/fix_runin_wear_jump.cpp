@@ -8,7 +8,6 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "memory.h"
 #include "update.h"
 #include "utils.h"
 
@@ -25,7 +24,8 @@ constexpr int kReportedReductions = 5;    // WARNINGs for reduced jumps before t
 }
 
 FixRuninWearJump::FixRuninWearJump(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), factor(1.0), max_depth(0.0), phase_start(nullptr), phase_start_step(0), extra_steps(0.0),
+    RuninPeratomColumns(lmp, narg, arg, kColumns, "runin/wear/jump:phase_start"), factor(1.0), max_depth(0.0),
+    phase_start_step(0), extra_steps(0.0),
     jumps(0.0), reduced_jumps(0.0), last_factor(1.0), largest_change(0.0), wear_state(nullptr), phase_started(false)
 {
   if (narg != 7 || strcmp(arg[5], "max_depth") != 0)
@@ -50,21 +50,10 @@ FixRuninWearJump::FixRuninWearJump(LAMMPS *lmp, int narg, char **arg) :
   extscalar = 0;
   extvector = 0;
   restart_global = 1;
-  restart_peratom = 1;
-  create_attribute = 1;
 
-  grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
+  attach();
   wear_state = FixRuninWearState::find(modify);
   start_phase();
-}
-
-FixRuninWearJump::~FixRuninWearJump()
-{
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(phase_start);
 }
 
 int FixRuninWearJump::setmask()
@@ -178,52 +167,4 @@ void FixRuninWearJump::restart(char *buf)
   last_factor = list[4];
   largest_change = list[5];
   phase_started = true;
-}
-
-void FixRuninWearJump::grow_arrays(int nmax)
-{
-  memory->grow(phase_start, nmax, kColumns, "runin/wear/jump:phase_start");
-}
-
-void FixRuninWearJump::copy_arrays(int i, int j, int /*delflag*/)
-{
-  for (int c = 0; c < kColumns; c++) phase_start[j][c] = phase_start[i][c];
-}
-
-void FixRuninWearJump::set_arrays(int i)
-{
-  for (int c = 0; c < kColumns; c++) phase_start[i][c] = 0.0;
-}
-
-int FixRuninWearJump::pack_exchange(int i, double *buf)
-{
-  for (int c = 0; c < kColumns; c++) buf[c] = phase_start[i][c];
-  return kColumns;
-}
-
-int FixRuninWearJump::unpack_exchange(int nlocal, double *buf)
-{
-  for (int c = 0; c < kColumns; c++) phase_start[nlocal][c] = buf[c];
-  return kColumns;
-}
-
-int FixRuninWearJump::pack_restart(int i, double *buf)
-{
-  buf[0] = kColumns + 1;
-  for (int c = 0; c < kColumns; c++) buf[c + 1] = phase_start[i][c];
-  return kColumns + 1;
-}
-
-void FixRuninWearJump::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int c = 0; c < kColumns; c++) phase_start[nlocal][c] = extra[nlocal][m++];
-}
-
-double FixRuninWearJump::memory_usage()
-{
-  return static_cast<double>(atom->nmax) * kColumns * sizeof(double);
 }

@@ -13,14 +13,13 @@ FixStyle(runin/wear/jump,FixRuninWearJump);
 #ifndef LMP_FIX_RUNIN_WEAR_JUMP_H
 #define LMP_FIX_RUNIN_WEAR_JUMP_H
 
-#include "fix.h"
+#include "runin_peratom_columns.h"
 
 namespace LAMMPS_NS {
 
-class FixRuninWearJump : public Fix {
+class FixRuninWearJump : public RuninPeratomColumns {
  public:
   FixRuninWearJump(class LAMMPS *, int, char **);
-  ~FixRuninWearJump() override;
   int setmask() override;
   void init() override;
   void end_of_step() override;
@@ -29,22 +28,12 @@ class FixRuninWearJump : public Fix {
 
   void write_restart(FILE *) override;
   void restart(char *) override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return kColumns + 1; }
-  int maxsize_restart() override { return kColumns + 1; }
-  double memory_usage() override;
 
  private:
   static constexpr int kColumns = 2;    // lost and gained volume at the start of the phase
   double factor;                        // M: each phase stands for M phases
   double max_depth;                     // largest mean worn depth of the group added by one jump
-  double **phase_start;                 // per atom: volumes at the start of the phase
+  double **&phase_start = columns;      // per atom: volumes at the start of the phase (the column store)
   bigint phase_start_step;
   double extra_steps;                   // sum over jumps of (M_applied - 1) x phase steps
   double jumps, reduced_jumps, last_factor, largest_change;

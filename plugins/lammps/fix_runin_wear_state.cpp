@@ -8,7 +8,6 @@
 #include "comm.h"
 #include "error.h"
 #include "input.h"
-#include "memory.h"
 #include "modify.h"
 #include "variable.h"
 
@@ -26,19 +25,14 @@ constexpr int kColumnsBeforeRise = 5;
 }
 
 FixRuninWearState::FixRuninWearState(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), values(nullptr)
+    RuninPeratomColumns(lmp, narg, arg, NCOLUMNS, "runin/wear_state:values")
 {
-  restart_peratom = 1;
-  create_attribute = 1;
   peratom_flag = 1;
   size_peratom_cols = NCOLUMNS;
   peratom_freq = 1;
   comm_forward = kGeometryColumns;
-
-  grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+  fewest_restart_columns = kColumnsBeforeRise;
+  choose_forwarded();
 
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg) error->all(FLERR, "fix RUNIN/WEAR_STATE: keyword '{}' needs a value", arg[iarg]);
@@ -50,6 +44,7 @@ FixRuninWearState::FixRuninWearState(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix RUNIN/WEAR_STATE: unknown keyword '{}' (expected lost or gained)", arg[iarg]);
   }
   if (narg > 3) refresh_geometry_all();
+  attach();
 }
 
 FixRuninWearState *FixRuninWearState::find(Modify *modify)
@@ -61,13 +56,6 @@ FixRuninWearState *FixRuninWearState::find_or_create(Modify *modify)
 {
   if (FixRuninWearState *existing = find(modify)) return existing;
   return dynamic_cast<FixRuninWearState *>(modify->add_fix(fmt::format("{} all RUNIN/WEAR_STATE", default_id)));
-}
-
-FixRuninWearState::~FixRuninWearState()
-{
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(values);
 }
 
 // Initial volumes from an atom-style variable, evaluated once here (atoms outside the group keep 0).
@@ -86,7 +74,7 @@ void FixRuninWearState::assign_from_variable(Column column, const char *referenc
     if (!(result[i] >= 0.0))
       error->one(FLERR, "fix RUNIN/WEAR_STATE: {} volume must be >= 0, got {} for atom {}", keyword, result[i],
                  atom->tag[i]);
-    values[i][column] = result[i];
+    columns[i][column] = result[i];
   }
 }
 
@@ -114,82 +102,14 @@ double FixRuninWearState::local_sum(Column column, int groupbit) const
   double sum = 0.0;
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) sum += values[i][column];
+    if (mask[i] & groupbit) sum += columns[i][column];
   return sum;
 }
 
-void FixRuninWearState::grow_arrays(int nmax)
+// The geometry columns, in the order the ghosts receive them.
+void FixRuninWearState::choose_forwarded()
 {
-  memory->grow(values, nmax, NCOLUMNS, "runin/wear_state:values");
-  array_atom = values;
-}
-
-void FixRuninWearState::copy_arrays(int i, int j, int /*delflag*/)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[j][c] = values[i][c];
-}
-
-void FixRuninWearState::set_arrays(int i)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[i][c] = 0.0;
-}
-
-int FixRuninWearState::pack_exchange(int i, double *buf)
-{
-  for (int c = 0; c < NCOLUMNS; c++) buf[c] = values[i][c];
-  return NCOLUMNS;
-}
-
-int FixRuninWearState::unpack_exchange(int nlocal, double *buf)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = buf[c];
-  return NCOLUMNS;
-}
-
-int FixRuninWearState::pack_restart(int i, double *buf)
-{
-  // first value: length of this fix's record, as Atom's restart extra layout requires
-  buf[0] = NCOLUMNS + 1;
-  for (int c = 0; c < NCOLUMNS; c++) buf[c + 1] = values[i][c];
-  return NCOLUMNS + 1;
-}
-
-void FixRuninWearState::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  // a record of an older layout (fewer columns) leaves the columns it does not hold at 0
-  const int stored = static_cast<int>(extra[nlocal][m]) - 1;
-  m++;
-  const int columns = stored >= kColumnsBeforeRise && stored <= NCOLUMNS ? stored : NCOLUMNS;
-  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = c < columns ? extra[nlocal][m++] : 0.0;
-}
-
-int FixRuninWearState::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
-{
-  int m = 0;
-  for (int k = 0; k < n; k++) {
-    buf[m++] = values[list[k]][WEAR_DEPTH];
-    buf[m++] = values[list[k]][FLAT_RADIUS];
-    if (send_flattened) buf[m++] = values[list[k]][VOLUME_FLATTENED];
-    if (send_rise) buf[m++] = values[list[k]][RISE];
-  }
-  return m;
-}
-
-void FixRuninWearState::unpack_forward_comm(int n, int first, double *buf)
-{
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    values[i][WEAR_DEPTH] = buf[m++];
-    values[i][FLAT_RADIUS] = buf[m++];
-    if (send_flattened) values[i][VOLUME_FLATTENED] = buf[m++];
-    if (send_rise) values[i][RISE] = buf[m++];
-  }
-}
-
-double FixRuninWearState::memory_usage()
-{
-  return static_cast<double>(atom->nmax) * NCOLUMNS * sizeof(double);
+  forwarded = {WEAR_DEPTH, FLAT_RADIUS};
+  if (send_flattened) forwarded.push_back(VOLUME_FLATTENED);
+  if (send_rise) forwarded.push_back(RISE);
 }

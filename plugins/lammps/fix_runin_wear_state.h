@@ -1,6 +1,6 @@
 // Per-atom wear state of RunIn asperities (internal fix, created by pair runin/asperity).
-// Holds the full per-atom storage method set so the state follows atoms across ranks,
-// to ghosts (the geometry columns, which the contact force reads) and through write_restart/read_restart.
+// Its per-atom column store (runin_peratom_columns.h) carries the state across ranks, to ghosts (the geometry
+// columns, which the contact force reads) and through write_restart/read_restart.
 //
 //   fix RUNIN_WEAR_STATE group RUNIN/WEAR_STATE [lost v_name] [gained v_name]
 //
@@ -14,12 +14,12 @@ FixStyle(RUNIN/WEAR_STATE,FixRuninWearState);
 #ifndef LMP_FIX_RUNIN_WEAR_STATE_H
 #define LMP_FIX_RUNIN_WEAR_STATE_H
 
-#include "fix.h"
+#include "runin_peratom_columns.h"
 #include "tribo/asperity_geometry.h"
 
 namespace LAMMPS_NS {
 
-class FixRuninWearState : public Fix {
+class FixRuninWearState : public RuninPeratomColumns {
  public:
   // VOLUME_LOST: removed by wear; VOLUME_GAINED: deposited by transfer from counter-asperities;
   // VOLUME_FLATTENED: the summit cap pressed flat by plastic contact (displaced, not removed) [m^3].
@@ -35,10 +35,9 @@ class FixRuninWearState : public Fix {
   static FixRuninWearState *find_or_create(class Modify *modify);
 
   FixRuninWearState(class LAMMPS *, int, char **);
-  ~FixRuninWearState() override;
   int setmask() override { return 0; }
 
-  double **state() { return values; }
+  double **state() { return columns; }
   double local_sum(Column column, int groupbit) const;
   // Recompute WEAR_DEPTH and FLAT_RADIUS of owned atom i from its volumes and radius, starting from its
   // current WEAR_DEPTH (per step, after a small change of the volumes).
@@ -47,14 +46,14 @@ class FixRuninWearState : public Fix {
   void refresh_geometry(int i, double radius)
   {
     if (!(radius > 0.0)) {
-      values[i][WEAR_DEPTH] = values[i][FLAT_RADIUS] = 0.0;
+      columns[i][WEAR_DEPTH] = columns[i][FLAT_RADIUS] = 0.0;
       return;
     }
     const runin::tribo::WornAsperity worn = runin::tribo::worn_asperity(
-        radius, values[i][VOLUME_LOST] + values[i][VOLUME_FLATTENED], values[i][VOLUME_GAINED],
-        values[i][WEAR_DEPTH]);
-    values[i][WEAR_DEPTH] = worn.summit_drop;
-    values[i][FLAT_RADIUS] = worn.flat_radius;
+        radius, columns[i][VOLUME_LOST] + columns[i][VOLUME_FLATTENED], columns[i][VOLUME_GAINED],
+        columns[i][WEAR_DEPTH]);
+    columns[i][WEAR_DEPTH] = worn.summit_drop;
+    columns[i][FLAT_RADIUS] = worn.flat_radius;
   }
   // Volume of the summit cap pressed flat when the summit of owned atom i (radius R) sinks by a further
   // depth d from its current drop h: V(h + d) - V(h), V(h) = pi h^2 (3R - h) / 3.
@@ -69,27 +68,22 @@ class FixRuninWearState : public Fix {
   // Send the geometry columns to the ghosts.
   void forward_geometry();
   // Whether the ghosts also get VOLUME_FLATTENED (a pair with a plastic normal model reads it for reloads).
-  void forward_flattened(bool on) { send_flattened = on; }
+  void forward_flattened(bool on)
+  {
+    send_flattened = on;
+    choose_forwarded();
+  }
   // Whether the ghosts also get RISE (a pair with volume-conserving flattening reads it for the summit reach).
-  void forward_rise(bool on) { send_rise = on; }
-
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return NCOLUMNS + 1; }
-  int maxsize_restart() override { return NCOLUMNS + 1; }
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
-  double memory_usage() override;
+  void forward_rise(bool on)
+  {
+    send_rise = on;
+    choose_forwarded();
+  }
 
  private:
-  double **values;
   bool send_flattened = true;
   bool send_rise = false;
+  void choose_forwarded();
   void assign_from_variable(Column column, const char *name);
 };
 
