@@ -236,7 +236,8 @@ TEST(InterfaceStrength, ShippedFilesStates)
   struct Shipped {
     const char *file, *a, *b;
   };
-  for (const Shipped &s : {Shipped{"Steel1020.runin", "Steel1020", "Steel1020"}, Shipped{"CuAl.runin", "Cu", "Al"}}) {
+  for (const Shipped &s : {Shipped{"Steel1020.runin", "Steel1020", "Steel1020"}, Shipped{"CuAl.runin", "Cu", "Al"},
+                           Shipped{"GreyCastIron.runin", "GreyCastIron", "GreyCastIron"}}) {
     const std::string path = std::string(RUNIN_SOURCE_DIR) + "/potentials/" + s.file;
     std::ifstream in(path);
     ASSERT_TRUE(in) << path;
