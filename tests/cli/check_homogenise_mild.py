@@ -90,7 +90,9 @@ def main():
     case = os.path.join(a.workdir, "mild.toml")
     text = CASE
     if a.mode == "contact":
-        text = text[:text.index("[wear]")] + '[contact]\nfriction = "junction"\ninterface = "oxidised"\n'
+        # the even grid 0, 0.25, 0.5 nm: the geometric one's 0.1 nm point sits in the first encounters' 5 % bump
+        text = text[:text.index("[wear]")].replace("depth_points = 4\ndepth_first = 1.0e-10\n", "depth_points = 3\n")
+        text += '[contact]\nfriction = "junction"\ninterface = "oxidised"\n'
     with open(case, "w") as f:
         f.write(text)
     law_path = os.path.join(a.workdir, "law.json")
