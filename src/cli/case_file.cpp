@@ -211,11 +211,15 @@ void check_law_materials(const CaseReader &reader, const continuum::SlidingFrict
   if (!state || !state->law || name_a.empty() || name_b.empty()) return;
   const auto law = state->law->materials();
   if (!law) return;
-  if ((law->first == name_a && law->second == name_b) || (law->first == name_b && law->second == name_a)) return;
+  // the law's rough body is the one whose nodes carry h (name_a): the order matters for unlike bodies
+  if (law->first == name_a && law->second == name_b) return;
+  const bool swapped = law->first == name_b && law->second == name_a;
   const std::string problem = "the state law " + state->path + " is for " + law->first + " on " + law->second +
                               " (its material.rough, material.counterface), the case's bodies are " + name_a + " (" +
-                              key_a + ") and " + name_b + " (" + key_b +
-                              "): use a law homogenised for these materials (runin homogenise)";
+                              key_a + ") and " + name_b + " (" + key_b + ")" +
+                              (swapped ? ", the other way round: the law's rough body must be the case's " + key_a
+                                       : std::string()) +
+                              ": use a law homogenised for these materials (runin homogenise)";
   if (law_path) throw InputError(reader.path() + ": --law: " + problem);
   reader.fail("friction.law", problem);
 }

@@ -84,7 +84,8 @@ std::filesystem::path resolve_case_path(const std::string &case_path, const std:
 std::filesystem::path find_case_file(const CaseReader &reader, const std::string &key, const std::string &file);
 
 // friction.model = "state_law" with both bodies' materials named: the law's materials (StateLaw::materials)
-// must be the same pair, in either order; otherwise fails naming both (exit 2). `law_path` is the --law option.
+// must be the same pair in the same order, its rough body the case's name_a (the body whose nodes carry h);
+// otherwise fails naming both (exit 2). `law_path` is the --law option.
 void check_law_materials(const CaseReader &reader, const continuum::SlidingFriction &friction,
                          const std::optional<std::string> &law_path, const std::string &key_a,
                          const std::string &name_a, const std::string &key_b, const std::string &name_b);

@@ -1,17 +1,21 @@
 #!/usr/bin/env python3
-"""The three dry machine elements on the pipeline's dry state law (inputs/state_law_steel_mild.json, built by
-`runin homogenise inputs/homogenise_steel_mild.toml`: oxidised junctions, mild wear k = 1e-5 by cycle jumping).
+"""The three dry machine elements, each on its own pair's dry state law (oxidised junctions, mild wear k = 1e-5 by
+cycle jumping): the Cu pin on the Al disk on inputs/state_law_cual.json, the steel journal bearing on the pipeline's
+inputs/state_law_steel_mild.json, the grey-iron ring pack on inputs/state_law_cast_iron.json.
 
   check_dry_law_elements.py --runin RUNIN --workdir DIR
 
-Runs inputs/{pin_on_disk,journal_bearing,piston_ring}_state_law.toml as shipped (their own law) and asserts:
+Runs inputs/{pin_on_disk,journal_bearing,piston_ring}_state_law.toml as shipped (the law each case names) and
+asserts:
+  - each case runs on its pair's law (the summary's 'state law' line);
   - Archard's invariant for every body: worn volume = k integral W ds / H within 2 % (pin and disk; both bearing
     halves and their shaft sides; rings A and B and the liner under each), k from the law's samples.wear.k and H
-    from the law's material file: the law's wear rate is Archard's at any pressure (out_of_range = "archard");
+    of that body (the law's rough material for the pin, bearing halves and rings, its counterface material for
+    the disk, shaft and liner): the law's wear rate is Archard's at any pressure (out_of_range = "archard");
   - no lookup beyond the law's last worn depth (each summary's 'law lookups' line), and it reports the lookups
     clamped below the lowest grid pressure (printed; not bounded here: the conformal contacts' edges reach p -> 0);
   - the friction the bodies feel is the law's: the pressure-weighted mu_eff at the end within 5 % of Tabor's
-    junction closed form f / sqrt(12 (1 - f^2)) at the file's oxidised m (the calibrated dry level, mu_k = 0.57).
+    junction closed form f / sqrt(12 (1 - f^2)) at the pair's oxidised m (the calibrated dry level, each file's mu_k).
 """
 import argparse
 import csv
@@ -26,41 +30,43 @@ SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
 from runin_common import fail  # noqa: E402
 
-LAW = os.path.join(SOURCE, "inputs", "state_law_steel_mild.json")
+LAWS = {"pin-on-disk": "state_law_cual.json", "journal-bearing": "state_law_steel_mild.json",
+        "piston-ring": "state_law_cast_iron.json"}
 TOLERANCE = 0.02
-# element, case, [(csv, [(label, volume column, load column or None for the pin's constant load)])]
+# element, case, [(csv, [(label, volume column, load column or None for the pin's constant load, rough body?)])]
 BODIES = {
     "pin-on-disk": ("pin_on_disk_state_law.toml",
-                    [("pin_on_disk.csv", [("pin", "wear_volume_m3", None), ("disk", "disk_wear_volume_m3", None)])]),
+                    [("pin_on_disk.csv", [("pin", "wear_volume_m3", None, True), ("disk", "disk_wear_volume_m3", None, False)])]),
     "journal-bearing": ("journal_bearing_state_law.toml",
                         [("journal_bearing.csv",
-                          [("lower half", "lower_wear_volume_m3", "lower_normal_force_N"),
-                           ("shaft under the lower half", "lower_counterface_volume_m3", "lower_normal_force_N"),
-                           ("upper half", "upper_wear_volume_m3", "upper_normal_force_N"),
-                           ("shaft under the upper half", "upper_counterface_volume_m3", "upper_normal_force_N")])]),
+                          [("lower half", "lower_wear_volume_m3", "lower_normal_force_N", True),
+                           ("shaft under the lower half", "lower_counterface_volume_m3", "lower_normal_force_N", False),
+                           ("upper half", "upper_wear_volume_m3", "upper_normal_force_N", True),
+                           ("shaft under the upper half", "upper_counterface_volume_m3", "upper_normal_force_N", False)])]),
     "piston-ring": ("piston_ring_state_law.toml",
-                    [("piston_ring_A.csv", [("ring A", "wear_ring_m3", "normal_load_N"),
-                                            ("liner under ring A", "wear_liner_m3", "normal_load_N")]),
-                     ("piston_ring_B.csv", [("ring B", "wear_ring_m3", "normal_load_N"),
-                                            ("liner under ring B", "wear_liner_m3", "normal_load_N")])]),
+                    [("piston_ring_A.csv", [("ring A", "wear_ring_m3", "normal_load_N", True),
+                                            ("liner under ring A", "wear_liner_m3", "normal_load_N", False)]),
+                     ("piston_ring_B.csv", [("ring B", "wear_ring_m3", "normal_load_N", True),
+                                            ("liner under ring B", "wear_liner_m3", "normal_load_N", False)])]),
 }
 END_MU = {"pin-on-disk": ("pin_on_disk.csv", "mu_eff"), "journal-bearing": ("journal_bearing.csv", "mu_eff"),
           "piston-ring": ("piston_ring_A.csv", "mu_eff")}
 
 
 def material(law):
-    """H of the law's rough body and the pair's oxidised m, from the law's material file."""
+    """H of the law's rough and counterface bodies and the pair's oxidised m, from the law's material file."""
     path = os.path.join(SOURCE, law["material"]["file"])
-    hardness, m = None, None
+    rough, counterface = law["material"]["rough"], law["material"]["counterface"]
+    hardness, m = {}, None
     for line in open(path):
         w = line.split()
-        if w[:2] == ["material", law["material"]["rough"]]:
-            hardness = float(w[5])
-        if w[:1] == ["interface"] and w[3:4] == ["oxidised"]:
+        if w[:1] == ["material"] and w[1] in (rough, counterface):
+            hardness[w[1]] = float(w[5])
+        if w[:1] == ["interface"] and set(w[1:3]) == {rough, counterface} and w[3:4] == ["oxidised"]:
             m = float(w[4])
-    if hardness is None or m is None:
-        fail(f"{path}: no hardness or oxidised interface line")
-    return hardness, m
+    if rough not in hardness or counterface not in hardness or m is None:
+        fail(f"{path}: no hardness of {rough} / {counterface} or no oxidised interface line")
+    return hardness[rough], hardness[counterface], m
 
 
 def work_integral(rows, load_column, constant):
@@ -77,19 +83,21 @@ def main():
     ap.add_argument("--runin", required=True)
     ap.add_argument("--workdir", required=True)
     a = ap.parse_args()
-    law = json.load(open(LAW))
-    k = law["samples"]["wear"]["k"]
-    hardness, m = material(law)
-    tabor = m / math.sqrt(12.0 * (1.0 - m * m))
     problems = []
     for element, (case, files) in BODIES.items():
+        law = json.load(open(os.path.join(SOURCE, "inputs", LAWS[element])))
+        k = law["samples"]["wear"]["k"]
+        h_rough, h_counterface, m = material(law)
+        tabor = m / math.sqrt(12.0 * (1.0 - m * m))
+        print(f"{element}: law {LAWS[element]} over p = {law['pressure'][0]:.6g}-{law['pressure'][-1]:.6g} Pa, h to "
+              f"{law['worn_depth'][-1]:.6g} m")
         out = os.path.join(a.workdir, element)
         result = subprocess.run([a.runin, element, os.path.join(SOURCE, "inputs", case), "--output-dir", out,
                                  "--no-plot"], capture_output=True, text=True)
         if result.returncode != 0:
             fail(f"{element}: exit {result.returncode}: {result.stderr.strip()[-800:]}")
-        if "state_law_steel_mild.json" not in result.stdout:
-            problems.append(f"{element}: the case does not run on inputs/state_law_steel_mild.json")
+        if LAWS[element] not in result.stdout:
+            problems.append(f"{element}: the case does not run on inputs/{LAWS[element]}")
         lookups = re.search(r"law lookups\s+(\d+) lookups: (\d+) clamped below p = (\S+) Pa, (\d+) above p = \S+ Pa, "
                             r"(\d+) beyond the last worn depth", result.stdout)
         if not lookups:
@@ -106,7 +114,8 @@ def main():
                 constant = float(tomllib.load(f)["pin"]["normal_load"])
         for csv_name, bodies in files:
             rows = list(csv.DictReader(open(os.path.join(out, csv_name))))
-            for label, volume, load in bodies:
+            for label, volume, load, rough in bodies:
+                hardness = h_rough if rough else h_counterface
                 ratio = float(rows[-1][volume]) / (k * work_integral(rows, load, constant) / hardness)
                 print(f"  {label}: worn volume / (k integral W ds / H) = {ratio:.5f}")
                 if not abs(ratio - 1.0) <= TOLERANCE:
@@ -114,7 +123,8 @@ def main():
         csv_name, column = END_MU[element]
         rows = list(csv.DictReader(open(os.path.join(out, csv_name))))
         mu_end = float(rows[-1][column])
-        print(f"  {column} at the end {mu_end:.4f}; Tabor at the oxidised m = {m}: {tabor:.4f}")
+        print(f"  {column} at the end {mu_end:.4f}; Tabor at the oxidised m = {m} of {law['material']['rough']} on "
+              f"{law['material']['counterface']}: {tabor:.4f}")
         if not abs(mu_end / tabor - 1.0) <= 0.05:
             problems.append(f"{element}: {column} {mu_end:.4f} not within 5 % of Tabor's {tabor:.4f}")
     if problems:

@@ -3,7 +3,8 @@
 
   check_element_runin.py --runin RUNIN --workdir DIR
 
-Runs inputs/{pin_on_disk,journal_bearing,piston_ring}_state_law.toml (the pipeline's cases) on the two shipped
+Runs the steel versions of the three state-law cases (tests/data/state_law/steel/ for the pin and the ring, whose
+shipped cases now run their own pairs; inputs/journal_bearing_state_law.toml) on the two shipped
 rough-on-rough steel laws: inputs/state_law_steel_rough.json (sigma = 0.2 um per body) and
 inputs/state_law_steel_rough_sigma04.json (0.4 um, the rougher initial surface); both built at physical wear by
 `runin homogenise inputs/homogenise_rough_{pipeline,sigma04}.toml` (doc/rve_cell.md).
@@ -49,8 +50,14 @@ FALL = 0.75
 RQ_FALL = 0.9
 
 
+def case_path(case):
+    """The steel version of a shipped state-law case (the pin and ring cases in inputs/ run their own pairs)."""
+    steel = os.path.join(SOURCE, "tests", "data", "state_law", "steel", case)
+    return steel if os.path.exists(steel) else os.path.join(SOURCE, "inputs", case)
+
+
 def run(runin, element, case, law, out):
-    result = subprocess.run([runin, element, os.path.join(SOURCE, "inputs", case), "--law", law,
+    result = subprocess.run([runin, element, case_path(case), "--law", law,
                              "--output-dir", out, "--no-plot"], capture_output=True, text=True)
     if result.returncode != 0:
         fail(f"{element} on {law}: {result.stderr.strip()}")
@@ -73,7 +80,7 @@ def check_scale_separation(element, case, stdout, law_path):
     if abs(float(cell) * 1e-3 / cell_size - 1.0) > 1e-3 or abs(float(cells) / (float(width) / float(cell)) - 1) > 2e-3:
         fail(f"{element}: cell {cell} mm, {cells} cells for {width} mm: not the law's cell {cell_size * 1e3} mm")
     if element == "pin-on-disk":
-        with open(os.path.join(SOURCE, "inputs", case), "rb") as f:
+        with open(case_path(case), "rb") as f:
             contact = tomllib.load(f)["contact"]
         a, rings = float(contact["flat_radius"]), int(contact["rings"])
         expected = eta * math.pi * (a / rings) ** 2
@@ -106,7 +113,7 @@ def archard_ratio(element, case, rows, law):
     """Worn volume / (K integral W ds), K = the law's wear_rate / p at its lowest grid point."""
     volume_column, load_column = ARCHARD_COLUMNS[element]
     if load_column is None:
-        with open(os.path.join(SOURCE, "inputs", case), "rb") as f:
+        with open(case_path(case), "rb") as f:
             constant = float(tomllib.load(f)["pin"]["normal_load"])
     work = 0.0
     for a, b in zip(rows, rows[1:]):

@@ -38,7 +38,10 @@ def check(condition, message):
 
 def run_element(runin, element, work):
     out = os.path.join(work, element.replace("-", "_"))
-    case = os.path.join(SOURCE_DIR, "inputs", element.replace("-", "_") + "_state_law.toml")
+    name = element.replace("-", "_") + "_state_law.toml"
+    case = os.path.join(SOURCE_DIR, "tests", "data", "state_law", "steel", name)   # steel versions: the steel law
+    if not os.path.exists(case):
+        case = os.path.join(SOURCE_DIR, "inputs", name)
     subprocess.run([runin, element, case, "--law", LAW, "--output-dir", out, "--no-plot"], check=True,
                    capture_output=True, text=True)
     return out
