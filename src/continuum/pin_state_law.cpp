@@ -167,6 +167,20 @@ double step_error(double mu0, double mu1, const std::vector<double> &h0, const s
 namespace {
 using Observer = std::function<void(const PinOnDiskSample &)>;
 
+// The step-size controller of both adaptive loops: first order (the change goes as the step), safety 0.9, a
+// rejected step shrinks at most 5x, an accepted one grows at most 2x.
+double shrink_factor(double err) { return std::max(0.2, 0.9 / err); }
+double grow_factor(double err) { return err > 0.0 ? std::clamp(0.9 / err, 0.2, 2.0) : 2.0; }
+
+// Counts one more try of a step ending at t; false (TooManySlowSteps in the report) past max_steps.
+bool within_step_budget(SplitReport &report, long &tries, long max_steps, double t) {
+  if (++tries <= max_steps) return true;
+  report.status = SplitStatus::TooManySlowSteps;
+  report.message = "adaptive wear steps at t = " + g(t) + " s: more than " + std::to_string(max_steps) + " steps";
+  report.time = t;
+  return false;
+}
+
 SplitReport run_speed_adaptive(const PinOnDiskSystem &system, const PinOnDiskRun &run, PinStateLaw &pin,
                                const WearSteps &steps, const Observer &observer) {
   const auto &p = system.parameters();
@@ -211,13 +225,7 @@ SplitReport run_speed_adaptive(const PinOnDiskSystem &system, const PinOnDiskRun
     const bool at_stop = s + ds >= stops[next_stop] * (1.0 - 1e-14);
     const double s1 = at_stop ? stops[next_stop] : s + ds;
     const double t1 = s1 >= s_end ? run.t_end : time_at(s1);
-    if (++tries > steps.max_steps) {
-      report.status = SplitStatus::TooManySlowSteps;
-      report.message = "adaptive wear steps at t = " + g(t1) + " s: more than " + std::to_string(steps.max_steps) +
-                       " steps";
-      report.time = t1;
-      return report;
-    }
+    if (!within_step_budget(report, tries, steps.max_steps, t1)) return report;
     const PinOnDiskSample sample = sample_at(t1, s1);
     const auto before = pin.save();
     const double mu0 = pin.held().held_kinetic;
@@ -234,13 +242,13 @@ SplitReport run_speed_adaptive(const PinOnDiskSystem &system, const PinOnDiskRun
         return report;
       }
       ++report.rejected_steps;
-      ds = std::max((s1 - s) * std::max(0.2, 0.9 / err), smallest);
+      ds = std::max((s1 - s) * shrink_factor(err), smallest);
       continue;
     }
     ++report.slow_steps;
     report.time = t1;
     if (observer) observer(sample);
-    const double grow = err > 0.0 ? std::clamp(0.9 / err, 0.2, 2.0) : 2.0;
+    const double grow = grow_factor(err);
     // a step cut short by a stop does not set the next one
     ds = std::min(max_step, at_stop && s1 - s < ds ? ds : (s1 - s) * grow);
     s = s1;
@@ -354,13 +362,7 @@ SplitReport run_torque_adaptive(const PinOnDiskSystem &system, const PinOnDiskRu
         if (ts > last.t * (1.0 + 1e-14) && ts < stop) stop = ts;
       const double t1 = last.t + ds / v >= stop * (1.0 - 1e-14) ? stop : last.t + ds / v;
       const double s1 = last.distance + v * (t1 - last.t);
-      if (++tries > steps.max_steps) {
-        report.status = SplitStatus::TooManySlowSteps;
-        report.message = "adaptive wear steps at t = " + g(t1) + " s: more than " + std::to_string(steps.max_steps) +
-                         " steps";
-        report.time = t1;
-        return report;
-      }
+      if (!within_step_budget(report, tries, steps.max_steps, t1)) return report;
       const double y[PinOnDiskSystem::state_size] = {v / r, s1, R0};
       const PinOnDiskSample sample = system.sample(t1, y, ContactState::Slip, 1);
       const auto before = pin.save();
@@ -379,7 +381,7 @@ SplitReport run_torque_adaptive(const PinOnDiskSystem &system, const PinOnDiskRu
       if (err > 1.0) {
         pin.restore(before);
         ++report.rejected_steps;
-        ds = (s1 - last.distance) * std::max(0.2, 0.9 / err);
+        ds = (s1 - last.distance) * shrink_factor(err);
         if (ds <= 1e-12 * std::max(s1, 1e-12)) {
           fall_back = true;
           break;
@@ -390,7 +392,7 @@ SplitReport run_torque_adaptive(const PinOnDiskSystem &system, const PinOnDiskRu
       report.time = t1;
       before_last = last, last = sample;
       if (observer) observer(sample);
-      const double grow = err > 0.0 ? std::clamp(0.9 / err, 0.2, 2.0) : 2.0;
+      const double grow = grow_factor(err);
       ds = std::min((s1 - before_last.distance) * grow,
                     steps.max_fraction * std::max(last.distance, v * run.t_end));
     }
