@@ -2,6 +2,7 @@
 environment. Standard library only; scripts put tools/ on sys.path and import from here."""
 import os
 import shutil
+import subprocess
 import sys
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
@@ -28,3 +29,36 @@ def mpi_env():
     env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
     env.setdefault("OMP_NUM_THREADS", "1")
     return env
+
+
+def run_or_fail(command, **kwargs):
+    """Runs command (capturing its output as text); a non-zero exit ends the check naming the command, the exit
+    status and the end of its stderr. Returns the CompletedProcess."""
+    result = subprocess.run(command, capture_output=True, text=True, **kwargs)
+    if result.returncode != 0:
+        fail(f"{' '.join(str(c) for c in command)}: exit {result.returncode}: {result.stderr.strip()[-800:]}")
+    return result
+
+
+def law_material_file(law):
+    """The coefficient file a state law records (material.file: absolute, or relative to the source tree)."""
+    path = law["material"]["file"]
+    return path if os.path.isabs(path) else os.path.join(SOURCE_DIR, path)
+
+
+def material_hardness(material_file, name):
+    """H of 'material NAME E nu rho H [S_y]' in a RunIn coefficient file."""
+    for line in open(material_file):
+        words = line.split()
+        if words[:2] == ["material", name]:
+            return float(words[5])
+    fail(f"{material_file}: no material {name}")
+
+
+def interface_factor(material_file, a, b, state):
+    """m of the pair's 'interface A B STATE m' line (either order of A and B)."""
+    for line in open(material_file):
+        words = line.split()
+        if words[:1] == ["interface"] and sorted(words[1:3]) == sorted([a, b]) and words[3:4] == [state]:
+            return float(words[4])
+    fail(f"{material_file}: no '{state}' interface line for {a} / {b}")

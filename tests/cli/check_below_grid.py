@@ -16,13 +16,12 @@ import argparse
 import json
 import math
 import os
-import subprocess
 import sys
 
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
 from state_law import StateLaw  # noqa: E402  (the C++ reader's interpolation rule)
-from runin_common import fail, mpi_env  # noqa: E402
+from runin_common import fail, law_material_file, material_hardness, mpi_env, run_or_fail  # noqa: E402
 
 LAW = os.path.join(SOURCE, "inputs", "state_law_steel_mild.json")
 CASE = os.path.join(SOURCE, "tests", "data", "state_law", "steel_mild_below_grid.toml")
@@ -40,19 +39,13 @@ def main():
     os.makedirs(a.workdir, exist_ok=True)
     cells_path = os.path.join(a.workdir, "below_grid.json")
     cache = a.cache_dir or os.path.join(a.workdir, "cache")
-    result = subprocess.run([a.runin, "homogenise", CASE, "--output", cells_path, "--cache-dir", cache, "--np", "2",
-                             "--lmp", a.lmp], cwd=SOURCE, env=mpi_env(), capture_output=True, text=True)
-    if result.returncode != 0:
-        fail(f"runin homogenise exited {result.returncode}: {result.stderr[-1500:]}")
+    run_or_fail([a.runin, "homogenise", CASE, "--output", cells_path, "--cache-dir", cache, "--np", "2", "--lmp",
+                 a.lmp], cwd=SOURCE, env=mpi_env())
     law = StateLaw(LAW)
     cells = json.load(open(cells_path))
     p_min = law.p[0]
     k = cells["samples"]["wear"]["k"]
-    hardness = None
-    for line in open(os.path.join(SOURCE, cells["material"]["file"])):
-        w = line.split()
-        if w[:2] == ["material", cells["material"]["rough"]]:
-            hardness = float(w[5])
+    hardness = material_hardness(law_material_file(cells), cells["material"]["rough"])
     problems = []
     for i, p in enumerate(cells["pressure"]):
         for field in ("mu_body", "rq"):

@@ -23,12 +23,11 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
 
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
-from runin_common import fail  # noqa: E402
+from runin_common import fail, interface_factor, law_material_file, material_hardness, run_or_fail  # noqa: E402
 
 LAWS = {"pin-on-disk": "state_law_cual.json", "journal-bearing": "state_law_steel_mild.json",
         "piston-ring": "state_law_cast_iron.json"}
@@ -55,18 +54,10 @@ END_MU = {"pin-on-disk": ("pin_on_disk.csv", "mu_eff"), "journal-bearing": ("jou
 
 def material(law):
     """H of the law's rough and counterface bodies and the pair's oxidised m, from the law's material file."""
-    path = os.path.join(SOURCE, law["material"]["file"])
+    path = law_material_file(law)
     rough, counterface = law["material"]["rough"], law["material"]["counterface"]
-    hardness, m = {}, None
-    for line in open(path):
-        w = line.split()
-        if w[:1] == ["material"] and w[1] in (rough, counterface):
-            hardness[w[1]] = float(w[5])
-        if w[:1] == ["interface"] and set(w[1:3]) == {rough, counterface} and w[3:4] == ["oxidised"]:
-            m = float(w[4])
-    if rough not in hardness or counterface not in hardness or m is None:
-        fail(f"{path}: no hardness of {rough} / {counterface} or no oxidised interface line")
-    return hardness[rough], hardness[counterface], m
+    return (material_hardness(path, rough), material_hardness(path, counterface),
+            interface_factor(path, rough, counterface, "oxidised"))
 
 
 def work_integral(rows, load_column, constant):
@@ -92,10 +83,7 @@ def main():
         print(f"{element}: law {LAWS[element]} over p = {law['pressure'][0]:.6g}-{law['pressure'][-1]:.6g} Pa, h to "
               f"{law['worn_depth'][-1]:.6g} m")
         out = os.path.join(a.workdir, element)
-        result = subprocess.run([a.runin, element, os.path.join(SOURCE, "inputs", case), "--output-dir", out,
-                                 "--no-plot"], capture_output=True, text=True)
-        if result.returncode != 0:
-            fail(f"{element}: exit {result.returncode}: {result.stderr.strip()[-800:]}")
+        result = run_or_fail([a.runin, element, os.path.join(SOURCE, "inputs", case), "--output-dir", out, "--no-plot"])
         if LAWS[element] not in result.stdout:
             problems.append(f"{element}: the case does not run on inputs/{LAWS[element]}")
         lookups = re.search(r"law lookups\s+(\d+) lookups: (\d+) clamped below p = (\S+) Pa, (\d+) above p = \S+ Pa, "

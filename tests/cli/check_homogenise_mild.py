@@ -26,7 +26,7 @@ SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tests", "lammps"))
 from run_deck import mpi_env  # noqa: E402
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
-from runin_common import fail, fresh_dir  # noqa: E402
+from runin_common import fail, fresh_dir, interface_factor  # noqa: E402
 
 K, H = 1.0e-5, 1.19e9
 P_REF = 4.0e6    # the jump tolerance 5e-11 m holds here; proportional to p elsewhere
@@ -58,11 +58,7 @@ jump_reference_pressure = {P_REF}
 
 def oxidised_m():
     """m of the Steel1020 pair's 'interface ... oxidised m' line."""
-    for line in open(os.path.join(SOURCE, "potentials", "Steel1020.runin")):
-        words = line.split()
-        if words[:1] == ["interface"] and words[3:4] == ["oxidised"]:
-            return float(words[4])
-    fail("potentials/Steel1020.runin has no oxidised interface line")
+    return interface_factor(os.path.join(SOURCE, "potentials", "Steel1020.runin"), "Steel1020", "Steel1020", "oxidised")
 
 
 def check_contact(law):

@@ -25,16 +25,7 @@ import sys
 
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
-from runin_common import fail, fresh_dir, mpi_env  # noqa: E402
-
-
-def hardness(material_file, name):
-    """H of 'material NAME E nu rho H [S_y]' in a coefficient file."""
-    for line in open(material_file):
-        words = line.split()
-        if words[:2] == ["material", name]:
-            return float(words[5])
-    fail(f"{material_file}: no material {name}")
+from runin_common import fail, fresh_dir, law_material_file, material_hardness, mpi_env  # noqa: E402
 
 
 def steady_and_peak(law, i):
@@ -47,8 +38,8 @@ def steady_and_peak(law, i):
 
 def check(law):
     material = law["material"]
-    path = material["file"] if os.path.isabs(material["file"]) else os.path.join(SOURCE, material["file"])
-    h_rough, h_cf = hardness(path, material["rough"]), hardness(path, material["counterface"])
+    path = law_material_file(law)
+    h_rough, h_cf = material_hardness(path, material["rough"]), material_hardness(path, material["counterface"])
     wear = law["samples"].get("wear")
     if not wear or "k" not in wear:
         fail(f"the law has no samples.wear.k: {wear}")

@@ -9,12 +9,11 @@ its mu(t) must meet the ring's cycle-mean mu(t) within 5 % (the fitted model rep
 import argparse
 import csv
 import os
-import subprocess
 import sys
 import tomllib
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-from runin_common import SOURCE_DIR, fail, fresh_dir  # noqa: E402
+from runin_common import SOURCE_DIR, fail, fresh_dir, run_or_fail  # noqa: E402
 
 SHIPPED = os.path.join(SOURCE_DIR, "inputs", "feedback_fitted_piston_ring.toml")
 CASE = os.path.join(SOURCE_DIR, "inputs", "piston_ring_lubricated.toml")
@@ -22,10 +21,7 @@ KEYS = (("model", "C1"), ("model", "C2"), ("model", "K1"), ("model", "K2"), ("ru
 
 
 def run(command):
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        fail(f"{' '.join(command)}: exit {result.returncode}: {result.stderr.strip()[-800:]}")
-    return result.stdout
+    return run_or_fail(command).stdout
 
 
 def main():

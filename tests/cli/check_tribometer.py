@@ -23,7 +23,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-from runin_common import SOURCE_DIR, fail, fresh_dir  # noqa: E402
+from runin_common import SOURCE_DIR, fail, fresh_dir, run_or_fail  # noqa: E402
 from state_law import StateLaw  # noqa: E402
 
 CASE = os.path.join(SOURCE_DIR, "inputs", "pin_on_disk_tribometer.toml")
@@ -61,11 +61,7 @@ def main():
     a = ap.parse_args()
     fresh_dir(a.workdir)
     out = os.path.join(a.workdir, "out")
-    result = subprocess.run([a.runin, "pin-on-disk", CASE, "--output-dir", out, "--no-plot"], capture_output=True,
-                            text=True)
-    if result.returncode != 0:
-        fail("runin pin-on-disk: " + result.stderr.strip())
-    stdout = result.stdout
+    stdout = run_or_fail([a.runin, "pin-on-disk", CASE, "--output-dir", out, "--no-plot"]).stdout
     print(stdout)
     rows = list(csv.DictReader(open(os.path.join(out, "pin_on_disk.csv"))))
     summary = list(csv.DictReader(open(os.path.join(out, "pin_on_disk_summary.csv"))))[0]
