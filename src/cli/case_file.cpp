@@ -22,13 +22,19 @@ const std::set<std::string> &friction_keys() {
   return keys;
 }
 
+const std::set<std::string> &film_keys() {
+  static const std::set<std::string> keys = {"coverage", "f_film", "interface", "removal_distance", "growth_rate"};
+  return keys;
+}
+
 namespace {
 
 using continuum::SlidingFriction;
 
 // Allowed keys per table; "" is the top level.
 const Schema kSchema = {
-    {"", {"title", "pin", "loading", "friction", "run", "solver", "contact", "wear", "output", "sweep"}},
+    {"", {"title", "pin", "loading", "friction", "run", "solver", "contact", "wear", "output", "sweep", "film"}},
+    {"film", film_keys()},
     {"contact", {"tip", "flat_radius", "tip_radius", "pin_youngs_modulus", "pin_poisson_ratio", "disk_youngs_modulus",
                  "disk_poisson_ratio", "rings", "grid_radius", "materials", "pin_material", "disk_material"}},
     {"wear", {"k", "hardness", "form", "step_safety", "max_steps", "disk_k", "disk_hardness"}},
@@ -109,6 +115,70 @@ SlidingFriction read_state_law_friction(const CaseReader &reader, const std::opt
   if (reader.has("friction.mu_static")) state->mu_static = reader.non_negative("friction.mu_static");
   return SlidingFriction::state_law(std::move(state), alpha);
 }
+
+// The law's material file, for an interface state named by `key`: its metadata material.file, found as a case file
+// is (beside the case, the working directory, the source tree).
+double law_interface_factor(const CaseReader &reader, const coupling::StateLaw &law, const std::string &key,
+                            const std::string &state_name) {
+  const auto pair = law.materials();
+  const auto &material = law.metadata().value("material", nlohmann::json::object());
+  if (!pair || !material.contains("file") || !material["file"].is_string())
+    reader.fail(key, "the state law names no material file (metadata material.file): give film.f_film instead");
+  const auto path = find_case_file(reader, key, material["file"].get<std::string>());
+  try {
+    std::ifstream in(path);
+    const auto file = tribo::parse_material_file(in, path.string());
+    const double m = file.pair(pair->first, pair->second)
+                         .interface_factor[static_cast<std::size_t>(tribo::find_interface_state(state_name))];
+    if (std::isnan(m))
+      reader.fail(key, path.string() + " has no 'interface " + pair->first + " " + pair->second + " " + state_name +
+                           " m' line");
+    return m;
+  } catch (const InputError &) {
+    throw;
+  } catch (const std::exception &e) {  // an unknown state, a malformed file
+    reader.fail(key, e.what());
+  }
+}
+
+}  // namespace
+
+std::optional<continuum::FilmSettings> read_film(const CaseReader &reader, const continuum::SlidingFriction &friction) {
+  if (!reader.has("film")) return std::nullopt;
+  const auto *state = friction.state_law();
+  if (!state) reader.fail("film", "a surface film needs friction.model = \"state_law\" (the law's contact fraction)");
+  const auto &law = *state->law;
+  const auto samples = law.metadata().value("samples", nlohmann::json::object());
+  const auto contact = samples.value("contact", nlohmann::json::object());
+  if (!contact.contains("f") || !contact["f"].is_number() || !contact.contains("alpha") || !contact["alpha"].is_number())
+    reader.fail("film", "the state law " + state->path + " was not built with junction friction (no samples.contact.f "
+                        "and alpha): the film scales the law's junctions from their interface coefficient");
+  if (!law.has(coupling::StateField::ContactFraction))
+    reader.fail("film", "the state law " + state->path + " has no contact_fraction field (built before films): "
+                        "rebuild it with runin homogenise");
+  continuum::FilmSettings f;
+  f.f_base = contact["f"].get<double>();
+  f.alpha = contact["alpha"].get<double>();
+  f.coverage = reader.number("film.coverage", 1.0);
+  if (reader.has("film.f_film") == reader.has("film.interface"))
+    reader.fail("film.f_film", "give exactly one of film.f_film (a number) and film.interface (a state of the law's "
+                               "material file: clean, oxidised, boundary)");
+  f.f_film = reader.has("film.f_film")
+                 ? reader.number("film.f_film")
+                 : law_interface_factor(reader, law, "film.interface", reader.text("film.interface", ""));
+  f.removal_distance = reader.number("film.removal_distance", 0.0);
+  f.growth_rate = reader.number("film.growth_rate", 0.0);
+  try {
+    f.validate();
+  } catch (const std::invalid_argument &e) {  // "film.key: problem"
+    const std::string what = e.what();
+    const auto colon = what.find(": ");
+    reader.fail(what.substr(0, colon), what.substr(colon + 2));
+  }
+  return f;
+}
+
+namespace {
 
 SlidingFriction read_feedback_friction(const CaseReader &reader, double alpha) {
   const auto kind = reader.choice("friction.kind", {"lubricated", "dry"}, std::string("dry")) == "dry"
@@ -493,6 +563,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   if (reader.has("sweep")) read_pin_sweep(reader, c, state_law);
   read_wear_steps(reader, c, state_law);
   c.wear_steps.stop_times = c.vtk_times;
+  c.film = read_film(reader, *c.friction);
   return c;
 }
 

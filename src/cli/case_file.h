@@ -62,6 +62,7 @@ struct PinOnDiskCase {
   std::string friction_model;       // [friction] model
   // run.wear_steps = "adaptive" (state law, speed drive) with run.tolerance; default: one per output interval
   continuum::WearSteps wear_steps;
+  std::optional<continuum::FilmSettings> film;  // [film] (state law only)
 };
 
 // The case with its static coefficient replaced by `mu0` (see friction_with_static_coefficient), and
@@ -73,6 +74,12 @@ PinOnDiskCase with_mu0(const PinOnDiskCase &c, double mu0);
 tribo::Material read_runin_material(const std::string &path, const std::string &name);
 
 class CaseReader;
+// [film] of an element on a state law (doc/surface_films.md, "In an element"): coverage, f_film or interface (a state
+// of the law's material file), removal_distance, growth_rate; f_base and alpha from the law (samples.contact, a
+// junction law); the law must have its contact_fraction field. nullopt without [film]; bad input fails naming the key.
+std::optional<continuum::FilmSettings> read_film(const CaseReader &reader, const continuum::SlidingFriction &friction);
+const std::set<std::string> &film_keys();
+
 // A file named in a case file: an absolute path as given; a relative one against the case file's directory, else
 // (when that does not exist and the source tree has it) against the RunIn source tree, the shipped potentials/
 // and inputs/. Lexically normal; whether it exists is the caller's check.

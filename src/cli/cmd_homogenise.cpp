@@ -32,6 +32,7 @@
 #include "cli/staged_file.h"
 #include "coupling/ave_time_reader.h"
 #include "coupling/homogenise_curves.h"
+#include "tribo/contact_model.h"
 #include "coupling/state_law.h"
 
 extern char **environ;  // mpi_environment()
@@ -503,13 +504,13 @@ std::vector<Failure> run_samples(const HomogeniseCase &c, const std::vector<cons
 
 // Each complete sample on the h grid; a sample that cannot be read or did not reach the depth fails too.
 std::map<const Sample *, DepthCurves> read_curves(const std::vector<Sample> &samples, const std::vector<double> &grid,
-                                                   std::vector<Failure> &failures) {
+                                                   double rough_summits, std::vector<Failure> &failures) {
   std::map<const Sample *, DepthCurves> curves;
   for (const auto &s : samples) {
     if (!s.complete()) continue;
     try {
-      curves.emplace(&s, resample_on_depth_grid(cell_series(coupling::read_ave_time(s.output().string())), grid,
-                                                s.acceleration));
+      curves.emplace(&s, resample_on_depth_grid(cell_series(coupling::read_ave_time(s.output().string()), rough_summits),
+                                                grid, s.acceleration));
     } catch (const std::exception &e) {
       failures.push_back({&s, e.what()});
     }
@@ -610,7 +611,12 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
         {"host", host_name()}}},
   };
   if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) metadata["samples"]["wear"] = wear;
-  if (const nlohmann::json contact = c.contact_json(); !contact.is_null()) metadata["samples"]["contact"] = contact;
+  if (nlohmann::json contact = c.contact_json(); !contact.is_null()) {
+    // the junction's f and alpha (the deck's file form: alpha at its default), for an element's surface film
+    if (c.friction == "junction")
+      contact.update({{"f", c.interface_factor}, {"alpha", tribo::JunctionFrictionModel::kDefaultAlpha}});
+    metadata["samples"]["contact"] = contact;
+  }
   if (!c.heights_file.empty()) {
     metadata["surface"]["heights"] = portable_path(c.heights_file);
     metadata["surface"]["heights_sha256"] = c.heights_sha256;
@@ -664,7 +670,7 @@ int run_homogenise(const Options &o) {
 
   std::vector<Failure> failures = run_samples(c, todo, np, launcher, p.lmp, p.deck, p.cache_dir, start);
   const std::vector<double> grid = depth_grid(c.depth, c.depth_points, c.depth_first);
-  const auto curves = read_curves(samples, grid, failures);
+  const auto curves = read_curves(samples, grid, static_cast<double>(c.nside) * c.nside, failures);
   coupling::HomogenisationSamples good = good_seeds(c, samples, grid, curves, failures);
   good.metadata = law_metadata(o, c, p, samples, curves, failures);
   write_law(o, good);

@@ -48,6 +48,7 @@ struct Row {
   double wear_volume = 0.0, contact_radius = 0.0, peak_pressure = 0.0, mean_pressure = 0.0;
   double disk_wear_volume = 0.0, disk_track_depth = 0.0;  // 0 without wear.disk_k
   double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0;         // friction.model = "state_law" only
+  double film_coverage = 0.0;                             // with [film]
 };
 
 struct Curve {
@@ -183,6 +184,7 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
   std::optional<continuum::PinStateLaw> pin;
   try {
     pin.emplace(state_law_settings(c), *law);
+    if (c.film) pin->set_film(*c.film);
   } catch (const std::invalid_argument &e) {
     if (c.contact->flat) throw;
     throw std::runtime_error(std::string(e.what()) + " (raise contact.grid_radius)");
@@ -196,7 +198,8 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
     samples.push_back(s);
     const auto st = pin->state();
     curve.rows.push_back({s, st.wear_volume, st.contact_radius, st.peak_pressure, st.mean_pressure,
-                          st.disk_wear_volume, st.disk_track_depth, st.mu_eff, st.h_mean, st.h_max});
+                          st.disk_wear_volume, st.disk_track_depth, st.mu_eff, st.h_mean, st.h_max,
+                          st.film_coverage});
     for (; with_frames && next_frame < frame_times.size() && s.t >= frame_times[next_frame] - 1e-12; ++next_frame)
       curve.frames.push_back(state_law_frame(*pin, s.t));
   };
@@ -219,12 +222,13 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
   return curve;
 }
 
-std::string csv_text(const std::vector<Row> &rows, bool state_law) {
+std::string csv_text(const std::vector<Row> &rows, bool state_law, bool film) {
   std::string text =
       "t_s,applied_torque_N_m,friction_force_N,friction_torque_N_m,mu,speed_m_s,sliding_distance_m,state_slip,"
       "mu_law,roughness,wear_volume_m3,contact_radius_m,peak_pressure_Pa,mean_pressure_Pa,disk_wear_volume_m3,"
       "disk_track_depth_m";
-  text += state_law ? ",mu_eff,h_mean_m,h_max_m\n" : "\n";
+  text += state_law ? ",mu_eff,h_mean_m,h_max_m" : "";
+  text += film ? ",film_coverage\n" : "\n";
   for (const auto &r : rows) {
     const auto &s = r.s;
     text += fmt::format("{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{},{:.12g},{:.12g},{:.12g},{:.12g},"
@@ -235,6 +239,10 @@ std::string csv_text(const std::vector<Row> &rows, bool state_law) {
     if (state_law) {
       text.pop_back();
       text += fmt::format(",{:.12g},{:.12g},{:.12g}\n", r.mu_eff, r.h_mean, r.h_max);
+    }
+    if (film) {
+      text.pop_back();
+      text += fmt::format(",{:.12g}\n", r.film_coverage);
     }
   }
   return text;
@@ -364,7 +372,7 @@ std::pair<std::string, std::string> sweep_csv_text(const std::vector<SweepRun> &
 // The CSV files and the plots, staged; returns their names in order.
 std::vector<std::string> write_curves(StagedOutput &out, const PinOnDiskCase &c, const Curve &curve,
                                       const std::vector<SweepRun> &sweep, bool no_plot, const PlotRunner &plot) {
-  out.write("pin_on_disk.csv", csv_text(curve.rows, c.friction->state_law() != nullptr));
+  out.write("pin_on_disk.csv", csv_text(curve.rows, c.friction->state_law() != nullptr, c.film.has_value()));
   out.write("pin_on_disk_summary.csv", summary_csv_text(c, curve));
   std::vector<std::string> written = {"pin_on_disk.csv", "pin_on_disk_summary.csv"};
   if (!sweep.empty()) {
@@ -416,6 +424,11 @@ std::string print_state_law(const PinOnDiskCase &c, const Curve &curve) {
              law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
   fmt::print("  pin wear          h mean {:.4g} m, max {:.4g} m, volume {:.6g} m^3 (law wear_rate), {} wear steps\n",
              last.h_mean, last.h_max, last.wear_volume, curve.wear_steps);
+  if (c.film)
+    fmt::print("  film              coverage {:.4g} -> {:.4g} (load-weighted), f {:.4g} covered / {:.4g} bare, s_r {:.4g} "
+               "m, k_g {:.4g} 1/s\n",
+               first.film_coverage, last.film_coverage, c.film->f_film, c.film->f_base, c.film->removal_distance,
+               c.film->growth_rate);
   fmt::print("  disk wear         {:.6g} m^3 (law counterface_wear_rate), track depth {:.4g} m over {:.4g} m x "
              "{:.4g} m\n",
              d.volume, d.depth, d.width, d.length);

@@ -156,7 +156,8 @@ void read_contact(const CaseReader &reader, const tribo::MaterialFile &materials
   try {
     const int state = tribo::find_interface_state(c.interface);
     const auto pair = materials.pair(c.rough, c.counterface);
-    if (std::isnan(pair.interface_factor[static_cast<std::size_t>(state)]))
+    c.interface_factor = pair.interface_factor[static_cast<std::size_t>(state)];
+    if (std::isnan(c.interface_factor))
       reader.fail("contact.interface", fmt::format("the file {} has no 'interface {} {} {} m' line", c.material_file,
                                                    c.rough, c.counterface, c.interface));
   } catch (const std::exception &e) {    // an unknown state (InvalidCoefficient) or no pair (MaterialFileError)

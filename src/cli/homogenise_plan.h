@@ -41,6 +41,7 @@ struct HomogeniseCase {
   // [contact]
   std::string friction = "strength";  // the cell's friction sub-model (the deck's `friction` variable)
   std::string interface;              // interface state of the material file (clean, oxidised, boundary); empty: none
+  double interface_factor = 0.0;      // its friction factor m (junction: f = m); 0 without a state
   // [wear]
   double wear_k = 0.0;           // the cell's Archard k of both bodies (0: the material file's pair k)
   double wear_scale = 1.0;       // wear_k / the file's k: the deck's wear_scale besides any acceleration

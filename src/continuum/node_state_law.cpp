@@ -36,6 +36,13 @@ void NodeStateLaw::reset_state(std::vector<double> h) {
   h_ = std::move(h);
 }
 
+void NodeStateLaw::set_film(const FilmSettings &settings) {
+  if (!law_->has(StateField::ContactFraction))
+    throw std::invalid_argument("film: the state law has no contact_fraction field (the fraction of summits in contact "
+                                "that the film kinetics need): rebuild it with runin homogenise");
+  film_.emplace(settings, h_.size());
+}
+
 double NodeStateLaw::mu_effective(const std::vector<double> &pressure, const std::vector<double> &area) {
   if (pressure.size() != h_.size() || area.size() != h_.size())
     throw std::invalid_argument("node state law: pressure/area size mismatch");
@@ -43,7 +50,9 @@ double NodeStateLaw::mu_effective(const std::vector<double> &pressure, const std
   for (std::size_t i = 0; i < h_.size(); ++i) {
     if (!(pressure[i] > 0.0)) continue;
     const double f = pressure[i] * area[i];
-    weighted += law_->value(StateField::MuBody, law_->slice(pressure[i], policy_), h_[i], &use_) * f;
+    double mu = law_->value(StateField::MuBody, law_->slice(pressure[i], policy_), h_[i], &use_);
+    if (film_) mu *= film_->friction_factor(i);
+    weighted += mu * f;
     load += f;
   }
   return load > 0.0 ? weighted / load : 0.0;
@@ -54,7 +63,8 @@ std::vector<double> NodeStateLaw::node_mu(const std::vector<double> &pressure) c
   std::vector<double> mu(h_.size(), 0.0);
   for (std::size_t i = 0; i < h_.size(); ++i)
     if (pressure[i] > 0.0)
-      mu[i] = law_->value(StateField::MuBody, law_->slice(pressure[i], OutOfRange::Clamp), h_[i]);
+      mu[i] = law_->value(StateField::MuBody, law_->slice(pressure[i], OutOfRange::Clamp), h_[i]) *
+              (film_ ? film_->friction_factor(i) : 1.0);
   return mu;
 }
 
@@ -67,18 +77,27 @@ double NodeStateLaw::peak_mu(const std::vector<double> &pressure, const std::vec
     const auto slice = law_->slice(pressure[i], policy_);  // the Error policy throws here too
     double peak = 0.0;
     for (double h : law_->worn_depth()) peak = std::max(peak, law_->value(StateField::MuBody, slice, h));
+    if (film_) peak *= film_->friction_factor(i);  // the static limit at the film's present coverage
     weighted += peak * pressure[i] * area[i];
     load += pressure[i] * area[i];
   }
   return load > 0.0 ? weighted / load : 0.0;
 }
 
-NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressure, double ds) {
+NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressure, double ds, double dt) {
   if (pressure.size() != h_.size()) throw std::invalid_argument("node state law: pressure size mismatch");
   if (!(std::isfinite(ds) && ds >= 0.0)) throw std::invalid_argument("node state law: slid distance must be >= 0");
+  if (!(std::isfinite(dt) && dt >= 0.0)) throw std::invalid_argument("node state law: time step must be >= 0");
   Increment inc;
   inc.body.assign(h_.size(), 0.0);
   inc.counterface.assign(h_.size(), 0.0);
+  if (film_) {  // at the contact fractions of the step's start (the film does not change the wear)
+    std::vector<double> phi(h_.size(), 0.0);
+    for (std::size_t i = 0; i < h_.size(); ++i)
+      if (pressure[i] > 0.0)
+        phi[i] = law_->value(StateField::ContactFraction, law_->slice(pressure[i], policy_), h_[i]);
+    film_->advance(phi, ds, dt);
+  }
   if (ds == 0.0) return inc;
   const double n_real = std::isfinite(substep_) ? std::ceil(ds / substep_) : 1.0;
   if (n_real > 1e8) throw std::runtime_error("node state law: " + std::to_string(ds) + " m needs more than 1e8 sub-steps");

@@ -17,9 +17,11 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "continuum/node_film.h"
 #include "coupling/state_law.h"
 
 namespace runin::continuum {
@@ -36,6 +38,10 @@ class NodeStateLaw {
   coupling::OutOfRange policy() const { return policy_; }
   const coupling::RangeUse &use() const { return use_; }
   void reset_state(std::vector<double> h);  // sets h_i (size must match), e.g. for tests
+  // A surface film on the nodes (node_film.h): friction scaled by its coverage, which advance() moves. Throws
+  // std::invalid_argument when the law has no contact_fraction field or the settings are bad (naming the key).
+  void set_film(const FilmSettings &settings);
+  const NodeFilm *film() const { return film_ ? &*film_ : nullptr; }
 
   // Pressure-weighted friction coefficient; 0 if no node carries load. Sizes must equal size().
   double mu_effective(const std::vector<double> &pressure, const std::vector<double> &area);
@@ -50,8 +56,9 @@ class NodeStateLaw {
     std::vector<double> counterface;  // dc_i, m (the counter body's)
     int substeps = 0;
   };
-  // Slides ds >= 0 at the held pressures: h_i += dh_i; returns the increments.
-  Increment advance(const std::vector<double> &pressure, double ds);
+  // Slides ds >= 0 at the held pressures in dt >= 0 s: h_i += dh_i (the film, if any, over ds and dt, at each
+  // node's contact fraction at the start of the step); returns the increments.
+  Increment advance(const std::vector<double> &pressure, double ds, double dt = 0.0);
   // Largest sub-step advance() takes: 0.5 / (largest |d wear_rate / dh| of the law) and the smallest h-grid
   // spacing over the largest wear rate (no stage jumps a grid cell).
   double substep_bound() const { return substep_; }
@@ -65,6 +72,7 @@ class NodeStateLaw {
   std::shared_ptr<const coupling::StateLaw> law_;
   coupling::OutOfRange policy_;
   std::vector<double> h_, c_;
+  std::optional<NodeFilm> film_;
   coupling::RangeUse use_;
   double substep_ = 0.0;
 };

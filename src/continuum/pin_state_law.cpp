@@ -53,17 +53,26 @@ void PinStateLaw::start() {
 }
 
 bool PinStateLaw::step(const PinOnDiskSample &s) {
+  const double dt = std::max(s.t - t_now_, 0.0);
   t_now_ = s.t;
   const double ds = s.distance - slid_;
-  if (!(ds > 0.0)) return false;
-  wear(ds);
+  if (!(ds > 0.0)) {
+    // at rest a film still regrows
+    const NodeFilm *film = nodes_.film();
+    if (!film || !(dt > 0.0) || !(film->settings().growth_rate > 0.0)) return false;
+    nodes_.advance(pressure(), 0.0, dt);
+    held_.held_kinetic = nodes_.mu_effective(pressure(), area_);
+    return true;
+  }
+  wear(ds, dt);
   slid_ = s.distance;
   held_.held_kinetic = nodes_.mu_effective(pressure(), area_);
   return true;
 }
 
-// Slides ds: outer steps bounded by the pressure-wear stability of the tip (flat: one step, p stays uniform).
-void PinStateLaw::wear(double ds) {
+// Slides ds in dt: outer steps bounded by the pressure-wear stability of the tip (flat: one step, p stays uniform),
+// each taking its share of dt.
+void PinStateLaw::wear(double ds, double dt) {
   const int n = grid().rings();
   double remaining = ds;
   while (remaining > 0.0) {
@@ -76,7 +85,7 @@ void PinStateLaw::wear(double ds) {
       if (remaining - step < 1e-9 * ds) step = remaining;
     }
     const double width = 2.0 * contact_radius();
-    const auto inc = nodes_.advance(pressure(), step);
+    const auto inc = nodes_.advance(pressure(), step, dt * step / ds);
     double volume = 0.0;
     for (int i = 0; i < n; ++i) volume += inc.counterface[i] * area_[i];
     disk_.slide_volume(volume, step, width);
@@ -108,6 +117,11 @@ PinStateLaw::State PinStateLaw::state() const {
   row.mean_pressure = pin_ ? pin_->contact().mean_pressure : s_.load / flat_area_;
   row.disk_wear_volume = disk_.volume();
   row.disk_track_depth = disk_.depth();
+  if (const NodeFilm *film = nodes_.film()) {
+    std::vector<double> load(h.size());
+    for (std::size_t i = 0; i < h.size(); ++i) load[i] = std::max(p[i], 0.0) * area_[i];
+    row.film_coverage = film->mean_coverage(load);
+  }
   return row;
 }
 

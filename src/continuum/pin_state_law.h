@@ -37,6 +37,8 @@ class PinStateLaw final : public SlowSystem<PinOnDiskSample> {
   // Throws std::invalid_argument when the tip's grid cannot hold the contact (raise the grid radius).
   PinStateLaw(const PinStateLawSettings &settings, StateLawFriction &held);
 
+  // A surface film on the pin's nodes (NodeStateLaw::set_film); before start().
+  void set_film(const FilmSettings &settings) { nodes_.set_film(settings); }
   void start() override;                         // held static (mu_static or the law's peak) and kinetic mu_eff
   bool step(const PinOnDiskSample &s) override;  // the distance slid since the last step
 
@@ -46,6 +48,7 @@ class PinStateLaw final : public SlowSystem<PinOnDiskSample> {
     double wear_volume = 0.0;                        // m^3, sum h_i A_i (the pin's worn volume)
     double contact_radius = 0.0, peak_pressure = 0.0, mean_pressure = 0.0;
     double disk_wear_volume = 0.0, disk_track_depth = 0.0;
+    double film_coverage = 0.0;                      // load-weighted mean theta of the film (0 without one)
   };
   State state() const;
 
@@ -71,7 +74,7 @@ class PinStateLaw final : public SlowSystem<PinOnDiskSample> {
   void restore(const Snapshot &s);
 
  private:
-  void wear(double ds);
+  void wear(double ds, double dt);
   double contact_radius() const { return pin_ ? pin_->contact().contact_radius : *s_.flat_radius; }
 
   PinStateLawSettings s_;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "coupling/ave_time_reader.h"
 
 #include <filesystem>
@@ -27,6 +28,10 @@ std::string join(const std::vector<std::string> &words) {
 AveTimeTable::AveTimeTable(std::string source, std::vector<std::string> names,
                            std::vector<std::vector<double>> columns)
     : source_(std::move(source)), names_(std::move(names)), columns_(std::move(columns)) {}
+
+bool AveTimeTable::has_column(const std::string &name) const {
+  return std::find(names_.begin(), names_.end(), name) != names_.end();
+}
 
 const std::vector<double> &AveTimeTable::column(const std::string &name) const {
   for (std::size_t i = 0; i < names_.size(); ++i)

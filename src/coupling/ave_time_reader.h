@@ -33,6 +33,7 @@ class AveTimeTable {
   std::size_t rows() const { return columns_.empty() ? 0 : columns_.front().size(); }
   // Throws InputFormatError listing the available names if `name` is absent.
   const std::vector<double> &column(const std::string &name) const;
+  bool has_column(const std::string &name) const;
 
  private:
   std::string source_;

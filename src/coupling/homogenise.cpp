@@ -17,9 +17,15 @@ StateLaw homogenise(const HomogenisationSamples &samples) {
     if (good.empty())
       throw std::invalid_argument("homogenise: no seed at p = " + std::to_string(samples.pressure[ip]) + " Pa");
     for (const auto &g : good)
-      for (const auto &f : g.field)
-        if (f.size() != depths) throw std::invalid_argument("homogenise: a seed's curve is not on the depth grid");
+      for (std::size_t f = 0; f < state_field_count; ++f)
+        if (g.field[f].size() != depths && !(optional_field(static_cast<StateField>(f)) && g.field[f].empty()))
+          throw std::invalid_argument("homogenise: a seed's curve is not on the depth grid");
     for (std::size_t f = 0; f < state_field_count; ++f) {
+      // an optional field (contact fraction) only when every sample at every pressure has it
+      if (std::any_of(samples.seeds.begin(), samples.seeds.end(), [f](const auto &set) {
+            return std::any_of(set.begin(), set.end(), [f](const DepthCurves &g) { return g.field[f].empty(); });
+          }))
+        continue;
       std::vector<double> mean(depths), low(depths), high(depths);
       for (std::size_t j = 0; j < depths; ++j) {
         double sum = 0, lo = good.front().field[f][j], hi = lo;

@@ -55,7 +55,7 @@ void running_max(std::vector<double> &v) {
 
 }  // namespace
 
-CellSeries cell_series(const coupling::AveTimeTable &table) {
+CellSeries cell_series(const coupling::AveTimeTable &table, double rough_summits) {
   CellSeries c;
   const std::array<std::pair<const char *, std::vector<double> *>, 7> columns = {{{"v_s", &c.s},
                                                                                   {"v_h", &c.h},
@@ -69,6 +69,14 @@ CellSeries cell_series(const coupling::AveTimeTable &table) {
     for (std::size_t i = 0; i < out->size(); ++i)
       if (!std::isfinite((*out)[i]))
         throw std::runtime_error(table.source() + ": " + name + " is not finite in data row " + std::to_string(i + 1));
+  }
+  if (rough_summits > 0.0 && table.has_column("v_contacts")) {
+    c.contact_fraction = table.column("v_contacts");
+    for (std::size_t i = 0; i < c.contact_fraction.size(); ++i) {
+      if (!std::isfinite(c.contact_fraction[i]))
+        throw std::runtime_error(table.source() + ": v_contacts is not finite in data row " + std::to_string(i + 1));
+      c.contact_fraction[i] /= rough_summits;
+    }
   }
   return c;
 }
@@ -99,6 +107,7 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
       c.rq.push_back(cell.rq[i]);
       c.rsk.push_back(cell.rsk[i]);
       c.area_fraction.push_back(cell.area_fraction[i]);
+      if (!cell.contact_fraction.empty()) c.contact_fraction.push_back(cell.contact_fraction[i]);
     }
   if (c.s.size() < 2) throw std::runtime_error("fewer than 2 output rows with sliding (s > 0)");
   // wear only grows: the running maximum removes round-off dips, so h is non-decreasing
@@ -119,7 +128,8 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
     return even ? dh : (j + 1 < grid.size() ? grid[j + 1] - grid[j] : grid[j] - grid[j - 1]);
   };
   DepthCurves out;
-  for (auto &f : out.field) f.resize(grid.size());
+  for (std::size_t f = 0; f < state_field_count; ++f)
+    if (!optional_field(static_cast<StateField>(f)) || !c.contact_fraction.empty()) out.field[f].resize(grid.size());
   using F = coupling::StateField;
   auto field = [&](F f) -> std::vector<double> & { return out.field[static_cast<std::size_t>(f)]; };
   for (std::size_t j = 0; j < grid.size(); ++j) {
@@ -150,6 +160,7 @@ DepthCurves resample_on_depth_grid(const CellSeries &cell, const std::vector<dou
     field(F::Rq)[j] = at(c.rq);
     field(F::Rsk)[j] = at(c.rsk);
     field(F::AreaFraction)[j] = smoothed(c.area_fraction);
+    if (!c.contact_fraction.empty()) field(F::ContactFraction)[j] = smoothed(c.contact_fraction);
     // below the first sliding row the distance runs from the end of loading, (s, h) = (0, 0): the h = 0
     // column is s = 0, where the continuum starts too (the other fields hold the first sliding row there)
     field(F::SlidingDistance)[j] =

@@ -81,6 +81,7 @@ const char *to_string(StateField field) {
     case StateField::WearRate: return "wear_rate";
     case StateField::CounterfaceWearRate: return "counterface_wear_rate";
     case StateField::SlidingDistance: return "sliding_distance";
+    case StateField::ContactFraction: return "contact_fraction";
   }
   return "?";
 }
@@ -97,6 +98,7 @@ StateLaw::StateLaw(std::vector<double> pressure, std::vector<double> worn_depth,
     const std::string name = to_string(field);
     const auto &t = fields_[f];
     const bool negative_ok = may_be_negative(field);
+    if (optional_field(field) && t.mean.empty() && t.low.empty() && t.high.empty()) continue;
     check_table(t.mean, name + ".mean", np, nh, negative_ok);
     if (t.low.empty() != t.high.empty()) throw std::invalid_argument(name + ": low and high come together");
     if (!t.low.empty()) {
@@ -143,7 +145,10 @@ StateLaw StateLaw::from_json(const nlohmann::json &document, const std::string &
     std::array<StateFieldTable, state_field_count> tables;
     for (std::size_t f = 0; f < state_field_count; ++f) {
       const std::string name = to_string(static_cast<StateField>(f));
-      if (!fields.contains(name)) throw std::invalid_argument("fields: missing \"" + name + "\"");
+      if (!fields.contains(name)) {
+        if (optional_field(static_cast<StateField>(f))) continue;
+        throw std::invalid_argument("fields: missing \"" + name + "\"");
+      }
       const auto &node = fields[name];
       if (!node.is_object() || !node.contains("mean"))
         throw std::invalid_argument("fields." + name + ": expected an object with \"mean\"");
@@ -179,6 +184,7 @@ nlohmann::json StateLaw::to_json() const {
   out["worn_depth"] = depth_;
   nlohmann::json fields = nlohmann::json::object();
   for (std::size_t f = 0; f < state_field_count; ++f) {
+    if (fields_[f].mean.empty()) continue;  // an optional field the law lacks
     nlohmann::json node = {{"mean", fields_[f].mean}};
     if (!fields_[f].low.empty()) {
       node["low"] = fields_[f].low;
@@ -201,7 +207,7 @@ const char *to_string(OutOfRange policy) {
 
 bool StateLaw::proportional_to_pressure(StateField field) {
   return field == StateField::WearRate || field == StateField::CounterfaceWearRate ||
-         field == StateField::AreaFraction;
+         field == StateField::AreaFraction || field == StateField::ContactFraction;
 }
 
 StateLaw::PressureSlice StateLaw::slice(double pressure, OutOfRange policy) const {
@@ -267,8 +273,17 @@ double StateLaw::interpolate(const std::vector<std::vector<double>> &grid, const
   return (1.0 - c.wp) * lower + c.wp * upper;
 }
 
+namespace {
+void require(const StateLaw &law, StateField field) {
+  if (!law.has(field))
+    throw std::invalid_argument(std::string("state law: no field \"") + to_string(field) +
+                                "\" (a law built before it: rebuild it with runin homogenise)");
+}
+}  // namespace
+
 double StateLaw::value(StateField field, double pressure, double worn_depth, Band band, OutOfRange policy,
                        RangeUse *use) const {
+  require(*this, field);
   const auto &t = table(field);
   const auto &grid = band == Band::Mean || t.low.empty() ? t.mean : band == Band::Low ? t.low : t.high;
   const Cell c = locate(pressure, worn_depth, policy, use);
@@ -276,6 +291,7 @@ double StateLaw::value(StateField field, double pressure, double worn_depth, Ban
 }
 
 double StateLaw::value(StateField field, const PressureSlice &slice, double worn_depth, RangeUse *use) const {
+  require(*this, field);
   const Cell c = locate(slice, worn_depth, use);
   return interpolate(table(field).mean, c) * (proportional_to_pressure(field) ? c.proportional_scale : 1.0);
 }
@@ -296,6 +312,8 @@ StateLawValues StateLaw::values(double pressure, double worn_depth, OutOfRange p
   v.area_fraction = interpolate(table(StateField::AreaFraction).mean, c) * c.proportional_scale;
   v.wear_rate = interpolate(table(StateField::WearRate).mean, c) * c.proportional_scale;
   v.counterface_wear_rate = interpolate(table(StateField::CounterfaceWearRate).mean, c) * c.proportional_scale;
+  if (has(StateField::ContactFraction))
+    v.contact_fraction = interpolate(table(StateField::ContactFraction).mean, c) * c.proportional_scale;
   return v;
 }
 

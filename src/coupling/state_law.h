@@ -29,8 +29,13 @@ enum class StateField {
   WearRate,             // m/m, dh/ds of the rough body at the physical wear coefficient (acceleration removed)
   CounterfaceWearRate,  // m/m, mean worn depth rate of the counterface (physical)
   SlidingDistance,      // m, physical sliding distance the cell took to reach h (for comparisons, not dynamics)
+  ContactFraction,      // -, contacts / summits of the rough body: the fraction of its sliding a summit spends in
+                        //    contact (surface-film kinetics, doc/surface_films.md); optional, laws built before it
+                        //    lack it
 };
-inline constexpr std::size_t state_field_count = 7;
+inline constexpr std::size_t state_field_count = 8;
+// A field a law may lack (an empty table); the others are required.
+constexpr bool optional_field(StateField field) { return field == StateField::ContactFraction; }
 const char *to_string(StateField field);  // the JSON key: "mu_body", "rq", ...
 
 enum class Band { Mean, Low, High };  // Low/High: the seed band (see doc/state_law.md)
@@ -52,6 +57,7 @@ struct StateFieldTable {
 
 struct StateLawValues {
   double mu_body = 0.0, rq = 0.0, rsk = 0.0, area_fraction = 0.0, wear_rate = 0.0, counterface_wear_rate = 0.0;
+  double contact_fraction = 0.0;  // 0 when the law lacks the field
 };
 
 class StateLaw {
@@ -72,13 +78,16 @@ class StateLaw {
   const StateFieldTable &table(StateField field) const { return fields_[static_cast<std::size_t>(field)]; }
   const nlohmann::json &metadata() const { return metadata_; }  // material, surface, samples, provenance
   bool has_band() const;
-  // The fields OutOfRange::Archard scales with p outside the grid: the wear rates and the real-area fraction.
+  bool has(StateField field) const { return !table(field).mean.empty(); }  // false: an optional field it lacks
+  // The fields OutOfRange::Archard scales with p outside the grid: the wear rates, the real-area fraction and the
+  // contact fraction (plastic contacts: their number and area go with the load).
   static bool proportional_to_pressure(StateField field);
   // The two bodies' materials the law was homogenised for (metadata material.rough and material.counterface, as
   // `runin homogenise` writes them from its material file); nullopt when the law names none (a synthetic law).
   std::optional<std::pair<std::string, std::string>> materials() const;
 
-  // One field at (p, h). Error policy: std::out_of_range naming p and the grid. `use` (optional) counts.
+  // One field at (p, h). Error policy: std::out_of_range naming p and the grid. `use` (optional) counts. A field
+  // the law lacks: std::invalid_argument.
   double value(StateField field, double pressure, double worn_depth, Band band = Band::Mean,
                OutOfRange policy = OutOfRange::Error, RangeUse *use = nullptr) const;
   // All dynamic fields at once (one grid search).
