@@ -150,12 +150,13 @@ std::optional<continuum::FilmSettings> read_film(const CaseReader &reader, const
   const auto &law = *state->law;
   const auto samples = law.metadata().value("samples", nlohmann::json::object());
   const auto contact = samples.value("contact", nlohmann::json::object());
-  if (!contact.contains("f") || !contact["f"].is_number() || !contact.contains("alpha") || !contact["alpha"].is_number())
-    reader.fail("film", "the state law " + state->path + " was not built with junction friction (no samples.contact.f "
-                        "and alpha): the film scales the law's junctions from their interface coefficient");
-  if (!law.has(coupling::StateField::ContactFraction))
-    reader.fail("film", "the state law " + state->path + " has no contact_fraction field (built before films): "
-                        "rebuild it with runin homogenise");
+  if (contact.value("friction", std::string()) != "junction")
+    reader.fail("film", "the state law " + state->path + " was not built with junction friction (samples.contact."
+                        "friction): the film scales the law's junctions by Tabor's closed form");
+  if (!contact.contains("f") || !contact["f"].is_number() || !contact.contains("alpha") ||
+      !contact["alpha"].is_number() || !law.has(coupling::StateField::ContactFraction))
+    reader.fail("film", "the state law " + state->path + " was built before surface films (no samples.contact.f, "
+                        "alpha or contact_fraction field): rebuild it with runin homogenise");
   continuum::FilmSettings f;
   f.f_base = contact["f"].get<double>();
   f.alpha = contact["alpha"].get<double>();

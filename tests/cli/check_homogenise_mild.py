@@ -62,9 +62,10 @@ def oxidised_m():
 
 
 def check_contact(law):
-    if law["samples"].get("contact") != {"friction": "junction", "interface": "oxidised"}:
-        fail(f"the law's samples.contact is {law['samples'].get('contact')}")
     f = oxidised_m()
+    # the junction's f (the state's m) and alpha (the deck's default) are recorded for an element's surface film
+    if law["samples"].get("contact") != {"friction": "junction", "interface": "oxidised", "f": f, "alpha": 12.0}:
+        fail(f"the law's samples.contact is {law['samples'].get('contact')}")
     tabor = f / math.sqrt(12.0 * (1.0 - f * f))
     mu = [v for row in law["fields"]["mu_body"]["mean"] for v in row[1:]]
     worst = max(abs(v / tabor - 1.0) for v in mu)
@@ -72,6 +73,14 @@ def check_contact(law):
           f"worst {100 * worst:.2f} %")
     if worst > 0.05:
         fail(f"mu_body {min(mu):.4f}-{max(mu):.4f} is not within 5 % of Tabor's {tabor:.4f}")
+    # the fraction of the rough body's summits in contact (v_contacts / nside^2): in (0, 1), more at the higher
+    # pressure at every depth (the contacts carry the load)
+    phi = law["fields"]["contact_fraction"]["mean"]
+    if not all(0.0 < v < 1.0 for row in phi for v in row):
+        fail(f"contact_fraction outside (0, 1): {phi}")
+    if not all(hi > lo for lo, hi in zip(phi[0], phi[-1])):
+        fail(f"contact_fraction does not grow with the pressure: {phi}")
+    print(f"contact_fraction {phi[0][0]:.4f} .. {phi[-1][0]:.4f} at h = 0 over the pressures")
     print("PASS")
 
 

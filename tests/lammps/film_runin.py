@@ -59,6 +59,33 @@ def windows(rows, n=6):
     return [sum(r["mu"] for r in rows[k * size:(k + 1) * size]) / size for k in range(n)]
 
 
+def coverage_of(mu_adh):
+    """The contacts' mean coverage that an adhesion part implies (Tabor inverted, every junction plastic)."""
+    f = math.sqrt(mu_adh ** 2 * ALPHA / (1.0 + mu_adh ** 2 * ALPHA))
+    return (F_CLEAN - f) / (F_CLEAN - F_FILM)
+
+
+def node_closure(name, film, rows, theta_0):
+    """The element's node film (continuum/node_film.h) against this cell: one coverage per node, its summits in
+    contact a fraction phi = contacts / summits of the sliding (the state law's contact_fraction), and friction
+    Tabor's at f(theta). Reported per window of s: the cell's contact coverage (from mu_adh) and mu_body against the
+    node model's theta(s) and T(f(theta(s)))."""
+    phi = sum(r["contacts"] for r in rows) / len(rows) / CELL["nside"] ** 2
+    rate = phi / film["s_r"] + film["k_g"] / 1.0    # per m of sliding at v = 1 m/s
+    steady = (film["k_g"] / 1.0) / rate
+    theta = [steady + (theta_0 - steady) * math.exp(-rate * r["s"]) for r in rows]
+    size = len(rows) // 6
+    cells = [sum(coverage_of(r["mu_adh"]) for r in rows[k * size:(k + 1) * size]) / size for k in range(6)]
+    nodes = [sum(theta[k * size:(k + 1) * size]) / size for k in range(6)]
+    mu_cell = windows(rows)
+    mu_node = [sum(tabor(t * F_FILM + (1.0 - t) * F_CLEAN) for t in theta[k * size:(k + 1) * size]) / size
+               for k in range(6)]
+    err = [m / c - 1.0 for m, c in zip(mu_node, mu_cell)]
+    print(f"node closure: {name}: phi = contacts / summits {phi:.4f}, relaxation length {1e6 / rate:.0f} um, "
+          f"steady coverage {steady:.3f}; coverage cell {' '.join(f'{c:.3f}' for c in cells)}, node "
+          f"{' '.join(f'{c:.3f}' for c in nodes)}; mu_body node / cell - 1 {' '.join(f'{e:+.3f}' for e in err)}")
+
+
 def ranks(args):
     cell = dict(CELL, nslide=10000, **dict(SHAPES["rise"][0], k_g=1.0e4))
     tables = []
@@ -132,6 +159,7 @@ def main():
         theta = (F_CLEAN - f) / (F_CLEAN - F_FILM)
         phi = film["k_g"] * (1.0 / theta - 1.0) * film["s_r"] / 1.0    # v = 1 m/s
         print(f"{name}: last window mu_adh {mu_adh:.4f}: f = {f:.3f}, mean coverage {theta:.3f}, phi = {phi:.3f}")
+        node_closure(name, film, rows[1:], theta_l)
         print(f"ok: {name}: end of loading mu_adh {loaded:.4f} (Tabor at theta_L = {theta_l:.4f}: {start:.4f}); "
               f"mu_body over six windows of s = {rows[-1]['s'] * 1e6:.0f} um: {' '.join(f'{m:.4f}' for m in w)} "
               f"({ratio:.2f} x; last two within {drift:.1%})")
