@@ -23,7 +23,9 @@ const std::set<std::string> &friction_keys() {
 }
 
 const std::set<std::string> &film_keys() {
-  static const std::set<std::string> keys = {"coverage", "f_film", "interface", "removal_distance", "growth_rate"};
+  static const std::set<std::string> keys = {"coverage", "f_film", "interface", "removal_distance", "growth_rate",
+                                             "counterface_coverage", "counterface_removal_distance",
+                                             "counterface_growth_rate"};
   return keys;
 }
 
@@ -169,6 +171,14 @@ std::optional<continuum::FilmSettings> read_film(const CaseReader &reader, const
                  : law_interface_factor(reader, law, "film.interface", reader.text("film.interface", ""));
   f.removal_distance = reader.number("film.removal_distance", 0.0);
   f.growth_rate = reader.number("film.growth_rate", 0.0);
+  if (reader.has("film.counterface_coverage") || reader.has("film.counterface_removal_distance") ||
+      reader.has("film.counterface_growth_rate")) {
+    continuum::CounterfaceFilm c;
+    c.coverage = reader.number("film.counterface_coverage", 1.0);
+    c.removal_distance = reader.number("film.counterface_removal_distance", 0.0);
+    c.growth_rate = reader.number("film.counterface_growth_rate", 0.0);
+    f.counterface = c;
+  }
   try {
     f.validate();
   } catch (const std::invalid_argument &e) {  // "film.key: problem"

@@ -63,6 +63,7 @@ struct Curve {
   std::optional<DiskTrack> disk;  // with wear.disk_k
   std::optional<coupling::RangeUse> range_use;  // friction.model = "state_law"
   double smallest_node_area = 0.0;  // m^2, smallest loaded ring of the pin face at the start (state law)
+  double counterface_duty = 0.0;    // [film] with a disk film: the track's time under the pin
   continuum::SplitReport split;     // state law: slow steps (adaptive: quasi-static and rejected ones)
   std::optional<continuum::ArchardRatios> archard;  // state law
   double wall_seconds = 0.0;        // of the main run (run_case)
@@ -210,6 +211,7 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
   curve.summary = continuum::summarise(samples);
   curve.grid_radius = pin->grid_radius();
   curve.smallest_node_area = pin->smallest_node_area();
+  curve.counterface_duty = pin->counterface_duty();
   curve.wear_steps = pin->wear_steps();
   curve.final_pressure = pin->pressure();
   curve.ring_width = pin->grid().ring_width();
@@ -424,11 +426,16 @@ std::string print_state_law(const PinOnDiskCase &c, const Curve &curve) {
              law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
   fmt::print("  pin wear          h mean {:.4g} m, max {:.4g} m, volume {:.6g} m^3 (law wear_rate), {} wear steps\n",
              last.h_mean, last.h_max, last.wear_volume, curve.wear_steps);
-  if (c.film)
-    fmt::print("  film              coverage {:.4g} -> {:.4g} (load-weighted), f {:.4g} covered / {:.4g} bare, s_r {:.4g} "
-               "m, k_g {:.4g} 1/s\n",
+  if (c.film) {
+    fmt::print("  film              contact coverage {:.4g} -> {:.4g} (load-weighted), f {:.4g} covered / {:.4g} bare; "
+               "pin s_r {:.4g} m, k_g {:.4g} 1/s\n",
                first.film_coverage, last.film_coverage, c.film->f_film, c.film->f_base, c.film->removal_distance,
                c.film->growth_rate);
+    if (const auto &cf = c.film->counterface)
+      fmt::print("                    disk film s_r {:.4g} m, k_g {:.4g} 1/s, under the pin {:.4g} of the time; a "
+                 "contact shears at the mean coverage of the two\n",
+                 cf->removal_distance, cf->growth_rate, curve.counterface_duty);
+  }
   fmt::print("  disk wear         {:.6g} m^3 (law counterface_wear_rate), track depth {:.4g} m over {:.4g} m x "
              "{:.4g} m\n",
              d.volume, d.depth, d.width, d.length);

@@ -28,34 +28,55 @@ void FilmSettings::validate() const {
           "the film removal distance must be >= 0 m (0: no removal)", removal_distance);
   require(growth_rate >= 0.0 && std::isfinite(growth_rate), "film.growth_rate",
           "the film growth rate must be >= 0 1/s (0: no growth)", growth_rate);
+  if (!counterface) return;
+  const auto &c = *counterface;
+  require(c.coverage >= 0.0 && c.coverage <= 1.0, "film.counterface_coverage",
+          "the counterface's initial film coverage must be in [0, 1]", c.coverage);
+  require(c.removal_distance >= 0.0 && std::isfinite(c.removal_distance), "film.counterface_removal_distance",
+          "the counterface film's removal distance must be >= 0 m (0: no removal)", c.removal_distance);
+  require(c.growth_rate >= 0.0 && std::isfinite(c.growth_rate), "film.counterface_growth_rate",
+          "the counterface film's growth rate must be >= 0 1/s (0: no growth)", c.growth_rate);
 }
 
 NodeFilm::NodeFilm(const FilmSettings &settings, std::size_t nodes)
     : s_((settings.validate(), settings)),
       kinetics_(settings.removal_distance, settings.growth_rate),
+      counterface_kinetics_(settings.counterface ? settings.counterface->removal_distance : 0.0,
+                            settings.counterface ? settings.counterface->growth_rate : 0.0),
       theta_(nodes, settings.coverage),
+      theta_cf_(settings.counterface ? nodes : 0, settings.counterface ? settings.counterface->coverage : 0.0),
       tabor_base_(tabor(settings.f_base)) {}
+
+double NodeFilm::contact_coverage(std::size_t node) const {
+  return theta_cf_.empty() ? theta_[node] : 0.5 * (theta_[node] + theta_cf_[node]);
+}
 
 double NodeFilm::tabor(double f) const { return f / std::sqrt(s_.alpha * (1.0 - f * f)); }
 
 double NodeFilm::friction_factor(std::size_t node) const {
-  return tabor(tribo::FilmKinetics::interpolate(theta_[node], s_.f_base, s_.f_film)) / tabor_base_;
+  return tabor(tribo::FilmKinetics::interpolate(contact_coverage(node), s_.f_base, s_.f_film)) / tabor_base_;
 }
 
-void NodeFilm::advance(const std::vector<double> &contact_fraction, double ds, double dt) {
+void NodeFilm::advance(const std::vector<double> &contact_fraction, double ds, double dt, double counterface_duty) {
   if (contact_fraction.size() != theta_.size()) throw std::invalid_argument("node film: size mismatch");
   if (!(ds >= 0.0 && dt >= 0.0)) throw std::invalid_argument("node film: ds and dt must be >= 0");
-  const double growth = kinetics_.growth(dt);
-  for (std::size_t i = 0; i < theta_.size(); ++i)
+  if (!(counterface_duty > 0.0 && counterface_duty <= 1.0))
+    throw std::invalid_argument("node film: the counterface duty must be in (0, 1]");
+  const double growth = kinetics_.growth(dt), growth_cf = counterface_kinetics_.growth(dt);
+  for (std::size_t i = 0; i < theta_.size(); ++i) {
     theta_[i] = tribo::FilmKinetics::advance(theta_[i], kinetics_.removal(contact_fraction[i] * ds), growth);
+    if (!theta_cf_.empty())
+      theta_cf_[i] = tribo::FilmKinetics::advance(
+          theta_cf_[i], counterface_kinetics_.removal(contact_fraction[i] * counterface_duty * ds), growth_cf);
+  }
 }
 
 double NodeFilm::mean_coverage(const std::vector<double> &weight) const {
   double sum = 0.0, total = 0.0, plain = 0.0;
   for (std::size_t i = 0; i < theta_.size(); ++i) {
-    sum += theta_[i] * weight[i];
+    sum += contact_coverage(i) * weight[i];
     total += weight[i];
-    plain += theta_[i];
+    plain += contact_coverage(i);
   }
   if (total > 0.0) return sum / total;
   return theta_.empty() ? 0.0 : plain / static_cast<double>(theta_.size());

@@ -14,11 +14,21 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "tribo/surface_film.h"
 
 namespace runin::continuum {
+
+// The film of the counter body (its own kinetics; the same f_film): a contact then shears at the mean coverage of
+// its two summits, as in the cell. Its surface under a node is in the contact zone a fraction `duty` of the time
+// (the element's: 1 for a body always under load, footprint / track area for a disk).
+struct CounterfaceFilm {
+  double coverage = 1.0;          // initial theta, [0, 1]
+  double removal_distance = 0.0;  // s_r of its summits' own slip, m
+  double growth_rate = 0.0;       // k_g, 1/s
+};
 
 struct FilmSettings {
   double coverage = 1.0;          // initial theta of every node, in [0, 1]
@@ -27,6 +37,7 @@ struct FilmSettings {
   double alpha = 12.0;            // Tabor's junction growth constant (the law's)
   double removal_distance = 0.0;  // s_r, m of a summit's own slip; 0: sliding does not remove the film
   double growth_rate = 0.0;       // k_g, 1/s; 0: no regrowth
+  std::optional<CounterfaceFilm> counterface;  // absent: only the rough body carries a film
 
   // Throws std::invalid_argument naming the key (film.coverage, film.f_film, film.removal_distance, ...).
   void validate() const;
@@ -38,19 +49,23 @@ class NodeFilm {
 
   const FilmSettings &settings() const { return s_; }
   const std::vector<double> &coverage() const { return theta_; }
-  // mu / mu_law of node i at its coverage: T(f(theta_i)) / T(f_base).
+  const std::vector<double> &counterface_coverage() const { return theta_cf_; }  // empty without its film
+  // The coverage a contact at node i shears at: theta_i, or (theta_i + theta_cf_i) / 2 with a counterface film.
+  double contact_coverage(std::size_t node) const;
+  // mu / mu_law of node i at its coverage: T(f(theta)) / T(f_base).
   double friction_factor(std::size_t node) const;
-  // Slides ds (m, nominal) in dt (s); contact_fraction[i] = phi_i (0: a node that carries no load only regrows).
-  void advance(const std::vector<double> &contact_fraction, double ds, double dt);
-  // Coverage-weighted by `weight` (e.g. p_i A_i); the plain mean when every weight is 0.
+  // Slides ds (m, nominal) in dt (s); contact_fraction[i] = phi_i (0: a node that carries no load only regrows);
+  // the counterface's summits under node i slip phi_i duty ds (0 < duty <= 1).
+  void advance(const std::vector<double> &contact_fraction, double ds, double dt, double counterface_duty = 1.0);
+  // Contact coverage weighted by `weight` (e.g. p_i A_i); the plain mean when every weight is 0.
   double mean_coverage(const std::vector<double> &weight) const;
 
  private:
   double tabor(double f) const;
 
   FilmSettings s_;
-  tribo::FilmKinetics kinetics_;
-  std::vector<double> theta_;
+  tribo::FilmKinetics kinetics_, counterface_kinetics_;
+  std::vector<double> theta_, theta_cf_;
   double tabor_base_ = 0.0;
 };
 

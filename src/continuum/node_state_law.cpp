@@ -36,11 +36,14 @@ void NodeStateLaw::reset_state(std::vector<double> h) {
   h_ = std::move(h);
 }
 
-void NodeStateLaw::set_film(const FilmSettings &settings) {
+void NodeStateLaw::set_film(const FilmSettings &settings, double counterface_duty) {
+  if (!(counterface_duty > 0.0 && counterface_duty <= 1.0))
+    throw std::invalid_argument("film: the counterface duty must be in (0, 1]");
   if (!law_->has(StateField::ContactFraction))
     throw std::invalid_argument("film: the state law has no contact_fraction field (the fraction of summits in contact "
                                 "that the film kinetics need): rebuild it with runin homogenise");
   film_.emplace(settings, h_.size());
+  counterface_duty_ = counterface_duty;
 }
 
 double NodeStateLaw::mu_effective(const std::vector<double> &pressure, const std::vector<double> &area) {
@@ -96,7 +99,7 @@ NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressur
     for (std::size_t i = 0; i < h_.size(); ++i)
       if (pressure[i] > 0.0)
         phi[i] = law_->value(StateField::ContactFraction, law_->slice(pressure[i], policy_), h_[i]);
-    film_->advance(phi, ds, dt);
+    film_->advance(phi, ds, dt, counterface_duty_);
   }
   if (ds == 0.0) return inc;
   const double n_real = std::isfinite(substep_) ? std::ceil(ds / substep_) : 1.0;

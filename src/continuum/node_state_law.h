@@ -40,7 +40,8 @@ class NodeStateLaw {
   void reset_state(std::vector<double> h);  // sets h_i (size must match), e.g. for tests
   // A surface film on the nodes (node_film.h): friction scaled by its coverage, which advance() moves. Throws
   // std::invalid_argument when the law has no contact_fraction field or the settings are bad (naming the key).
-  void set_film(const FilmSettings &settings);
+  // counterface_duty: the fraction of the time the counter body's surface under a node is in the contact zone.
+  void set_film(const FilmSettings &settings, double counterface_duty = 1.0);
   const NodeFilm *film() const { return film_ ? &*film_ : nullptr; }
 
   // Pressure-weighted friction coefficient; 0 if no node carries load. Sizes must equal size().
@@ -73,6 +74,7 @@ class NodeStateLaw {
   coupling::OutOfRange policy_;
   std::vector<double> h_, c_;
   std::optional<NodeFilm> film_;
+  double counterface_duty_ = 1.0;
   coupling::RangeUse use_;
   double substep_ = 0.0;
 };

@@ -37,8 +37,10 @@ class PinStateLaw final : public SlowSystem<PinOnDiskSample> {
   // Throws std::invalid_argument when the tip's grid cannot hold the contact (raise the grid radius).
   PinStateLaw(const PinStateLawSettings &settings, StateLawFriction &held);
 
-  // A surface film on the pin's nodes (NodeStateLaw::set_film); before start().
-  void set_film(const FilmSettings &settings) { nodes_.set_film(settings); }
+  // A surface film on the pin's nodes (NodeStateLaw::set_film); before start(). A disk film's duty: a point of the
+  // track is under the pin for the footprint's share of the track's area, pi a^2 / (2 a 2 pi r) = a / (4 r).
+  void set_film(const FilmSettings &settings) { nodes_.set_film(settings, counterface_duty()); }
+  double counterface_duty() const { return std::min(1.0, contact_radius() / (4.0 * s_.track_radius)); }
   void start() override;                         // held static (mu_static or the law's peak) and kinetic mu_eff
   bool step(const PinOnDiskSample &s) override;  // the distance slid since the last step
 

@@ -7,6 +7,11 @@ steel law with [film], two of Blau's run-in shapes by the film's inputs alone.
   T(f_film) / T(f_base); F/W never falls and ends steady (last 10 % of sliding within 2 %) at the bare law's level
   (within 1 %), at least 10 x the start; past the law's last worn depth (phi constant) ln theta falls with s at
   -phi / s_r, phi = the law's contact_fraction there (1e-6); Archard's invariant for the pin within 2 %.
+- peak (the same case with two films, as in the cell's peak): the pin's wiped off within mm (s_r 2 mm, not regrown),
+  the disk's growing from a bare start (counterface_coverage 0, s_r 0.05 m, k_g 0.05 /s; a track point is under the
+  pin a / (4 r) of the time). Checked: the end contact coverage is half the disk's steady state
+  k_g / (k_g + duty phi v / s_r) (1e-3, the pin's is 0); the peak of F/W at least 1.5 x the start and the end;
+  the end steady (last 10 % within 2 %).
 - fall (the same case, coverage 0, growth_rate 0.5 /s): bare start, a film that grows faster than sliding removes it.
   Checked: F/W at s = 0 is the bare law's; the coverage only rises, F/W within [end, start] (2 %); the end coverage is the steady state
   k_g / (k_g + phi v / s_r) (1e-3) and F/W there is the law's times T(f(theta*)) / T(f_base) (1e-3); end/start <= 0.7.
@@ -30,6 +35,7 @@ LAW = os.path.join(SOURCE_DIR, "inputs", "state_law_steel_mild.json")
 P = 20.0 / (math.pi * 1.5e-3 ** 2)
 SPEED, S_R, F_FILM, F_BASE, ALPHA = 0.5, 0.05, 0.1, 0.8921, 12.0
 GROWTH = 0.5
+PEAK_S_R, DISK_S_R, DISK_GROWTH, DUTY = 0.002, 0.05, 0.05, 1.5e-3 / (4 * 0.02)
 
 
 def tabor(f):
@@ -128,6 +134,31 @@ def main():
         fail(f"fall: end/start {mu[-1] / mu[0]:.3g} > 0.7")
     print(f"ok: fall: F/W {mu[0]:.6g} -> {mu[-1]:.6g} ({mu[-1] / mu[0]:.3g} x), end coverage "
           f"{r[-1]['film_coverage']:.6g} (steady state {steady:.6g})")
+    peak_case = os.path.join(a.workdir, "peak.toml")
+    with open(CASE) as f:
+        case = f.read()
+    case = case.replace("removal_distance = 0.05 ", f"removal_distance = {PEAK_S_R} ")
+    case = case.replace("growth_rate = 0.0 ", f"counterface_coverage = 0.0\ncounterface_removal_distance = {DISK_S_R}\n"
+                        f"counterface_growth_rate = {DISK_GROWTH}\ngrowth_rate = 0.0 ")
+    case = case.replace('law = "inputs/', f'law = "{SOURCE_DIR}/inputs/')
+    with open(peak_case, "w") as f:
+        f.write(case)
+    _, r = run(a.runin, peak_case, os.path.join(a.workdir, "peak"))
+    mu = [x["mu"] for x in r]
+    disk = DISK_GROWTH / (DISK_GROWTH + DUTY * phi * SPEED / DISK_S_R)
+    if abs(r[-1]["film_coverage"] - 0.5 * disk) > 1e-3:
+        fail(f"peak: end contact coverage {r[-1]['film_coverage']:.6g} against half the disk's steady state "
+             f"{0.5 * disk:.6g}")
+    top = max(mu)
+    at = r[mu.index(top)]["sliding_distance_m"]
+    s = [x["sliding_distance_m"] for x in r]
+    tail = [m for m, d in zip(mu, s) if d >= 0.9 * s[-1]]
+    if not (top >= 1.5 * mu[0] and top >= 1.5 * mu[-1]) or max(tail) - min(tail) > 0.02 * tail[-1]:
+        fail(f"peak: F/W {mu[0]:.4g}, peak {top:.4g} at s = {at:.3g} m, end {mu[-1]:.4g} (last 10 % "
+             f"{min(tail):.4g} .. {max(tail):.4g}): not a peak then a steady fall")
+    print(f"ok: peak: F/W {mu[0]:.6g}, peak {top:.6g} at s = {at:.4g} m, end {mu[-1]:.6g} (peak / end "
+          f"{top / mu[-1]:.3g} x); end contact coverage {r[-1]['film_coverage']:.6g} (half the disk's steady state "
+          f"{disk:.6g}, under the pin {DUTY:.6g} of the time)")
 
 
 if __name__ == "__main__":

@@ -133,3 +133,20 @@ TEST(NodeFilm, ALawWithoutContactFractionIsRefused) {
     EXPECT_NE(std::string(e.what()).find("contact_fraction"), std::string::npos) << e.what();
   }
 }
+
+TEST(NodeFilm, ACounterfaceFilmHasItsOwnKineticsAndContactsShearAtTheMeanCoverage) {
+  FilmSettings s = film(1.0, 0.02, 0.0);
+  s.counterface = runin::continuum::CounterfaceFilm{0.0, 0.5, 2.0};
+  NodeFilm f(s, 1);
+  EXPECT_EQ(f.contact_coverage(0), 0.5);
+  EXPECT_NEAR(f.friction_factor(0), tabor(0.5 * 0.1 + 0.5 * 0.8921, 12.0) / tabor(0.8921, 12.0), 1e-14);
+  const double phi = 0.05, duty = 0.02, ds = 0.3, dt = 0.6;
+  f.advance({phi}, ds, dt, duty);
+  EXPECT_NEAR(f.coverage()[0], std::exp(-phi * ds / 0.02), 1e-14);
+  // the counter body's summits slip phi duty ds and regrow over dt: the exact solution from 0
+  const double r = phi * duty * ds / 0.5, g = 2.0 * dt, steady = g / (r + g);
+  EXPECT_NEAR(f.counterface_coverage()[0], steady * -std::expm1(-(r + g)), 1e-14);
+  EXPECT_NEAR(f.contact_coverage(0), 0.5 * (f.coverage()[0] + f.counterface_coverage()[0]), 1e-15);
+  s.counterface->growth_rate = -1.0;
+  EXPECT_THROW(s.validate(), std::invalid_argument);
+}
