@@ -574,7 +574,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   if (reader.has("sweep")) read_pin_sweep(reader, c, state_law);
   read_wear_steps(reader, c, state_law);
   c.wear_steps.stop_times = c.vtk_times;
-  c.film = read_film(reader, *c.friction);
+  if (auto film = read_film(reader, *c.friction)) c.friction->state_law()->film = std::move(film);
   return c;
 }
 

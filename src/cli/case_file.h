@@ -62,7 +62,6 @@ struct PinOnDiskCase {
   std::string friction_model;       // [friction] model
   // run.wear_steps = "adaptive" (state law, speed drive) with run.tolerance; default: one per output interval
   continuum::WearSteps wear_steps;
-  std::optional<continuum::FilmSettings> film;  // [film] (state law only)
 };
 
 // The case with its static coefficient replaced by `mu0` (see friction_with_static_coefficient), and

@@ -139,7 +139,7 @@ const char *kHalfColumns[] = {"friction_torque_N_m", "normal_force_N", "mu", "ro
 // State law (doc/state_law_continuum.md): per half, after the per-half columns.
 const char *kStateLawColumns[] = {"mu_eff", "h_mean_m", "h_max_m", "counterface_volume_m3"};
 
-std::string columns(int halves, bool state_law = false) {
+std::string columns(int halves, bool state_law = false, bool film = false) {
   std::string text = kColumns;
   if (halves == 2)
     for (const char *half : {"lower_", "upper_"})
@@ -149,14 +149,18 @@ std::string columns(int halves, bool state_law = false) {
     for (int h = 0; h < halves; ++h)
       for (const char *name : kStateLawColumns) text += std::string(",") + (h ? "upper_" : "lower_") + name;
   }
+  if (film)
+    for (int h = 0; h < halves; ++h) text += std::string(",") + (h ? "upper_" : "lower_") + "film_coverage";
   return text;
 }
 
-std::string state_law_row(const JournalBearingSample &s) {
+std::string state_law_row(const JournalBearingSample &s, bool film) {
   std::string text = fmt::format(",{:.12g}", s.mu_eff);
   for (int h = 0; h < s.halves; ++h)
     text += fmt::format(",{:.12g},{:.12g},{:.12g},{:.12g}", s.half[h].mu_eff, s.half[h].h_mean, s.half[h].h_max,
                         s.half[h].counterface_volume);
+  if (film)
+    for (int h = 0; h < s.halves; ++h) text += fmt::format(",{:.12g}", s.half[h].film_coverage);
   return text;
 }
 
@@ -271,8 +275,9 @@ std::vector<std::string> write_curves(StagedOutput &out, const Options &o, const
                                       const Computed &r, const PlotRunner &plot) {
   const int halves = c.parameters.halves;
   const bool law = c.friction->state_law() != nullptr;
-  std::string text = columns(halves, law) + "\n";
-  for (const auto &s : r.main.samples) text += row(s) + (law ? state_law_row(s) : std::string()) + "\n";
+  const bool film = law && c.friction->state_law()->film;
+  std::string text = columns(halves, law, film) + "\n";
+  for (const auto &s : r.main.samples) text += row(s) + (law ? state_law_row(s, film) : std::string()) + "\n";
   out.write("journal_bearing.csv", text);
   out.write("journal_bearing_summary.csv",
             std::string(kRunSummaryHeader) + "\n" + run_summary_row(key_numbers(r.main.summary)) + "\n");
@@ -396,6 +401,12 @@ void print_state_law(const JournalBearingCase &c, const Curve &main, std::vector
     fmt::print("  {} h         mean {:.4g} m, max {:.4g} m; shaft worn volume under it {:.6g} mm^3 "
                "(counterface_wear_rate)\n",
                h ? "upper" : "lower", last.half[h].h_mean, last.half[h].h_max, 1e9 * last.half[h].counterface_volume);
+  if (const auto &film = law->film)
+    for (int h = 0; h < p.halves; ++h)
+      fmt::print("  {} film    coverage {:.4g} -> {:.4g} (load-weighted over the bore), f {:.4g} covered / {:.4g} "
+                 "bare, s_r {:.4g} m, k_g {:.4g} 1/s\n",
+                 h ? "upper" : "lower", first.half[h].film_coverage, last.half[h].film_coverage, film->f_film,
+                 film->f_base, film->removal_distance, film->growth_rate);
   fmt::print("  law lookups       {}\n", continuum::describe(*r.range_use, *law->law));
   if (auto w = continuum::out_of_range_warning(*r.range_use, *law->law, law->policy); !w.empty())
     warnings.push_back(std::move(w));

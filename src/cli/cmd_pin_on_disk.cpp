@@ -185,7 +185,6 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
   std::optional<continuum::PinStateLaw> pin;
   try {
     pin.emplace(state_law_settings(c), *law);
-    if (c.film) pin->set_film(*c.film);
   } catch (const std::invalid_argument &e) {
     if (c.contact->flat) throw;
     throw std::runtime_error(std::string(e.what()) + " (raise contact.grid_radius)");
@@ -374,7 +373,7 @@ std::pair<std::string, std::string> sweep_csv_text(const std::vector<SweepRun> &
 // The CSV files and the plots, staged; returns their names in order.
 std::vector<std::string> write_curves(StagedOutput &out, const PinOnDiskCase &c, const Curve &curve,
                                       const std::vector<SweepRun> &sweep, bool no_plot, const PlotRunner &plot) {
-  out.write("pin_on_disk.csv", csv_text(curve.rows, c.friction->state_law() != nullptr, c.film.has_value()));
+  out.write("pin_on_disk.csv", csv_text(curve.rows, c.friction->state_law() != nullptr, c.friction->state_law() && c.friction->state_law()->film));
   out.write("pin_on_disk_summary.csv", summary_csv_text(c, curve));
   std::vector<std::string> written = {"pin_on_disk.csv", "pin_on_disk_summary.csv"};
   if (!sweep.empty()) {
@@ -426,12 +425,12 @@ std::string print_state_law(const PinOnDiskCase &c, const Curve &curve) {
              law->mu_static ? "friction.mu_static" : "the law's peak over h at the initial pressures");
   fmt::print("  pin wear          h mean {:.4g} m, max {:.4g} m, volume {:.6g} m^3 (law wear_rate), {} wear steps\n",
              last.h_mean, last.h_max, last.wear_volume, curve.wear_steps);
-  if (c.film) {
+  if (const auto &film = law->film) {
     fmt::print("  film              contact coverage {:.4g} -> {:.4g} (load-weighted), f {:.4g} covered / {:.4g} bare; "
                "pin s_r {:.4g} m, k_g {:.4g} 1/s\n",
-               first.film_coverage, last.film_coverage, c.film->f_film, c.film->f_base, c.film->removal_distance,
-               c.film->growth_rate);
-    if (const auto &cf = c.film->counterface)
+               first.film_coverage, last.film_coverage, film->f_film, film->f_base, film->removal_distance,
+               film->growth_rate);
+    if (const auto &cf = film->counterface)
       fmt::print("                    disk film s_r {:.4g} m, k_g {:.4g} 1/s, under the pin {:.4g} of the time; a "
                  "contact shears at the mean coverage of the two\n",
                  cf->removal_distance, cf->growth_rate, curve.counterface_duty);

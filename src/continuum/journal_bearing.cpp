@@ -125,6 +125,8 @@ class BearingStateLaw final : public SlowSystem<JournalBearingSample> {
     const auto area = node_areas();
     for (std::size_t h = 0; h < surfaces_.size(); ++h) {
       laws_.emplace_back(held->law, held->policy, area.size());
+      if (held->film) laws_.back().set_film(*held->film);  // the bore's film (the case refuses a shaft film)
+      time_at_update_.push_back(0.0);
       mu_stat.push_back(held->mu_static ? *held->mu_static : laws_[h].peak_mu(surfaces_[h].contact.pressure, area));
       mu_kin.push_back(laws_[h].mu_effective(surfaces_[h].contact.pressure, area));
       counterface_volume_.push_back(0.0);
@@ -139,17 +141,20 @@ class BearingStateLaw final : public SlowSystem<JournalBearingSample> {
     if (!(s.distance > surfaces_[0].distance_at_update)) return false;
     std::string message;
     ++report_.wear_updates;
-    if (!advance_to(s.distance, message)) throw SlowStepError(SplitStatus::SlowFailure, "journal bearing: " + message);
+    if (!advance_to(s.distance, s.t, message)) throw SlowStepError(SplitStatus::SlowFailure, "journal bearing: " + message);
     return true;
   }
-  // Advances every half to the sliding distance `distance`: node states and bore by the law, re-solve, mu_eff.
-  bool advance_to(double distance, std::string &message) {
+  // Advances every half to the sliding distance `distance` at time t: node states (and film) and bore by the law,
+  // re-solve, mu_eff.
+  bool advance_to(double distance, double t, std::string &message) {
     const auto area = node_areas();
     for (std::size_t h = 0; h < surfaces_.size(); ++h) {
       Surface &surface = surfaces_[h];
       const double ds = distance - surface.distance_at_update;
       if (!(ds > 0.0)) continue;
-      const auto inc = laws_[h].advance(surface.contact.pressure, ds);
+      const double dt = std::max(t - time_at_update_[h], 0.0);
+      time_at_update_[h] = t;
+      const auto inc = laws_[h].advance(surface.contact.pressure, ds, dt);
       for (std::size_t i = 0; i < surface.wear.size(); ++i) {
         surface.wear[i] += inc.body[i];
         surface.committed_volume += inc.body[i] * area[i];
@@ -183,6 +188,7 @@ class BearingStateLaw final : public SlowSystem<JournalBearingSample> {
         }
       }
       half.h_mean = loaded_nodes ? half.h_mean / loaded_nodes : 0.0;
+      if (const NodeFilm *film = laws_[h].film()) half.film_coverage = film->mean_coverage(pressure);
       s.wear_volume += half.wear_volume;
       s.mu_eff += mu_kin[h] * surfaces_[h].normal_force;
       n += surfaces_[h].normal_force;
@@ -232,6 +238,7 @@ class BearingStateLaw final : public SlowSystem<JournalBearingSample> {
   double wear_fraction_, fixed_wear_step_;
   std::vector<NodeStateLaw> laws_;
   std::vector<double> counterface_volume_;
+  std::vector<double> time_at_update_;  // s, per half: when its film last advanced
 };
 
 // y = (theta, w, s, R_0[, R_1]); R_h is half h's friction-law state (feedback roughness), constant
@@ -327,7 +334,7 @@ struct JournalBearingHooks : StickSlipHooksBase {
     ++report.wear_updates;
     if (law) {
       law->root_changed = true;
-      return law->advance_to(s.y[2], message);
+      return law->advance_to(s.y[2], s.t, message);
     }
     next_wear = s.y[2] + wear_step;
     for (std::size_t h = 0; h < halves(); ++h) {

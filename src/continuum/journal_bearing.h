@@ -74,6 +74,7 @@ struct JournalBearingHalfSample {
   // state law only: mu_eff of this half (after the update at this sample), mean (over loaded nodes) and largest
   // worn depth h, the shaft's worn volume under this half (counterface_wear_rate)
   double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0, counterface_volume = 0.0;
+  double film_coverage = 0.0;  // [film]: the bore's coverage, load-weighted over its nodes
 };
 
 // Totals over the bearing halves unless noted.

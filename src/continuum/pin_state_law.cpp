@@ -45,6 +45,7 @@ PinStateLaw::PinStateLaw(const PinStateLawSettings &settings, StateLawFriction &
     if (pressure()[i] > 0.0 && (smallest_node_area_ == 0.0 || area_[i] < smallest_node_area_))
       smallest_node_area_ = area_[i];
   nodes_ = NodeStateLaw(held.law, held.policy, n);
+  if (held.film) nodes_.set_film(*held.film, counterface_duty());
 }
 
 void PinStateLaw::start() {

@@ -31,15 +31,15 @@ struct PinStateLawSettings {
   double slid_estimate = 0.0;         // m, the run's sliding distance for the suggested grid (0: unknown)
 };
 
-// The node states, the pin's worn face and the disk's track, and the held coefficients they set.
+// The node states, the pin's worn face and the disk's track, and the held coefficients they set; with held.film a
+// surface film on the nodes (NodeStateLaw::set_film; the disk's film exposed counterface_duty() of the time).
 class PinStateLaw final : public SlowSystem<PinOnDiskSample> {
  public:
   // Throws std::invalid_argument when the tip's grid cannot hold the contact (raise the grid radius).
   PinStateLaw(const PinStateLawSettings &settings, StateLawFriction &held);
 
-  // A surface film on the pin's nodes (NodeStateLaw::set_film); before start(). A disk film's duty: a point of the
-  // track is under the pin for the footprint's share of the track's area, pi a^2 / (2 a 2 pi r) = a / (4 r).
-  void set_film(const FilmSettings &settings) { nodes_.set_film(settings, counterface_duty()); }
+  // A disk film's duty (held.film): a point of the track is under the pin for the footprint's share of the track's
+  // area, pi a^2 / (2 a 2 pi r) = a / (4 r).
   double counterface_duty() const { return std::min(1.0, contact_radius() / (4.0 * s_.track_radius)); }
   void start() override;                         // held static (mu_static or the law's peak) and kinetic mu_eff
   bool step(const PinOnDiskSample &s) override;  // the distance slid since the last step

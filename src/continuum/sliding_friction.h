@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 
+#include "continuum/node_film.h"
 #include "coupling/friction_law.h"
 #include "coupling/state_law.h"
 #include "tribo/feedback.h"
@@ -33,6 +34,7 @@ struct StateLawFriction {
   std::optional<double> mu_static;  // friction.mu_static; absent: the law's peak at the initial pressures
   double held_static = 0.0;         // set by the element before the run
   double held_kinetic = 0.0;        // mu_eff, set by the element after each output interval
+  std::optional<FilmSettings> film; // [film]: a surface film on the nodes (node_film.h)
 };
 
 class SlidingFriction {

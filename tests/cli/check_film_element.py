@@ -16,6 +16,10 @@ steel law with [film], two of Blau's run-in shapes by the film's inputs alone.
   Checked: F/W at s = 0 is the bare law's; the coverage only rises, F/W within [end, start] (2 %); the end coverage is the steady state
   k_g / (k_g + phi v / s_r) (1e-3) and F/W there is the law's times T(f(theta*)) / T(f_base) (1e-3); end/start <= 0.7.
 
+- journal bearing (inputs/journal_bearing_state_law.toml, 4 s, with the rise film on the bore, s_r = 20 um): the
+  first mu_eff is the film-free run's times T(f_film) / T(f_base) (1e-9: the same node pressures at t = 0), the
+  coverage of both halves only falls, to below 1e-3, and the end mu_eff is the film-free run's within 1 %.
+
   check_film_element.py --runin RUNIN --workdir DIR
 """
 import argparse
@@ -31,6 +35,14 @@ from runin_common import SOURCE_DIR, fail, fresh_dir, run_or_fail  # noqa: E402
 from state_law import StateLaw  # noqa: E402
 
 CASE = os.path.join(SOURCE_DIR, "inputs", "pin_on_disk_film.toml")
+JB_CASE = os.path.join(SOURCE_DIR, "inputs", "journal_bearing_state_law.toml")
+JB_FILM = """
+[film]
+coverage = 1.0
+interface = "boundary"
+removal_distance = 2e-5
+growth_rate = 0.0
+"""
 LAW = os.path.join(SOURCE_DIR, "inputs", "state_law_steel_mild.json")
 P = 20.0 / (math.pi * 1.5e-3 ** 2)
 SPEED, S_R, F_FILM, F_BASE, ALPHA = 0.5, 0.05, 0.1, 0.8921, 12.0
@@ -159,6 +171,31 @@ def main():
     print(f"ok: peak: F/W {mu[0]:.6g}, peak {top:.6g} at s = {at:.4g} m, end {mu[-1]:.6g} (peak / end "
           f"{top / mu[-1]:.3g} x); end contact coverage {r[-1]['film_coverage']:.6g} (half the disk's steady state "
           f"{disk:.6g}, under the pin {DUTY:.6g} of the time)")
+
+    journal_bearing(a)
+
+
+def journal_bearing(a):
+    def jb(case, out):
+        run_or_fail([a.runin, "journal-bearing", case, "--output-dir", out, "--no-plot"], cwd=SOURCE_DIR)
+        return rows(os.path.join(out, "journal_bearing.csv"))
+    bare = jb(JB_CASE, os.path.join(a.workdir, "jb_bare"))
+    with open(JB_CASE) as f:
+        case = f.read().replace('law = "inputs/', f'law = "{SOURCE_DIR}/inputs/') + JB_FILM
+    film_case = os.path.join(a.workdir, "jb_film.toml")
+    with open(film_case, "w") as f:
+        f.write(case)
+    r = jb(film_case, os.path.join(a.workdir, "jb_film"))
+    close(r[0]["mu_eff"], bare[0]["mu_eff"] * factor(1.0), 1e-9, "journal bearing: first mu_eff against the bare run's x "
+          "T(f_film) / T(f_base)")
+    for half in ("lower", "upper"):
+        theta = [x[f"{half}_film_coverage"] for x in r]
+        if any(b > a_ + 1e-12 for a_, b in zip(theta, theta[1:])) or theta[-1] > 1e-3:
+            fail(f"journal bearing: the {half} half's coverage {theta[0]:.4g} -> {theta[-1]:.4g} does not fall below 1e-3")
+    close(r[-1]["mu_eff"], bare[-1]["mu_eff"], 0.01, "journal bearing: end mu_eff against the bare run")
+    print(f"ok: journal bearing: mu_eff {r[0]['mu_eff']:.6g} -> {r[-1]['mu_eff']:.6g} (bare {bare[0]['mu_eff']:.6g} -> "
+          f"{bare[-1]['mu_eff']:.6g}); coverage lower {r[-1]['lower_film_coverage']:.3g}, upper "
+          f"{r[-1]['upper_film_coverage']:.3g} at the end")
 
 
 if __name__ == "__main__":
