@@ -85,8 +85,9 @@ const char *kColumns =
     "contact_width_m,peak_pressure_Pa,mean_pressure_Pa,roughness";
 
 std::string csv_text(const std::vector<PistonRingSample> &samples, const std::vector<WearRow> &wear,
-                     bool state_law = false) {
-  std::string text = std::string(kColumns) + (state_law ? ",mu_eff,h_mean_m,h_max_m\n" : "\n");
+                     bool state_law = false, bool film = false) {
+  std::string text = std::string(kColumns) + (state_law ? ",mu_eff,h_mean_m,h_max_m" : "") +
+                     (film ? ",film_coverage\n" : "\n");
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const auto &s = samples[i];
     const auto &w = wear[i];
@@ -99,6 +100,10 @@ std::string csv_text(const std::vector<PistonRingSample> &samples, const std::ve
     if (state_law) {
       text.pop_back();
       text += fmt::format(",{:.12g},{:.12g},{:.12g}\n", w.mu_eff, w.h_mean, w.h_max);
+    }
+    if (film) {
+      text.pop_back();
+      text += fmt::format(",{:.12g}\n", w.film_coverage);
     }
   }
   return text;
@@ -403,7 +408,7 @@ Computed compute(const PistonRingCase &c) {
   for (const auto &ring : c.rings) r.wear.emplace_back(ring.wear_settings, *c.archard);
   for (std::size_t k = 1; k < r.wear.size(); ++k) r.wear[k].share_liner(r.wear.front());
   if (law) {
-    for (auto &w : r.wear) w.attach_state_law(law->law, law->policy);
+    for (auto &w : r.wear) w.attach_state_law(law->law, law->policy, law->film);
     r.coupled = run_pack_state_law(c, r.wear);
   }
   r.main = law ? r.coupled->run : run_pack(c, *c.friction);
@@ -471,6 +476,7 @@ std::string sweep_csv_text(const std::vector<SweepRow> &sweep) {
 // The CSV files, staged; returns their names in order.
 std::vector<std::string> write_csv(StagedOutput &out, const PistonRingCase &c, const Computed &r) {
   const bool pack = c.rings.size() > 1, law = c.friction->state_law() != nullptr;
+  const bool film = law && c.friction->state_law()->film;
   std::vector<std::string> written;
   const auto write = [&](const std::string &name, const std::string &text) {
     out.write(name, text);
@@ -479,9 +485,9 @@ std::vector<std::string> write_csv(StagedOutput &out, const PistonRingCase &c, c
   if (pack) {
     write("piston_ring.csv", pack_csv_text(c, r.main, r.passes));
     for (std::size_t k = 0; k < c.rings.size(); ++k)
-      write("piston_ring_" + c.rings[k].name + ".csv", csv_text(r.main.grid[k], r.passes[k].rows, law));
+      write("piston_ring_" + c.rings[k].name + ".csv", csv_text(r.main.grid[k], r.passes[k].rows, law, film));
   } else {
-    write("piston_ring.csv", csv_text(r.main.grid.front(), r.passes.front().rows, law));
+    write("piston_ring.csv", csv_text(r.main.grid.front(), r.passes.front().rows, law, film));
   }
   write("piston_ring_summary.csv", summary_csv_text(r));
   write("piston_ring_rings.csv", rings_csv_text(c));
@@ -617,6 +623,12 @@ void print_state_law(const PistonRingCase &c, const Computed &r, std::vector<std
                law->mu_static ? "friction.mu_static" : "the law's peak at the initial pressures", rows.back().h_mean,
                rows.back().h_max);
   }
+  if (const auto &film = law->film)
+    for (std::size_t k = 0; k < c.rings.size(); ++k)
+      fmt::print("  ring {} film       coverage {:.4g} -> {:.4g} (load-weighted over the face), f {:.4g} covered / "
+                 "{:.4g} bare, s_r {:.4g} m, k_g {:.4g} 1/s\n",
+                 c.rings[k].name, r.passes[k].rows.front().film_coverage, r.passes[k].rows.back().film_coverage,
+                 film->f_film, film->f_base, film->removal_distance, film->growth_rate);
   fmt::print("  law lookups       {}\n", continuum::describe(r.coupled->use, *law->law));
   if (auto w = continuum::out_of_range_warning(r.coupled->use, *law->law, law->policy); !w.empty())
     warnings.push_back(std::move(w));

@@ -183,7 +183,7 @@ RingStateLawRun simulate_state_law(const PistonRingSystem &system, const PistonR
   const auto observer = [&](const PistonRingSample &s) {
     const auto state = ring.state(s);
     RingWearRow row{state.ring_volume, state.liner_volume, state.contact.width, state.contact.peak, state.contact.mean,
-                    state.mu_eff, state.h_mean, state.h_max};
+                    state.mu_eff, state.h_mean, state.h_max, state.film_coverage};
     if (pass.rows.empty()) pass.initial_peak = state.contact.peak, pass.initial_pressure = state.contact.pressure;
     pass.final_pressure = state.contact.pressure;
     pass.rows.push_back(row);

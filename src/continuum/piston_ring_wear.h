@@ -20,6 +20,7 @@ namespace runin::continuum {
 struct RingWearRow {  // one ring at one sample
   double ring = 0.0, liner = 0.0, width = 0.0, peak = 0.0, mean = 0.0;  // m^3, m^3, m, Pa, Pa
   double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0;                       // state law only
+  double film_coverage = 0.0;                                           // [film] only
 };
 
 // Profiles and pressures at one output time, for the VTK frames.

@@ -78,12 +78,14 @@ double RingLinerWear::step() const {
   return s_.step_safety * wear_.stable_slip_step(stiffness_);
 }
 
-void RingLinerWear::attach_state_law(std::shared_ptr<const coupling::StateLaw> law, coupling::OutOfRange policy) {
+void RingLinerWear::attach_state_law(std::shared_ptr<const coupling::StateLaw> law, coupling::OutOfRange policy,
+                                     const std::optional<FilmSettings> &film) {
   const auto &w = law->table(coupling::StateField::WearRate).mean;
   law_factor_ = 0.0;
   for (std::size_t i = 0; i < w.size(); ++i)
     for (double x : w[i]) law_factor_ = std::max(law_factor_, x / law->pressure()[i]);
   law_.emplace(std::move(law), policy, static_cast<std::size_t>(s_.ring_cells));
+  if (film) law_->set_film(*film);
 }
 
 double RingLinerWear::mu_effective(double x_ring, double load) {
@@ -184,12 +186,12 @@ std::vector<double> RingLinerWear::liner_pressure(double x_ring, double load) co
   return p;
 }
 
-void RingLinerWear::update(double x_ring, double load, double ds) {
+void RingLinerWear::update(double x_ring, double load, double ds, double dt) {
   const ContactPressure contact = pressure(x_ring, load);
   double ring_share = s_.ring_share, liner_share = 1.0 - s_.ring_share;
   std::vector<double> depth(contact.pressure.size()), liner_depth(contact.pressure.size());
   if (law_) {  // ring face by the law's wear rate, liner by its counterface rate
-    auto inc = law_->advance(contact.pressure, ds);
+    auto inc = law_->advance(contact.pressure, ds, dt);
     depth = std::move(inc.body);
     liner_depth = std::move(inc.counterface);
     ring_share = liner_share = 1.0;
@@ -226,7 +228,7 @@ void RingLinerWear::update(double x_ring, double load, double ds) {
   }
 }
 
-bool RingLinerWear::slide(double x_from, double x_to, double load_from, double load_to) {
+bool RingLinerWear::slide(double x_from, double x_to, double load_from, double load_to, double dt) {
   if (!ok()) return false;
   const double distance = std::abs(x_to - x_from);
   if (!(distance > 0.0)) return true;
@@ -239,7 +241,7 @@ bool RingLinerWear::slide(double x_from, double x_to, double load_from, double l
   const double ds = distance / static_cast<double>(n);
   for (long k = 0; k < n; ++k) {
     const double f = (k + 0.5) / static_cast<double>(n);  // midpoint of the sub-step
-    update(x_from + f * (x_to - x_from), load_from + f * (load_to - load_from), ds);
+    update(x_from + f * (x_to - x_from), load_from + f * (load_to - load_from), ds, dt / static_cast<double>(n));
     if (!ok()) return false;
   }
   return true;

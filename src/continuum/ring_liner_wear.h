@@ -81,7 +81,9 @@ class RingLinerWear {
   // an update wears the face by the law's dh_i = wear_rate(p_i, h_i) ds (the Archard k/H and ring_share are not
   // used) and the liner under cell i by the counterface's dc_i (counterface_wear_rate), spread over the
   // overlapped liner cells as the Archard share is. The step is safety * 2 / (k_c max w/p over the law's grid).
-  void attach_state_law(std::shared_ptr<const coupling::StateLaw> law, coupling::OutOfRange policy);
+  // With `film`, the ring face's nodes carry it (NodeStateLaw::set_film).
+  void attach_state_law(std::shared_ptr<const coupling::StateLaw> law, coupling::OutOfRange policy,
+                        const std::optional<FilmSettings> &film = std::nullopt);
   NodeStateLaw *state_law() { return law_ ? &*law_ : nullptr; }
   const NodeStateLaw *state_law() const { return law_ ? &*law_ : nullptr; }
   // mu_eff = sum mu(p_i, h_i) p_i / sum p_i of the ring at x_ring under `load` (cells of equal area).
@@ -97,7 +99,8 @@ class RingLinerWear {
   // Slides the ring from x_from to x_to (one direction); the load varies linearly along it.
   // Returns false (and does nothing more, now or later) once a wear depth passes its limit; see
   // status() and message(). Throws std::out_of_range if the ring leaves the liner grid.
-  bool slide(double x_from, double x_to, double load_from, double load_to);
+  // dt: the time the slide takes (a film on the face grows over it; 0 without one).
+  bool slide(double x_from, double x_to, double load_from, double load_to, double dt = 0.0);
   RingLinerWearStatus status() const { return status_; }
   bool ok() const { return status_ == RingLinerWearStatus::Ok; }
   const std::string &message() const { return message_; }  // what crossed which limit; empty while ok
@@ -114,7 +117,7 @@ class RingLinerWear {
   std::vector<double> gaps(double x_ring) const;
   template <typename Visit>
   void for_each_overlap(double x_ring, Visit visit) const;  // visit(ring cell, liner cell, overlap length)
-  void update(double x_ring, double load, double ds);
+  void update(double x_ring, double load, double ds, double dt);
 
   RingLinerWearSettings s_;
   tribo::ArchardWear wear_;

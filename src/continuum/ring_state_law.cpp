@@ -18,7 +18,8 @@ void RingStateLaw::start() {
 bool RingStateLaw::step(const PistonRingSample &s) {
   bool changed = false;
   if (prev_ && s.distance > prev_->distance) {
-    if (!wear_.slide(prev_->ring_position, s.ring_position, prev_->normal_load, s.normal_load)) {
+    if (!wear_.slide(prev_->ring_position, s.ring_position, prev_->normal_load, s.normal_load,
+                     std::max(s.t - prev_->t, 0.0))) {
       char at[32];
       std::snprintf(at, sizeof at, "%.6g", s.t);
       throw SlowStepError(SplitStatus::SlowFailure,
@@ -44,6 +45,7 @@ RingStateLaw::State RingStateLaw::state(const PistonRingSample &s) const {
     if (row.contact.pressure[i] > 0.0) row.h_mean += h[i], ++loaded;
   }
   row.h_mean = loaded ? row.h_mean / loaded : 0.0;
+  if (const NodeFilm *film = wear_.state_law()->film()) row.film_coverage = film->mean_coverage(row.contact.pressure);
   return row;
 }
 

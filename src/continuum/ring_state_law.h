@@ -29,6 +29,7 @@ class RingStateLaw final : public SlowSystem<PistonRingSample> {
     ContactPressure contact;                      // of the face at the sample
     double ring_volume = 0.0, liner_volume = 0.0;  // m^3
     double mu_eff = 0.0, h_mean = 0.0, h_max = 0.0;  // h_mean over the loaded cells
+    double film_coverage = 0.0;                      // [film]: the face's, load-weighted
   };
   State state(const PistonRingSample &s) const;
 
