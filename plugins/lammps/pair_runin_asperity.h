@@ -13,6 +13,7 @@ PairStyle(runin/asperity,PairRuninAsperity);
 #define LMP_PAIR_RUNIN_ASPERITY_H
 
 #include "pair.h"
+#include "pair_contacts.h"
 #include "runin_contact_sums.h"
 #include "runin_timestep_guard.h"
 #include "tribo/contact_model.h"
@@ -119,12 +120,7 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
     nworn_owned += first && owned;
     nworn_ghost += first && !owned;
   }
-  struct TouchingPair {
-    int i, j;
-    double *history;
-  };
-  std::vector<TouchingPair> touching;    // the touching pairs of one step (grows, never shrinks)
-  static constexpr int kPrefetchAhead = 8;    // contacts between a history's prefetch and its use
+  std::vector<runin_pair::TouchingPair> touching;    // the touching pairs of one step (grows, never shrinks)
   double *maxrad;            // per type
 
   class FixDummy *fix_dummy;
@@ -150,15 +146,10 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   static constexpr int NFLAGS = 4;    // WEAR, RESHAPE, SUMS, EVFLAG
   template <int... Index>
   static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
-  // The part of the two summits' drop that plastic flattening left (a reload's flattened_drop).
-  double flattened_drop(int i, int j) const;
-  // One contact's geometry from positions, velocities, radii, masses and the worn state (eval and single).
-  // Inlined into the force loop (out of line it cost a call and a 14-value struct through memory per contact).
-  [[gnu::always_inline]] inline runin::tribo::ContactGeometry contact_geometry(int i, int j, double overlap,
-                                                                               double rinv, const double *del,
-                                                                               double flat) const;
-  [[noreturn]] void stop_past_centre(int i, int j, double interference, double approach_per_step,
-                                     double push_per_step) const;
+  // The adaptor of the shared pass (pair_contacts.h): increments, tally.
+  struct LoopHost;
+  // The shared pass's view of this step (eval and single()).
+  runin_pair::Atoms<tagint> loop_atoms() const;
   runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);
   runin::tribo::ContactParameters read_coefficients_file(const std::string &file, const std::string &material_i,
                                                          const std::string &material_j);
