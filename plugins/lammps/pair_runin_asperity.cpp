@@ -43,8 +43,7 @@ using tribo::SubModelKind;
 
 PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
     Pair(lmp), history_size(tribo::TANGENTIAL_HISTORY_SIZE), dt(0.0), wear_on(true), reshape(true),
-    from_restart(false), sums_requested(false), body_groupbit(0), increment(nullptr), nmax_increment(0),
-    worn_owned(nullptr), worn_ghost(nullptr), nworn_owned(0), nworn_ghost(0), maxrad(nullptr), fix_history(nullptr),
+    from_restart(false), sums_requested(false), body_groupbit(0), maxrad(nullptr), fix_history(nullptr),
     fix_wear(nullptr)
 {
   single_enable = 1;
@@ -77,9 +76,6 @@ PairRuninAsperity::~PairRuninAsperity()
     delete[] maxrad;
   }
   delete[] svector;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  memory->destroy(worn_ghost);
 }
 
 void PairRuninAsperity::allocate()
@@ -454,12 +450,7 @@ void PairRuninAsperity::init_style()
   comm_gained = contact_settings.transfer_fraction > 0.0;
   comm_flattened = plastic_normal();
   comm_reverse = 1 + comm_gained + comm_flattened;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  memory->destroy(worn_ghost);
-  increment = nullptr;
-  worn_owned = worn_ghost = nullptr;
-  nmax_increment = nworn_owned = nworn_ghost = 0;
+  increments.release();
 
   // contact sums cost a few operations per contact: only when a compute can read them
   sums_requested = false;
@@ -513,21 +504,6 @@ std::array<PairRuninAsperity::EvalFunction, sizeof...(Index)> PairRuninAsperity:
                                     (Index >> 2) & 1, (Index >> 1) & 1, Index & 1>...}};
 }
 
-void PairRuninAsperity::grow_increments()
-{
-  if (atom->nmax <= nmax_increment) return;
-  nmax_increment = atom->nmax;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  memory->destroy(worn_ghost);
-  memory->create(increment, NINCREMENT * nmax_increment, "pair:increment");
-  std::fill(increment, increment + NINCREMENT * nmax_increment, 0.0);
-  // one slot per atom, plus the one add_wear writes past the end
-  memory->create(worn_owned, nmax_increment + 1, "pair:worn_owned");
-  memory->create(worn_ghost, nmax_increment + 1, "pair:worn_ghost");
-  nworn_owned = nworn_ghost = 0;
-}
-
 void PairRuninAsperity::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
@@ -548,7 +524,7 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     for (int k = 0; k < nall; k++)
       reach_drop[NCOL * k] = state[k][FixRuninWearState::WEAR_DEPTH] - state[k][FixRuninWearState::RISE];
   }
-  if (track_wear) grow_increments();
+  if (track_wear) increments.reserve(atom->nmax);
 
   constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
   static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
@@ -575,35 +551,16 @@ void PairRuninAsperity::compute(int eflag, int vflag)
 
   if (track_wear) {
     if (force->newton_pair) runin_compat::reverse_comm(comm, this);
-    // listed owned atoms: add the increments to the state and refresh the geometry; then clear all listed
-    double **state = fix_wear->state();
-    const double *radius = atom->radius;
     // before the increments are applied (it reads them and the current drops); a pass of its own, since a test
-    // inside the loop below cost about 2 % of a plastic step without the rise
+    // inside the application's loop cost about 2 % of a plastic step without the rise
     if (rise_on) raise_free_surfaces();
-    for (int k = 0; k < nworn_owned; k++) {
-      const int i = worn_owned[k];
-      double *inc = &increment[NINCREMENT * i];
-      state[i][FixRuninWearState::VOLUME_LOST] += inc[INC_LOST];
-      state[i][FixRuninWearState::VOLUME_GAINED] += inc[INC_GAINED];
-      if (inc[INC_FLATTENED] > 0.0)
-        state[i][FixRuninWearState::VOLUME_FLATTENED] += FixRuninWearState::flattened_volume(
-            radius[i], state[i][FixRuninWearState::WEAR_DEPTH], inc[INC_FLATTENED]);
-      inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
-      fix_wear->refresh_geometry(i, radius[i]);
-      // a summit worn or flattened past its equator has left the truncated-sphere geometry
-      if (state[i][FixRuninWearState::WEAR_DEPTH] > radius[i])
-        error->one(FLERR, fmt::format("pair runin/asperity: at step {} the summit of atom {} has been worn or "
-                                      "flattened by {:.4g} m, more than its radius {:.4g} m (the asperity is used "
-                                      "up): load or wear coefficient too large",
-                                      update->ntimestep, atom->tag[i], state[i][FixRuninWearState::WEAR_DEPTH],
-                                      radius[i]));
-    }
-    for (int k = 0; k < nworn_ghost; k++) {
-      double *inc = &increment[NINCREMENT * worn_ghost[k]];
-      inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
-    }
-    nworn_owned = nworn_ghost = 0;
+    // listed owned atoms: the increments into the state, the geometry refreshed; a summit worn or flattened past
+    // its equator has left the truncated-sphere geometry
+    const int used_up = increments.apply(*fix_wear, atom->radius);
+    if (used_up >= 0)
+      error->one(FLERR, runin_pair::used_up_message(update->ntimestep, atom->tag[used_up],
+                                                    fix_wear->state()[used_up][FixRuninWearState::WEAR_DEPTH],
+                                                    atom->radius[used_up]));
   }
 }
 
@@ -621,9 +578,9 @@ void PairRuninAsperity::raise_free_surfaces()
   const int nlocal = atom->nlocal, ntypes1 = atom->ntypes + 1;
   // per type: flattened volume, summits, summits out of contact
   std::vector<double> local(3 * ntypes1, 0.0), total(3 * ntypes1, 0.0);
-  for (int k = 0; k < nworn_owned; k++) {
-    const int i = worn_owned[k];
-    const double depth = increment[NINCREMENT * i + INC_FLATTENED];
+  for (int k = 0; k < increments.nowned(); k++) {
+    const int i = increments.owned()[k];
+    const double depth = increments.of(i)[runin_pair::Increments::FLATTENED];
     if (depth > 0.0)
       local[type[i]] += FixRuninWearState::flattened_volume(radius[i], state[i][FixRuninWearState::WEAR_DEPTH], depth);
   }
@@ -668,8 +625,8 @@ struct PairRuninAsperity::LoopHost {
   static constexpr bool has_film = true;
   PairRuninAsperity &pair;
   int nlocal, newton_pair;
-  void add_wear(int i, double lost, double gained) { pair.add_wear(i, lost, gained, nlocal); }
-  void add_flattening(int i, double depth) { pair.add_flattening(i, depth, nlocal); }
+  void add_wear(int i, double lost, double gained) { pair.increments.add_wear(i, lost, gained, nlocal); }
+  void add_flattening(int i, double depth) { pair.increments.add_flattening(i, depth, nlocal); }
   void tally(int i, int j, double energy, const double *fpair, const double *del)
   {
     pair.ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
@@ -693,7 +650,7 @@ void PairRuninAsperity::eval(int eflag)
   step.dt = dt;
   step.advance = update->setupflag == 0;
   step.newton_pair = force->newton_pair;
-  step.increments = increment != nullptr;
+  step.increments = increments.reserved();
   step.body_groupbit = body_groupbit;
   // the wear state is one contiguous block (memory->grow), NCOLUMNS per atom: index it without the row pointers
   double **state_rows = RESHAPE ? fix_wear->state() : nullptr;
@@ -776,10 +733,10 @@ int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
     return m;
   }
   for (int k = 0; k < n; k++) {
-    const double *inc = &increment[NINCREMENT * (first + k)];
-    buf[m++] = inc[INC_LOST];
-    if (comm_gained) buf[m++] = inc[INC_GAINED];
-    if (comm_flattened) buf[m++] = inc[INC_FLATTENED];
+    const double *inc = increments.of(first + k);
+    buf[m++] = inc[runin_pair::Increments::LOST];
+    if (comm_gained) buf[m++] = inc[runin_pair::Increments::GAINED];
+    if (comm_flattened) buf[m++] = inc[runin_pair::Increments::FLATTENED];
   }
   return m;
 }
@@ -796,8 +753,8 @@ void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
     const double lost = buf[m++];
     const double gained = comm_gained ? buf[m++] : 0.0;
     const double flattened = comm_flattened ? buf[m++] : 0.0;
-    if (lost != 0.0 || gained != 0.0) add_wear(list[k], lost, gained, nlocal);
-    if (flattened != 0.0) add_flattening(list[k], flattened, nlocal);
+    if (lost != 0.0 || gained != 0.0) increments.add_wear(list[k], lost, gained, nlocal);
+    if (flattened != 0.0) increments.add_flattening(list[k], flattened, nlocal);
   }
 }
 
@@ -890,8 +847,7 @@ void PairRuninAsperity::reset_dt()
 
 double PairRuninAsperity::memory_usage()
 {
-  return static_cast<double>(nmax_increment) * (2.0 * sizeof(double) + 2.0 * sizeof(int)) +
-         static_cast<double>(touching.capacity()) * sizeof(runin_pair::TouchingPair);
+  return increments.memory_usage() + static_cast<double>(touching.capacity()) * sizeof(runin_pair::TouchingPair);
 }
 
 double PairRuninAsperity::atom2cut(int i)

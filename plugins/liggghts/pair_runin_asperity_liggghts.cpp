@@ -59,8 +59,8 @@ Fix *history_creator(LAMMPS *lmp, int narg, char **arg)
 
 PairRuninAsperityLiggghts::PairRuninAsperityLiggghts(LAMMPS *lmp) :
     Pair(lmp), history_size(tribo::TANGENTIAL_HISTORY_SIZE), dt(0.0), wear_on(true), reshape(true),
-    sums_requested(false), body_groupbit(0), computeflag(0), maxrad(nullptr), increment(nullptr),
-    nmax_increment(0), worn_owned(nullptr), nworn_owned(0), fix_history(nullptr), fix_wear(nullptr)
+    sums_requested(false), body_groupbit(0), computeflag(0), maxrad(nullptr), fix_history(nullptr),
+    fix_wear(nullptr)
 {
   single_enable = 1;
   // single(): normal force (fforce * del), then the tangential force on i, the contact radius and overlap
@@ -79,8 +79,6 @@ PairRuninAsperityLiggghts::~PairRuninAsperityLiggghts()
     delete[] maxrad;
   }
   delete[] svector;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
 }
 
 void PairRuninAsperityLiggghts::allocate()
@@ -327,11 +325,7 @@ void PairRuninAsperityLiggghts::init_style()
   MPI_Allreduce(local.data(), maxrad, atom->ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
   models.assign(coeffs.size(), std::nullopt);
 
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  increment = nullptr;
-  worn_owned = nullptr;
-  nmax_increment = nworn_owned = 0;
+  increments.release();
 
   sums_requested = false;
   for (int i = 0; i < modify->ncompute; i++)
@@ -377,8 +371,7 @@ void *PairRuninAsperityLiggghts::extract(const char *name, int &dim)
 
 double PairRuninAsperityLiggghts::memory_usage()
 {
-  return static_cast<double>(nmax_increment) * (3.0 * sizeof(double) + sizeof(int)) +
-         static_cast<double>(touching.capacity()) * sizeof(runin_pair::TouchingPair);
+  return increments.memory_usage() + static_cast<double>(touching.capacity()) * sizeof(runin_pair::TouchingPair);
 }
 
 template <int... Index>
@@ -388,18 +381,6 @@ std::array<PairRuninAsperityLiggghts::EvalFunction, sizeof...(Index)> PairRuninA
   constexpr int NFRICTION = std::tuple_size_v<tribo::FrictionModels>;
   return {{&PairRuninAsperityLiggghts::eval<(Index >> NFLAGS) / NFRICTION, (Index >> NFLAGS) % NFRICTION,
                                             (Index >> 3) & 1, (Index >> 2) & 1, (Index >> 1) & 1, Index & 1>...}};
-}
-
-void PairRuninAsperityLiggghts::grow_increments()
-{
-  if (atom->nmax <= nmax_increment) return;
-  nmax_increment = atom->nmax;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  memory->create(increment, NINCREMENT * nmax_increment, "pair:increment");
-  std::fill(increment, increment + NINCREMENT * nmax_increment, 0.0);
-  memory->create(worn_owned, nmax_increment + 1, "pair:worn_owned");
-  nworn_owned = 0;
 }
 
 void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
@@ -415,7 +396,7 @@ void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
   if (fix_wear && !advance) fix_wear->refresh_geometry_all();
   const bool worn_geometry = reshape && fix_wear;
   if (worn_geometry) fix_wear->forward_geometry(!advance);
-  if (track_wear) grow_increments();
+  if (track_wear) increments.reserve(atom->nmax);
 
   constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
   static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
@@ -427,27 +408,12 @@ void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
 
   if (track_wear) {
     // newton off: every contact of an owned atom was computed here, so its increments are complete
-    double **state = fix_wear->state();
-    const double *radius = atom->radius;
-    using W = FixRuninWearStateLiggghts;
-    for (int k = 0; k < nworn_owned; k++) {
-      const int i = worn_owned[k];
-      double *inc = &increment[NINCREMENT * i];
-      state[i][W::VOLUME_LOST] += inc[INC_LOST];
-      state[i][W::VOLUME_GAINED] += inc[INC_GAINED];
-      if (inc[INC_FLATTENED] > 0.0)
-        state[i][W::VOLUME_FLATTENED] +=
-            W::flattened_volume(radius[i], state[i][W::WEAR_DEPTH], inc[INC_FLATTENED]);
-      inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
-      fix_wear->refresh_geometry(i, radius[i]);
-      if (state[i][W::WEAR_DEPTH] > radius[i])
-        runin_liggghts::one(lmp, FLERR,
-                            fmt::format("pair runin/asperity: at step {} the summit of atom {} has been worn or "
-                                        "flattened by {:.4g} m, more than its radius {:.4g} m (the asperity is used "
-                                        "up): load or wear coefficient too large",
-                                        update->ntimestep, atom->tag[i], state[i][W::WEAR_DEPTH], radius[i]));
-    }
-    nworn_owned = 0;
+    const int used_up = increments.apply(*fix_wear, atom->radius);
+    if (used_up >= 0)
+      runin_liggghts::one(lmp, FLERR, runin_pair::used_up_message(
+                                          update->ntimestep, atom->tag[used_up],
+                                          fix_wear->state()[used_up][FixRuninWearStateLiggghts::WEAR_DEPTH],
+                                          atom->radius[used_up]));
   }
 }
 
@@ -456,8 +422,8 @@ struct PairRuninAsperityLiggghts::LoopHost {
   static constexpr bool has_film = false;    // friction junction/film is refused in settings()
   PairRuninAsperityLiggghts &pair;
   int nlocal;
-  void add_wear(int i, double lost, double gained) { pair.add_wear(i, lost, gained, nlocal); }
-  void add_flattening(int i, double depth) { pair.add_flattening(i, depth, nlocal); }
+  void add_wear(int i, double lost, double gained) { pair.increments.add_wear(i, lost, gained, nlocal); }
+  void add_flattening(int i, double depth) { pair.increments.add_flattening(i, depth, nlocal); }
   void tally(int i, int j, double energy, const double *fpair, const double *del)
   {
     pair.ev_tally_xyz(i, j, nlocal, 0, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
@@ -481,7 +447,7 @@ void PairRuninAsperityLiggghts::eval(int eflag)
   step.dt = dt;
   step.advance = update->setupflag == 0;
   step.newton_pair = false;
-  step.increments = increment != nullptr;
+  step.increments = increments.reserved();
   step.body_groupbit = body_groupbit;
   double **state_rows = RESHAPE ? fix_wear->state() : nullptr;
   step.state = state_rows && atom->nmax > 0 ? state_rows[0] : nullptr;

@@ -9,6 +9,7 @@
 #include "pair.h"
 
 #include "pair_contacts.h"
+#include "pair_increments.h"
 #include "runin_contact_range.h"
 #include "runin_contact_sums.h"
 #include "tribo/contact_model.h"
@@ -57,30 +58,8 @@ class PairRuninAsperityLiggghts : public Pair, public RuninContactSource {
   int computeflag;    // read by LIGGGHTS's contact history fix (extract("computeflag"))
   double *maxrad;
 
-  // wear, transfer and flattening increments of one step, owned atoms only (newton off: no ghost shares)
-  static constexpr int NINCREMENT = 3;
-  enum Increment { INC_LOST = 0, INC_GAINED, INC_FLATTENED };
-  double *increment;
-  int nmax_increment;
-  int *worn_owned;
-  int nworn_owned;
-  void add_flattening(int i, double depth, int nlocal)
-  {
-    if (i >= nlocal) return;
-    double *slot = &increment[NINCREMENT * i];
-    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
-    slot[INC_FLATTENED] = slot[INC_FLATTENED] > depth ? slot[INC_FLATTENED] : depth;
-    if (was_zero && slot[INC_FLATTENED] != 0.0) worn_owned[nworn_owned++] = i;
-  }
-  void add_wear(int i, double lost, double gained, int nlocal)
-  {
-    if (i >= nlocal) return;
-    double *slot = &increment[NINCREMENT * i];
-    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
-    slot[0] += lost;
-    slot[1] += gained;
-    if (was_zero && (slot[0] != 0.0 || slot[1] != 0.0)) worn_owned[nworn_owned++] = i;
-  }
+  // wear, transfer and flattening increments of one step (newton off: owned atoms only)
+  runin_pair::Increments increments;
   std::vector<runin_pair::TouchingPair> touching;
   runin_host::ContactRangeMonitor contact_range;
 
@@ -88,7 +67,6 @@ class PairRuninAsperityLiggghts : public Pair, public RuninContactSource {
   class FixRuninWearStateLiggghts *fix_wear;
 
   void allocate();
-  void grow_increments();
   // The force loop, specialised at compile time on the sub-models and features in use (as the LAMMPS pair).
   template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG> [[gnu::flatten]] void eval(int eflag);
   using EvalFunction = void (PairRuninAsperityLiggghts::*)(int);
