@@ -9,6 +9,8 @@
 #ifndef RUNIN_PAIR_CONTACTS_H
 #define RUNIN_PAIR_CONTACTS_H
 
+#include "pair_increments.h"
+#include "runin_contact_range.h"
 #include "runin_contact_sums.h"
 #include "tribo/asperity_geometry.h"
 #include "tribo/contact_model.h"
@@ -54,21 +56,57 @@ struct Neighbours {
   double **firsthistory;
 };
 
+// The adaptor a pair host hands the pass: increments into `increments`, energy and virial through the pair's
+// ev_tally_xyz (a protected member of LAMMPS's Pair: the pair declares this a friend). FILM: the host keeps the
+// film coverage of friction models with a film.
+template <class Pair, bool FILM> struct PairHost {
+  static constexpr bool has_film = FILM;
+  Pair &pair;
+  Increments &increments;
+  int nlocal, newton_pair;
+  void add_wear(int i, double lost, double gained) { increments.add_wear(i, lost, gained, nlocal); }
+  void add_flattening(int i, double depth) { increments.add_flattening(i, depth, nlocal); }
+  void tally(int i, int j, double energy, const double *fpair, const double *del)
+  {
+    pair.ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
+  }
+};
+
 // What the pass reads besides the atoms. `state`: the wear state's block (WearFix::NCOLUMNS per atom) when the
 // worn geometry enters the contact, else null; `reach_rows`: the drop the summit reach sees, at the same stride
 // (state + WEAR_DEPTH, or the drop less the body's rise); `increments`: the host takes flattening increments.
 struct Step {
-  const std::optional<tribo::ContactModel> *models;    // (ntypes + 1)^2, [I][J] seen from type I
-  int ntypes1;
-  double dt;
-  bool advance, newton_pair, increments;
-  int body_groupbit;
-  const double *state, *reach_rows;
+  const std::optional<tribo::ContactModel> *models = nullptr;    // (ntypes + 1)^2, [I][J] seen from type I
+  int ntypes1 = 0;
+  double dt = 0.0;
+  bool advance = false, newton_pair = false, increments = false;
+  int body_groupbit = 0;
+  const double *state = nullptr, *reach_rows = nullptr;
   // surface film (friction models with a film): coverage per summit, removal exposure, 1 / s_r per type
-  const double *coverage;
-  double *film_removal;
-  const double *film_inverse_removal;
+  const double *coverage = nullptr;
+  double *film_removal = nullptr;
+  const double *film_inverse_removal = nullptr;
 };
+
+// A step's settings. `worn_rows`: the wear state's rows when the worn geometry enters the contact (one contiguous
+// block, indexed without the row pointers), else null; the reach then sees the wear depth. A host with a rise or a
+// film sets reach_rows or the film arrays after.
+template <class WearFix>
+Step step_of(const std::optional<tribo::ContactModel> *models, int ntypes1, double dt, bool advance, bool newton_pair,
+             bool increments, int body_groupbit, double **worn_rows, int nmax)
+{
+  Step s;
+  s.models = models;
+  s.ntypes1 = ntypes1;
+  s.dt = dt;
+  s.advance = advance;
+  s.newton_pair = newton_pair;
+  s.increments = increments;
+  s.body_groupbit = body_groupbit;
+  s.state = worn_rows && nmax > 0 ? worn_rows[0] : nullptr;
+  s.reach_rows = s.state ? s.state + WearFix::WEAR_DEPTH : nullptr;
+  return s;
+}
 
 // What the pass leaves for the host: the sums, the finite check and the contacts to report.
 struct Outcome {
@@ -341,6 +379,20 @@ std::string past_centre_message(const Atoms<Tag> &a, const Step &s, const Touchi
                        "than the smaller radius {:.4g} m: the contact is not resolved in time", push_per_step, radius);
   return fmt::format("pair runin/asperity: at step {} atoms {} and {} {} (load, speed or timestep too large)", step,
                      a.tag[i], a.tag[j], what);
+}
+
+// After the pass of an advancing step: its worst contact beyond the normal law's range into `range`. Returns the
+// past-centre ERROR of its first invalid contact (the host stops the run), else empty.
+template <class WearFix, class Tag>
+std::string finish(const Outcome &out, const Atoms<Tag> &a, const Step &s, const std::vector<TouchingPair> &touching,
+                   runin_host::ContactRangeMonitor &range, long long step)
+{
+  if (out.worst_contact >= 0 && s.advance) {
+    const TouchingPair &worst = touching[out.worst_contact];
+    range.note(step, out.beyond_range, out.worst_range, a.tag[worst.i], a.tag[worst.j]);
+  }
+  if (out.invalid_contact < 0) return {};
+  return past_centre_message<WearFix>(a, s, touching[out.invalid_contact], out.invalid_force, step);
 }
 
 // single(): the contact of i and j at rsq as the pass computes it, without changing its history.

@@ -621,22 +621,16 @@ void PairRuninAsperity::raise_free_surfaces()
     if (!rise_free || contact_flag[i] == 0.0) state[i][FixRuninWearState::RISE] += rise[type[i]];
 }
 
-struct PairRuninAsperity::LoopHost {
-  static constexpr bool has_film = true;
-  PairRuninAsperity &pair;
-  int nlocal, newton_pair;
-  void add_wear(int i, double lost, double gained) { pair.increments.add_wear(i, lost, gained, nlocal); }
-  void add_flattening(int i, double depth) { pair.increments.add_flattening(i, depth, nlocal); }
-  void tally(int i, int j, double energy, const double *fpair, const double *del)
-  {
-    pair.ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
-  }
-};
-
 runin_pair::Atoms<tagint> PairRuninAsperity::loop_atoms() const
 {
   return {atom->x,      atom->v,     atom->omega, atom->f,   atom->torque, atom->radius,
           atom->rmass,  atom->type,  atom->mask,  atom->tag, atom->nlocal};
+}
+
+runin_pair::Neighbours PairRuninAsperity::neighbours() const
+{
+  return {list->inum,       list->ilist,           list->numneigh,
+          list->firstneigh, fix_history->firstflag, fix_history->firstvalue};
 }
 
 // One force evaluation: the shared pass (pair_contacts.h) on this host's arrays, then its reports.
@@ -644,41 +638,26 @@ template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG>
 void PairRuninAsperity::eval(int eflag)
 {
   using W = FixRuninWearState;
-  runin_pair::Step step;
-  step.models = models.data();
-  step.ntypes1 = atom->ntypes + 1;
-  step.dt = dt;
-  step.advance = update->setupflag == 0;
-  step.newton_pair = force->newton_pair;
-  step.increments = increments.reserved();
-  step.body_groupbit = body_groupbit;
-  // the wear state is one contiguous block (memory->grow), NCOLUMNS per atom: index it without the row pointers
-  double **state_rows = RESHAPE ? fix_wear->state() : nullptr;
-  step.state = state_rows && atom->nmax > 0 ? state_rows[0] : nullptr;
+  runin_pair::Step step =
+      runin_pair::step_of<W>(models.data(), atom->ntypes + 1, dt, update->setupflag == 0, force->newton_pair,
+                             increments.reserved(), body_groupbit, RESHAPE ? fix_wear->state() : nullptr, atom->nmax);
   // with rise yes the reach sees the drop less the rise, from rows of the same stride that compute() filled
-  step.reach_rows = rise_on ? reach_drop.data() : (step.state ? step.state + W::WEAR_DEPTH : nullptr);
+  if (rise_on) step.reach_rows = reach_drop.data();
   const bool film = tribo::HasFilm<std::tuple_element_t<FRICTION, tribo::FrictionModels>>::value;
   step.coverage = film ? fix_film->coverage() : nullptr;
   step.film_removal = film ? fix_film->exposure() : nullptr;
   step.film_inverse_removal = film ? film_inverse_removal_.data() : nullptr;
   const runin_pair::Atoms<tagint> atoms = loop_atoms();
-  const runin_pair::Neighbours neighbours{list->inum,       list->ilist,           list->numneigh,
-                                          list->firstneigh, fix_history->firstflag, fix_history->firstvalue};
-  LoopHost host{*this, atom->nlocal, force->newton_pair};
+  runin_pair::PairHost<PairRuninAsperity, true> host{*this, increments, atom->nlocal, force->newton_pair};
   runin_pair::Outcome outcome;
-  runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(host, atoms, neighbours, step, eflag, touching,
-                                                                         outcome);
+  runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(host, atoms, neighbours(), step, eflag,
+                                                                         touching, outcome);
 
   if (SUMS) sums = outcome.sums;
-  if (outcome.worst_contact >= 0 && step.advance) {
-    const runin_pair::TouchingPair &worst = touching[outcome.worst_contact];
-    contact_range.note(update->ntimestep, outcome.beyond_range, outcome.worst_range, atom->tag[worst.i],
-                       atom->tag[worst.j]);
-  }
   // only this rank knows (error->one)
-  if (outcome.invalid_contact >= 0)
-    error->one(FLERR, runin_pair::past_centre_message<W>(atoms, step, touching[outcome.invalid_contact],
-                                                         outcome.invalid_force, update->ntimestep));
+  const std::string invalid =
+      runin_pair::finish<W>(outcome, atoms, step, touching, contact_range, update->ntimestep);
+  if (!invalid.empty()) error->one(FLERR, invalid);
   if (!std::isfinite(outcome.force_sum)) runin_lammps::stop_on_non_finite_force(lmp, "pair runin/asperity");
 }
 
@@ -708,9 +687,7 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
   auto history_of = [&](double *history) {
     if (!fix_history || !fix_history->firstvalue)
       error->one(FLERR, "pair runin/asperity: single() needs the contact history (run setup first)");
-    const runin_pair::Neighbours neighbours{list->inum,       list->ilist,           list->numneigh,
-                                            list->firstneigh, fix_history->firstflag, fix_history->firstvalue};
-    runin_pair::copy_history(neighbours, i, j, history_size, history);
+    runin_pair::copy_history(neighbours(), i, j, history_size, history);
   };
   runin_pair::SingleContact contact;
   runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity: single()", false, [&] {

@@ -112,10 +112,11 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   static constexpr int NFLAGS = 4;    // WEAR, RESHAPE, SUMS, EVFLAG
   template <int... Index>
   static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
-  // The adaptor of the shared pass (pair_contacts.h): increments, tally.
-  struct LoopHost;
-  // The shared pass's view of this step (eval and single()).
+  // The shared pass (pair_contacts.h): its adaptor, and its view of the atoms and of the neighbour list with the
+  // contact history (eval and single())
+  friend struct runin_pair::PairHost<PairRuninAsperity, true>;
   runin_pair::Atoms<tagint> loop_atoms() const;
+  runin_pair::Neighbours neighbours() const;
   runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);
   runin::tribo::ContactParameters read_coefficients_file(const std::string &file, const std::string &material_i,
                                                          const std::string &material_j);

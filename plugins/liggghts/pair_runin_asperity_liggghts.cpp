@@ -417,23 +417,17 @@ void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
   }
 }
 
-// newton off: a ghost's increments belong to its own rank
-struct PairRuninAsperityLiggghts::LoopHost {
-  static constexpr bool has_film = false;    // friction junction/film is refused in settings()
-  PairRuninAsperityLiggghts &pair;
-  int nlocal;
-  void add_wear(int i, double lost, double gained) { pair.increments.add_wear(i, lost, gained, nlocal); }
-  void add_flattening(int i, double depth) { pair.increments.add_flattening(i, depth, nlocal); }
-  void tally(int i, int j, double energy, const double *fpair, const double *del)
-  {
-    pair.ev_tally_xyz(i, j, nlocal, 0, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
-  }
-};
-
 runin_pair::Atoms<int> PairRuninAsperityLiggghts::loop_atoms() const
 {
   return {atom->x,     atom->v,    atom->omega, atom->f,   atom->torque, atom->radius,
           atom->rmass, atom->type, atom->mask,  atom->tag, atom->nlocal};
+}
+
+runin_pair::Neighbours PairRuninAsperityLiggghts::neighbours() const
+{
+  return {list->inum,       list->ilist,
+          list->numneigh,   list->firstneigh,
+          list->listgranhistory->firstneigh, list->listgranhistory->firstdouble};
 }
 
 // One force evaluation: the pass of the LAMMPS pair (pair_contacts.h) on LIGGGHTS's arrays and contact history.
@@ -441,41 +435,20 @@ template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG>
 void PairRuninAsperityLiggghts::eval(int eflag)
 {
   using W = FixRuninWearStateLiggghts;
-  runin_pair::Step step;
-  step.models = models.data();
-  step.ntypes1 = atom->ntypes + 1;
-  step.dt = dt;
-  step.advance = update->setupflag == 0;
-  step.newton_pair = false;
-  step.increments = increments.reserved();
-  step.body_groupbit = body_groupbit;
-  double **state_rows = RESHAPE ? fix_wear->state() : nullptr;
-  step.state = state_rows && atom->nmax > 0 ? state_rows[0] : nullptr;
-  step.reach_rows = step.state ? step.state + W::WEAR_DEPTH : nullptr;
-  step.coverage = nullptr;
-  step.film_removal = nullptr;
-  step.film_inverse_removal = nullptr;
+  const runin_pair::Step step =
+      runin_pair::step_of<W>(models.data(), atom->ntypes + 1, dt, update->setupflag == 0, false, increments.reserved(),
+                             body_groupbit, RESHAPE ? fix_wear->state() : nullptr, atom->nmax);
   const runin_pair::Atoms<int> atoms = loop_atoms();
-  const runin_pair::Neighbours neighbours{list->inum,
-                                          list->ilist,
-                                          list->numneigh,
-                                          list->firstneigh,
-                                          list->listgranhistory->firstneigh,
-                                          list->listgranhistory->firstdouble};
-  LoopHost host{*this, atom->nlocal};
+  // newton off: a ghost's increments and forces belong to its own rank
+  runin_pair::PairHost<PairRuninAsperityLiggghts, false> host{*this, increments, atom->nlocal, 0};
   runin_pair::Outcome outcome;
-  runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(host, atoms, neighbours, step, eflag, touching,
-                                                                         outcome);
+  runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(host, atoms, neighbours(), step, eflag,
+                                                                         touching, outcome);
 
   if (SUMS) sums = outcome.sums;
-  if (outcome.worst_contact >= 0 && step.advance) {
-    const runin_pair::TouchingPair &worst = touching[outcome.worst_contact];
-    contact_range.note(update->ntimestep, outcome.beyond_range, outcome.worst_range, atom->tag[worst.i],
-                       atom->tag[worst.j]);
-  }
-  if (outcome.invalid_contact >= 0)
-    runin_liggghts::one(lmp, FLERR, runin_pair::past_centre_message<W>(atoms, step, touching[outcome.invalid_contact],
-                                                                       outcome.invalid_force, update->ntimestep));
+  const std::string invalid =
+      runin_pair::finish<W>(outcome, atoms, step, touching, contact_range, update->ntimestep);
+  if (!invalid.empty()) runin_liggghts::one(lmp, FLERR, invalid);
   if (!std::isfinite(outcome.force_sum))
     runin_liggghts::one(lmp, FLERR, fmt::format("pair runin/asperity: a contact force is not finite at step {} "
                                                 "(a coefficient far outside its physical range?)",
@@ -503,13 +476,7 @@ double PairRuninAsperityLiggghts::single(int i, int j, int itype, int jtype, dou
   auto history_of = [&](double *history) {
     if (!list || !list->listgranhistory || !list->listgranhistory->firstdouble)
       runin_liggghts::one(lmp, FLERR, "pair runin/asperity: single() needs the contact history (run setup first)");
-    const runin_pair::Neighbours neighbours{list->inum,
-                                            list->ilist,
-                                            list->numneigh,
-                                            list->firstneigh,
-                                            list->listgranhistory->firstneigh,
-                                            list->listgranhistory->firstdouble};
-    runin_pair::copy_history(neighbours, i, j, history_size, history);
+    runin_pair::copy_history(neighbours(), i, j, history_size, history);
   };
   runin_pair::SingleContact contact;
   runin_liggghts::kernel_call(lmp, FLERR, "pair runin/asperity: single()", false, [&] {

@@ -73,9 +73,11 @@ class PairRuninAsperityLiggghts : public Pair, public RuninContactSource {
   static constexpr int NFLAGS = 4;
   template <int... Index>
   static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
-  // The adaptor of the shared pass (pair_contacts.h): increments, tally.
-  struct LoopHost;
+  // The shared pass (pair_contacts.h): its adaptor (no film: friction junction/film is refused in settings()), and
+  // its view of the atoms and of the neighbour list with the contact history (eval and single())
+  friend struct runin_pair::PairHost<PairRuninAsperityLiggghts, false>;
   runin_pair::Atoms<int> loop_atoms() const;
+  runin_pair::Neighbours neighbours() const;
   runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);
   void set_sub_model(runin::tribo::SubModelKind kind, const std::string &name);
   bool plastic_normal() const;
