@@ -76,11 +76,12 @@ template <class Pair, bool FILM> struct PairHost {
 // worn geometry enters the contact, else null; `reach_rows`: the drop the summit reach sees, at the same stride
 // (state + WEAR_DEPTH, or the drop less the body's rise); `increments`: the host takes flattening increments.
 struct Step {
-  const std::optional<tribo::ContactModel> *models = nullptr;    // (ntypes + 1)^2, [I][J] seen from type I
-  int ntypes1 = 0;
-  double dt = 0.0;
-  bool advance = false, newton_pair = false, increments = false;
-  int body_groupbit = 0;
+  const std::optional<tribo::ContactModel> *models;    // (ntypes + 1)^2, [I][J] seen from type I
+  int ntypes1;
+  double dt;
+  long long timestep;
+  bool advance, newton_pair, increments;
+  int body_groupbit;
   const double *state = nullptr, *reach_rows = nullptr;
   // surface film (friction models with a film): coverage per summit, removal exposure, 1 / s_r per type
   const double *coverage = nullptr;
@@ -92,17 +93,10 @@ struct Step {
 // block, indexed without the row pointers), else null; the reach then sees the wear depth. A host with a rise or a
 // film sets reach_rows or the film arrays after.
 template <class WearFix>
-Step step_of(const std::optional<tribo::ContactModel> *models, int ntypes1, double dt, bool advance, bool newton_pair,
-             bool increments, int body_groupbit, double **worn_rows, int nmax)
+Step step_of(const std::optional<tribo::ContactModel> *models, int ntypes1, double dt, long long timestep,
+             bool advance, bool newton_pair, bool increments, int body_groupbit, double **worn_rows, int nmax)
 {
-  Step s;
-  s.models = models;
-  s.ntypes1 = ntypes1;
-  s.dt = dt;
-  s.advance = advance;
-  s.newton_pair = newton_pair;
-  s.increments = increments;
-  s.body_groupbit = body_groupbit;
+  Step s{models, ntypes1, dt, timestep, advance, newton_pair, increments, body_groupbit};
   s.state = worn_rows && nmax > 0 ? worn_rows[0] : nullptr;
   s.reach_rows = s.state ? s.state + WearFix::WEAR_DEPTH : nullptr;
   return s;
@@ -111,11 +105,12 @@ Step step_of(const std::optional<tribo::ContactModel> *models, int ntypes1, doub
 // What the pass leaves for the host: the sums, the finite check and the contacts to report.
 struct Outcome {
   LAMMPS_NS::RuninContactSums sums;
-  double force_sum = 0.0;        // NaN or inf here: a force or wear volume was not finite
-  int invalid_contact = -1;      // first contact outside every contact law's validity (past_centre_message)
-  double invalid_force = 0.0;    // its normal force
-  int worst_contact = -1;        // the contact furthest beyond its normal law's range (a counted WARNING)
-  double worst_range = 1.0, beyond_range = 0.0;    // its range ratio; contacts beyond (ratio > 1)
+  double force_sum;        // NaN or inf here: a force or wear volume was not finite
+  int invalid_contact;     // first contact outside every contact law's validity (past_centre_message), or -1
+  double invalid_force;    // its normal force
+  int worst_contact;       // the contact furthest beyond its normal law's range (a counted WARNING), or -1
+  double worst_range, beyond_range;    // its range ratio; contacts beyond (ratio > 1)
+  std::string invalid;     // the ERROR of the invalid contact (the host stops the run), empty if none
 };
 
 template <class W, class = void> struct HasRise : std::false_type {};
@@ -144,13 +139,19 @@ tribo::ContactGeometry pair_geometry(const Atoms<Tag> &a, int i, int j, double o
                                        a.v[i], a.v[j], a.omega[i], a.omega[j]);
 }
 
+template <class WearFix, class Tag>
+std::string finish(const Outcome &out, const Atoms<Tag> &a, const Step &s, const std::vector<TouchingPair> &touching,
+                   runin_host::ContactRangeMonitor &range);
+
 // One force evaluation over the host's neighbour list. NORMAL, FRICTION: the sub-models (registry indices);
 // WEAR: Archard wear into the increments; RESHAPE: worn geometry enters the contact; SUMS: fill the contact
 // sums; EVFLAG: tally energy and virial. Host: add_wear(i, lost, gained), add_flattening(i, depth),
-// tally(i, j, energy, fpair, del) and `has_film` (whether it keeps the film coverage).
+// tally(i, j, energy, fpair, del) and `has_film` (whether it keeps the film coverage) (PairHost). The worst contact
+// beyond its normal law's range goes to `range` (advancing steps).
 template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG, class WearFix, class Host, class Tag>
-[[gnu::always_inline]] inline void contacts(Host &host, const Atoms<Tag> &a, const Neighbours &list, const Step &s,
-                                            int eflag, std::vector<TouchingPair> &touching, Outcome &out)
+[[gnu::always_inline]] inline Outcome contacts(Host &host, const Atoms<Tag> &a, const Neighbours &list, const Step &s,
+                                               int eflag, std::vector<TouchingPair> &touching,
+                                               runin_host::ContactRangeMonitor &range)
 {
   const bool advance = s.advance;
   const double *state = s.state;
@@ -338,13 +339,10 @@ template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG,
     }
   }
 
-  if (SUMS) out.sums = local_sums;
-  out.force_sum = force_sum;
-  out.invalid_contact = invalid_contact;
-  out.invalid_force = invalid_force;
-  out.worst_contact = worst_contact;
-  out.worst_range = worst_range;
-  out.beyond_range = beyond_range;
+  Outcome out{SUMS ? local_sums : LAMMPS_NS::RuninContactSums(), force_sum, invalid_contact, invalid_force,
+              worst_contact, worst_range, beyond_range, {}};
+  out.invalid = finish<WearFix>(out, a, s, touching, range);
+  return out;
 }
 
 // The ERROR of a contact outside every sphere contact law (Outcome::invalid_contact): two summits pressed past the
@@ -382,17 +380,17 @@ std::string past_centre_message(const Atoms<Tag> &a, const Step &s, const Touchi
 }
 
 // After the pass of an advancing step: its worst contact beyond the normal law's range into `range`. Returns the
-// past-centre ERROR of its first invalid contact (the host stops the run), else empty.
+// past-centre ERROR of its first invalid contact, else empty.
 template <class WearFix, class Tag>
 std::string finish(const Outcome &out, const Atoms<Tag> &a, const Step &s, const std::vector<TouchingPair> &touching,
-                   runin_host::ContactRangeMonitor &range, long long step)
+                   runin_host::ContactRangeMonitor &range)
 {
   if (out.worst_contact >= 0 && s.advance) {
     const TouchingPair &worst = touching[out.worst_contact];
-    range.note(step, out.beyond_range, out.worst_range, a.tag[worst.i], a.tag[worst.j]);
+    range.note(s.timestep, out.beyond_range, out.worst_range, a.tag[worst.i], a.tag[worst.j]);
   }
   if (out.invalid_contact < 0) return {};
-  return past_centre_message<WearFix>(a, s, touching[out.invalid_contact], out.invalid_force, step);
+  return past_centre_message<WearFix>(a, s, touching[out.invalid_contact], out.invalid_force, s.timestep);
 }
 
 // single(): the contact of i and j at rsq as the pass computes it, without changing its history.

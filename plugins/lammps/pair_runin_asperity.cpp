@@ -639,25 +639,20 @@ void PairRuninAsperity::eval(int eflag)
 {
   using W = FixRuninWearState;
   runin_pair::Step step =
-      runin_pair::step_of<W>(models.data(), atom->ntypes + 1, dt, update->setupflag == 0, force->newton_pair,
-                             increments.reserved(), body_groupbit, RESHAPE ? fix_wear->state() : nullptr, atom->nmax);
+      runin_pair::step_of<W>(models.data(), atom->ntypes + 1, dt, update->ntimestep, update->setupflag == 0,
+                             force->newton_pair, increments.reserved(), body_groupbit,
+                             RESHAPE ? fix_wear->state() : nullptr, atom->nmax);
   // with rise yes the reach sees the drop less the rise, from rows of the same stride that compute() filled
   if (rise_on) step.reach_rows = reach_drop.data();
   const bool film = tribo::HasFilm<std::tuple_element_t<FRICTION, tribo::FrictionModels>>::value;
   step.coverage = film ? fix_film->coverage() : nullptr;
   step.film_removal = film ? fix_film->exposure() : nullptr;
   step.film_inverse_removal = film ? film_inverse_removal_.data() : nullptr;
-  const runin_pair::Atoms<tagint> atoms = loop_atoms();
   runin_pair::PairHost<PairRuninAsperity, true> host{*this, increments, atom->nlocal, force->newton_pair};
-  runin_pair::Outcome outcome;
-  runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(host, atoms, neighbours(), step, eflag,
-                                                                         touching, outcome);
-
+  const runin_pair::Outcome outcome = runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(
+      host, loop_atoms(), neighbours(), step, eflag, touching, contact_range);
   if (SUMS) sums = outcome.sums;
-  // only this rank knows (error->one)
-  const std::string invalid =
-      runin_pair::finish<W>(outcome, atoms, step, touching, contact_range, update->ntimestep);
-  if (!invalid.empty()) error->one(FLERR, invalid);
+  if (!outcome.invalid.empty()) error->one(FLERR, outcome.invalid);    // only this rank knows
   if (!std::isfinite(outcome.force_sum)) runin_lammps::stop_on_non_finite_force(lmp, "pair runin/asperity");
 }
 

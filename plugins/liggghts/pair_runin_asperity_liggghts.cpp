@@ -436,19 +436,14 @@ void PairRuninAsperityLiggghts::eval(int eflag)
 {
   using W = FixRuninWearStateLiggghts;
   const runin_pair::Step step =
-      runin_pair::step_of<W>(models.data(), atom->ntypes + 1, dt, update->setupflag == 0, false, increments.reserved(),
-                             body_groupbit, RESHAPE ? fix_wear->state() : nullptr, atom->nmax);
-  const runin_pair::Atoms<int> atoms = loop_atoms();
+      runin_pair::step_of<W>(models.data(), atom->ntypes + 1, dt, update->ntimestep, update->setupflag == 0, false,
+                             increments.reserved(), body_groupbit, RESHAPE ? fix_wear->state() : nullptr, atom->nmax);
   // newton off: a ghost's increments and forces belong to its own rank
   runin_pair::PairHost<PairRuninAsperityLiggghts, false> host{*this, increments, atom->nlocal, 0};
-  runin_pair::Outcome outcome;
-  runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(host, atoms, neighbours(), step, eflag,
-                                                                         touching, outcome);
-
+  const runin_pair::Outcome outcome = runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(
+      host, loop_atoms(), neighbours(), step, eflag, touching, contact_range);
   if (SUMS) sums = outcome.sums;
-  const std::string invalid =
-      runin_pair::finish<W>(outcome, atoms, step, touching, contact_range, update->ntimestep);
-  if (!invalid.empty()) runin_liggghts::one(lmp, FLERR, invalid);
+  if (!outcome.invalid.empty()) runin_liggghts::one(lmp, FLERR, outcome.invalid);
   if (!std::isfinite(outcome.force_sum))
     runin_liggghts::one(lmp, FLERR, fmt::format("pair runin/asperity: a contact force is not finite at step {} "
                                                 "(a coefficient far outside its physical range?)",
