@@ -1,4 +1,5 @@
 #include "pair_runin_asperity.h"
+#include "pair_coefficients.h"
 #include "runin_errors.h"
 #include "runin_citations.h"
 
@@ -219,20 +220,11 @@ void PairRuninAsperity::coeff(int narg, char **arg)
       origin = "file";
       optional_first = 6;
     } else if (narg == 10 || (narg > 10 && !utils::is_double(arg[10]))) {
-      const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
-      double v[8];
-      for (int k = 0; k < 8; k++)
-        v[k] = runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", names[k], arg[2 + k]);
-      p.effective_modulus = v[0];
-      p.effective_shear_modulus = v[1];
-      p.restitution = v[2];
-      p.mu_static = v[3];
-      p.mu_kinetic = v[4];
-      p.slip_weakening_distance = v[5];
-      p.wear_coefficient = v[6];
-      p.hardness_i = p.hardness_j = v[7];    // one hardness for both types
-      p.yield_strength = v[7] / tribo::kTaborConstraintFactor;    // unless 'S_y' follows
-      p.yield_from_hardness = true;
+      double v[runin_pair::kExplicitValues];
+      for (int k = 0; k < runin_pair::kExplicitValues; k++)
+        v[k] = runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", runin_pair::kExplicitNames[k],
+                                           arg[2 + k]);
+      p = runin_pair::explicit_parameters(v);
       optional_first = 10;
     } else if (strcmp(arg[2], "file") == 0) {
       error->all(FLERR,
@@ -241,16 +233,13 @@ void PairRuninAsperity::coeff(int narg, char **arg)
                  narg - 3);
     } else {
       // count the numbers the user gave after the type pair, and name the positional values they leave out
-      const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
       int given = 0;
       while (2 + given < narg && utils::is_double(arg[2 + given])) given++;
-      std::string missing;
-      for (int k = given; k < 8; k++) missing += fmt::format("{}{}", missing.empty() ? "" : " ", names[k]);
       error->all(FLERR,
                  "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values after the type "
                  "pair), got {} value(s){}; or 'I J file <path> <material-I> <material-J>', then optional 'tau_s X' "
                  "'plough X', or 'I J normal NAME values ... damping ... tangential ... friction ... wear ...'",
-                 given, given < 8 ? fmt::format(" (missing: {})", missing) : fmt::format(" ({} too many)", given - 8));
+                 given, runin_pair::explicit_count_problem(given));
     }
     read_optional_coefficients(p, narg, arg, optional_first);
     // a parameter that the chosen sub-models need and the deck left out (friction junction: f, S_y) is refused
@@ -355,8 +344,7 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
                                                     [&] { return tribo::find_interface_state(arg[iarg + 1]); });
       continue;
     }
-    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
-        keyword != "alpha" && keyword != "f_film" && keyword != "s_r" && keyword != "k_g")
+    if (!runin_pair::optional_keyword(keyword, true))
       error->all(FLERR,
                  "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f, alpha, interface, "
                  "f_film, s_r or k_g)",
@@ -364,26 +352,7 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
     const double value =
         runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", keyword,
                                     iarg + 1 < narg ? arg[iarg + 1] : "");
-    if (keyword == "tau_s")
-      p.shear_strength = value;
-    else if (keyword == "plough")
-      p.ploughing_factor = value;
-    else if (keyword == "nu")
-      p.poisson_ratio = value;
-    else if (keyword == "f")
-      p.interface_coefficient = value;
-    else if (keyword == "alpha")
-      p.junction_alpha = value;
-    else if (keyword == "f_film")
-      p.film_interface_coefficient = value;
-    else if (keyword == "s_r")
-      p.film_removal_distance = value;
-    else if (keyword == "k_g")
-      p.film_growth_rate = value;
-    else {
-      p.yield_strength = value;
-      p.yield_from_hardness = false;
-    }
+    runin_pair::set_optional(p, keyword, value);
   }
 }
 
@@ -437,11 +406,7 @@ void PairRuninAsperity::init_style()
   // the film coverage (from the restart file after read_restart: the fix of the same ID takes its values)
   fix_film = film_friction() ? FixRuninFilm::find_or_create(modify, initial_coverage) : nullptr;
 
-  // largest radius per type bounds the contact cutoff
-  std::vector<double> local(atom->ntypes + 1, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    local[atom->type[i]] = std::max(local[atom->type[i]], atom->radius[i]);
-  MPI_Allreduce(local.data(), maxrad, atom->ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  runin_pair::largest_radius_per_type(atom->radius, atom->type, atom->nlocal, atom->ntypes, world, maxrad);
 
   models.assign(coeffs.size(), std::nullopt);
 

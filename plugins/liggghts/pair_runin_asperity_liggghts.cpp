@@ -1,4 +1,5 @@
 #include "pair_runin_asperity_liggghts.h"
+#include "pair_coefficients.h"
 
 #include "fix_runin_wear_state_liggghts.h"
 #include "runin_liggghts_errors.h"
@@ -186,34 +187,21 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
     origin = "file";
     optional_first = 6;
   } else if (narg == 10 || (narg > 10 && !runin_liggghts::is_double(arg[10]))) {
-    const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
-    double v[8];
-    for (int k = 0; k < 8; k++) v[k] = runin_liggghts::finite_number(lmp, FLERR, where, names[k], arg[2 + k]);
-    p.effective_modulus = v[0];
-    p.effective_shear_modulus = v[1];
-    p.restitution = v[2];
-    p.mu_static = v[3];
-    p.mu_kinetic = v[4];
-    p.slip_weakening_distance = v[5];
-    p.wear_coefficient = v[6];
-    p.hardness_i = p.hardness_j = v[7];
-    p.yield_strength = v[7] / tribo::kTaborConstraintFactor;
-    p.yield_from_hardness = true;
+    double v[runin_pair::kExplicitValues];
+    for (int k = 0; k < runin_pair::kExplicitValues; k++)
+      v[k] = runin_liggghts::finite_number(lmp, FLERR, where, runin_pair::kExplicitNames[k], arg[2 + k]);
+    p = runin_pair::explicit_parameters(v);
     optional_first = 10;
   } else {
     // count the numbers given after the type pair and name the positional values left out
-    const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
     int given = 0;
     while (2 + given < narg && runin_liggghts::is_double(arg[2 + given])) given++;
-    std::string missing;
-    for (int k = given; k < 8; k++) missing += fmt::format("{}{}", missing.empty() ? "" : " ", names[k]);
     runin_liggghts::all(lmp, FLERR,
                         fmt::format("pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values "
                                     "after the type pair), got {} value(s){}; or 'I J file <path> <material-I> "
                                     "<material-J>', then optional 'tau_s X' 'plough X' 'S_y X' 'nu X' (the "
                                     "keyword-block form is LAMMPS-only)",
-                                    given, given < 8 ? fmt::format(" (missing: {})", missing)
-                                                     : fmt::format(" ({} too many)", given - 8)));
+                                    given, runin_pair::explicit_count_problem(given)));
   }
   for (int iarg = optional_first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
@@ -226,25 +214,11 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
                                                       [&] { return tribo::find_interface_state(arg[iarg + 1]); });
       continue;
     }
-    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
-        keyword != "alpha")
+    if (!runin_pair::optional_keyword(keyword, false))
       runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: unknown keyword '{}' (expected "
                                                   "tau_s, plough, S_y, nu, f, alpha or interface)", keyword));
     const double value = runin_liggghts::finite_number(lmp, FLERR, where, keyword, iarg + 1 < narg ? arg[iarg + 1] : "");
-    if (keyword == "tau_s")
-      p.shear_strength = value;
-    else if (keyword == "plough")
-      p.ploughing_factor = value;
-    else if (keyword == "nu")
-      p.poisson_ratio = value;
-    else if (keyword == "f")
-      p.interface_coefficient = value;
-    else if (keyword == "alpha")
-      p.junction_alpha = value;
-    else {
-      p.yield_strength = value;
-      p.yield_from_hardness = false;
-    }
+    runin_pair::set_optional(p, keyword, value);
   }
   if (p.yield_from_hardness && plastic_normal() && comm->me == 0)
     error->warning(FLERR, fmt::format("pair_coeff runin/asperity {} {}: no yield strength given (S_y keyword or "
@@ -319,10 +293,7 @@ void PairRuninAsperityLiggghts::init_style()
   neighbor->requests[irequest]->granhistory = 1;
   neighbor->requests[irequest]->dnum = history_size;
 
-  std::vector<double> local(atom->ntypes + 1, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    local[atom->type[i]] = std::max(local[atom->type[i]], atom->radius[i]);
-  MPI_Allreduce(local.data(), maxrad, atom->ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  runin_pair::largest_radius_per_type(atom->radius, atom->type, atom->nlocal, atom->ntypes, world, maxrad);
   models.assign(coeffs.size(), std::nullopt);
 
   increments.release();
