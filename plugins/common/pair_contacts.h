@@ -397,6 +397,15 @@ std::string finish(const Outcome &out, const Atoms<Tag> &a, const Step &s, const
 // fforce * del is the normal force on i; tangential: the tangential force on i.
 struct SingleContact {
   double fforce = 0.0, energy = 0.0, tangential[3] = {0.0, 0.0, 0.0}, contact_radius = 0.0, overlap = 0.0;
+  // as Pair::single() returns it: fforce, svector (tangential force on i, contact radius, overlap), the energy
+  double returned(double &pair_fforce, double *svector) const
+  {
+    pair_fforce = fforce;
+    for (int k = 0; k < 3; k++) svector[k] = tangential[k];
+    svector[3] = contact_radius;
+    svector[4] = overlap;
+    return energy;
+  }
 };
 
 // The history record of the pair (i, j) in i's neighbour list, copied into `history` (zeros if j is not there).

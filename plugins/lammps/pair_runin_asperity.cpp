@@ -655,11 +655,7 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
                                                             *models[itype * (atom->ntypes + 1) + jtype], choice,
                                                             plastic_normal(), i, j, rsq, history_of);
   });
-  fforce = contact.fforce;
-  for (int k = 0; k < 3; k++) svector[k] = contact.tangential[k];
-  svector[3] = contact.contact_radius;
-  svector[4] = contact.overlap;
-  return contact.energy;
+  return contact.returned(fforce, svector);
 }
 
 int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)

@@ -373,7 +373,8 @@ void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
   static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
   const int models_index = choice.of(SubModelKind::normal) * std::tuple_size_v<tribo::FrictionModels> +
                            choice.of(SubModelKind::friction);
-  const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
+  // Archard wear only with wear yes: the increments of a plastic model without wear carry flattening alone
+  const int index = (models_index << NFLAGS) | (wear_on && advance ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
   runin_liggghts::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
 
@@ -450,9 +451,5 @@ double PairRuninAsperityLiggghts::single(int i, int j, int itype, int jtype, dou
                                                                     *models[itype * (atom->ntypes + 1) + jtype],
                                                                     choice, plastic_normal(), i, j, rsq, history_of);
   });
-  fforce = contact.fforce;
-  for (int k = 0; k < 3; k++) svector[k] = contact.tangential[k];
-  svector[3] = contact.contact_radius;
-  svector[4] = contact.overlap;
-  return contact.energy;
+  return contact.returned(fforce, svector);
 }

@@ -45,6 +45,9 @@ SCENES = {
     # rank's), so the worn geometry sent to ghosts enters the forces (without that send it fails at 2 ranks)
     "rough_slider_small": ("inputs/in.rough_slider", "tests/liggghts/decks/in.rough_slider",
                            {"nside": 10, "nsettle": 600, "nslide": 1400, "thermo_every": 100}, ()),
+    # wear no: plastic flattening alone changes the summits (no Archard wear on either host)
+    "rough_slider_nowear": ("inputs/in.rough_slider", "tests/liggghts/decks/in.rough_slider",
+                            {"nsettle": 600, "nslide": 1400, "thermo_every": 100, "wear": "no"}, ()),
     # rough on flat (fix runin/wall, servo-held load, wear, re-stick after a dwell); the deck prints 10 digits:
     # every digit for the comparison
     "runin_wall": ("inputs/in.runin_wall", "tests/liggghts/decks/in.runin_wall",
