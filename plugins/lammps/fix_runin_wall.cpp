@@ -129,7 +129,8 @@ void FixRuninWall::post_run()
   if (past_centre_count > 0 && comm->me == 0)
     error->warning(FLERR, runin_wall::past_centre_summary(past_centre_count));
   past_centre_count = 0;
-  contact_range.report(lmp, "fix runin/wall");
+  const std::string range_warning = contact_range.report(world, "fix runin/wall");
+  if (!range_warning.empty()) error->warning(FLERR, range_warning);
 }
 
 void FixRuninWall::reset_dt()

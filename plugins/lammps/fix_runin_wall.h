@@ -56,7 +56,7 @@ class FixRuninWall : public RuninPeratomColumns, public RuninContactSource {
   double dt;
   double smallest_radius;    // of the group's asperities (init): the wall may not slide further in one step
   bigint past_centre_count = 0;    // asperity evaluations past the summit centre in this run (WARNING)
-  runin_lammps::ContactRangeMonitor contact_range;    // contacts beyond their normal law's range (WARNING)
+  runin_host::ContactRangeMonitor contact_range;    // contacts beyond their normal law's range (WARNING)
 
   double **&history = columns;    // per atom: the contact history with the wall (the column store)
   double totals[NOUTPUT];    // reduced over ranks at every evaluation

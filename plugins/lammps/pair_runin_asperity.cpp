@@ -1,4 +1,5 @@
 #include "pair_runin_asperity.h"
+#include "pair_coefficients.h"
 #include "runin_errors.h"
 #include "runin_citations.h"
 
@@ -43,8 +44,7 @@ using tribo::SubModelKind;
 
 PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
     Pair(lmp), history_size(tribo::TANGENTIAL_HISTORY_SIZE), dt(0.0), wear_on(true), reshape(true),
-    from_restart(false), sums_requested(false), body_groupbit(0), increment(nullptr), nmax_increment(0),
-    worn_owned(nullptr), worn_ghost(nullptr), nworn_owned(0), nworn_ghost(0), maxrad(nullptr), fix_history(nullptr),
+    from_restart(false), sums_requested(false), body_groupbit(0), maxrad(nullptr), fix_history(nullptr),
     fix_wear(nullptr)
 {
   single_enable = 1;
@@ -77,9 +77,6 @@ PairRuninAsperity::~PairRuninAsperity()
     delete[] maxrad;
   }
   delete[] svector;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  memory->destroy(worn_ghost);
 }
 
 void PairRuninAsperity::allocate()
@@ -223,20 +220,11 @@ void PairRuninAsperity::coeff(int narg, char **arg)
       origin = "file";
       optional_first = 6;
     } else if (narg == 10 || (narg > 10 && !utils::is_double(arg[10]))) {
-      const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
-      double v[8];
-      for (int k = 0; k < 8; k++)
-        v[k] = runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", names[k], arg[2 + k]);
-      p.effective_modulus = v[0];
-      p.effective_shear_modulus = v[1];
-      p.restitution = v[2];
-      p.mu_static = v[3];
-      p.mu_kinetic = v[4];
-      p.slip_weakening_distance = v[5];
-      p.wear_coefficient = v[6];
-      p.hardness_i = p.hardness_j = v[7];    // one hardness for both types
-      p.yield_strength = v[7] / tribo::kTaborConstraintFactor;    // unless 'S_y' follows
-      p.yield_from_hardness = true;
+      double v[runin_pair::kExplicitValues];
+      for (int k = 0; k < runin_pair::kExplicitValues; k++)
+        v[k] = runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", runin_pair::kExplicitNames[k],
+                                           arg[2 + k]);
+      p = runin_pair::explicit_parameters(v);
       optional_first = 10;
     } else if (strcmp(arg[2], "file") == 0) {
       error->all(FLERR,
@@ -245,16 +233,13 @@ void PairRuninAsperity::coeff(int narg, char **arg)
                  narg - 3);
     } else {
       // count the numbers the user gave after the type pair, and name the positional values they leave out
-      const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
       int given = 0;
       while (2 + given < narg && utils::is_double(arg[2 + given])) given++;
-      std::string missing;
-      for (int k = given; k < 8; k++) missing += fmt::format("{}{}", missing.empty() ? "" : " ", names[k]);
       error->all(FLERR,
                  "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values after the type "
                  "pair), got {} value(s){}; or 'I J file <path> <material-I> <material-J>', then optional 'tau_s X' "
                  "'plough X', or 'I J normal NAME values ... damping ... tangential ... friction ... wear ...'",
-                 given, given < 8 ? fmt::format(" (missing: {})", missing) : fmt::format(" ({} too many)", given - 8));
+                 given, runin_pair::explicit_count_problem(given));
     }
     read_optional_coefficients(p, narg, arg, optional_first);
     // a parameter that the chosen sub-models need and the deck left out (friction junction: f, S_y) is refused
@@ -359,8 +344,7 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
                                                     [&] { return tribo::find_interface_state(arg[iarg + 1]); });
       continue;
     }
-    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
-        keyword != "alpha" && keyword != "f_film" && keyword != "s_r" && keyword != "k_g")
+    if (!runin_pair::optional_keyword(keyword, true))
       error->all(FLERR,
                  "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f, alpha, interface, "
                  "f_film, s_r or k_g)",
@@ -368,26 +352,7 @@ void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, 
     const double value =
         runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", keyword,
                                     iarg + 1 < narg ? arg[iarg + 1] : "");
-    if (keyword == "tau_s")
-      p.shear_strength = value;
-    else if (keyword == "plough")
-      p.ploughing_factor = value;
-    else if (keyword == "nu")
-      p.poisson_ratio = value;
-    else if (keyword == "f")
-      p.interface_coefficient = value;
-    else if (keyword == "alpha")
-      p.junction_alpha = value;
-    else if (keyword == "f_film")
-      p.film_interface_coefficient = value;
-    else if (keyword == "s_r")
-      p.film_removal_distance = value;
-    else if (keyword == "k_g")
-      p.film_growth_rate = value;
-    else {
-      p.yield_strength = value;
-      p.yield_from_hardness = false;
-    }
+    runin_pair::set_optional(p, keyword, value);
   }
 }
 
@@ -441,11 +406,7 @@ void PairRuninAsperity::init_style()
   // the film coverage (from the restart file after read_restart: the fix of the same ID takes its values)
   fix_film = film_friction() ? FixRuninFilm::find_or_create(modify, initial_coverage) : nullptr;
 
-  // largest radius per type bounds the contact cutoff
-  std::vector<double> local(atom->ntypes + 1, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    local[atom->type[i]] = std::max(local[atom->type[i]], atom->radius[i]);
-  MPI_Allreduce(local.data(), maxrad, atom->ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  runin_pair::largest_radius_per_type(atom->radius, atom->type, atom->nlocal, atom->ntypes, world, maxrad);
 
   models.assign(coeffs.size(), std::nullopt);
 
@@ -454,12 +415,7 @@ void PairRuninAsperity::init_style()
   comm_gained = contact_settings.transfer_fraction > 0.0;
   comm_flattened = plastic_normal();
   comm_reverse = 1 + comm_gained + comm_flattened;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  memory->destroy(worn_ghost);
-  increment = nullptr;
-  worn_owned = worn_ghost = nullptr;
-  nmax_increment = nworn_owned = nworn_ghost = 0;
+  increments.release();
 
   // contact sums cost a few operations per contact: only when a compute can read them
   sums_requested = false;
@@ -513,21 +469,6 @@ std::array<PairRuninAsperity::EvalFunction, sizeof...(Index)> PairRuninAsperity:
                                     (Index >> 2) & 1, (Index >> 1) & 1, Index & 1>...}};
 }
 
-void PairRuninAsperity::grow_increments()
-{
-  if (atom->nmax <= nmax_increment) return;
-  nmax_increment = atom->nmax;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  memory->destroy(worn_ghost);
-  memory->create(increment, NINCREMENT * nmax_increment, "pair:increment");
-  std::fill(increment, increment + NINCREMENT * nmax_increment, 0.0);
-  // one slot per atom, plus the one add_wear writes past the end
-  memory->create(worn_owned, nmax_increment + 1, "pair:worn_owned");
-  memory->create(worn_ghost, nmax_increment + 1, "pair:worn_ghost");
-  nworn_owned = nworn_ghost = 0;
-}
-
 void PairRuninAsperity::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
@@ -548,7 +489,7 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     for (int k = 0; k < nall; k++)
       reach_drop[NCOL * k] = state[k][FixRuninWearState::WEAR_DEPTH] - state[k][FixRuninWearState::RISE];
   }
-  if (track_wear) grow_increments();
+  if (track_wear) increments.reserve(atom->nmax);
 
   constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
   static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
@@ -575,35 +516,16 @@ void PairRuninAsperity::compute(int eflag, int vflag)
 
   if (track_wear) {
     if (force->newton_pair) runin_compat::reverse_comm(comm, this);
-    // listed owned atoms: add the increments to the state and refresh the geometry; then clear all listed
-    double **state = fix_wear->state();
-    const double *radius = atom->radius;
     // before the increments are applied (it reads them and the current drops); a pass of its own, since a test
-    // inside the loop below cost about 2 % of a plastic step without the rise
+    // inside the application's loop cost about 2 % of a plastic step without the rise
     if (rise_on) raise_free_surfaces();
-    for (int k = 0; k < nworn_owned; k++) {
-      const int i = worn_owned[k];
-      double *inc = &increment[NINCREMENT * i];
-      state[i][FixRuninWearState::VOLUME_LOST] += inc[INC_LOST];
-      state[i][FixRuninWearState::VOLUME_GAINED] += inc[INC_GAINED];
-      if (inc[INC_FLATTENED] > 0.0)
-        state[i][FixRuninWearState::VOLUME_FLATTENED] += FixRuninWearState::flattened_volume(
-            radius[i], state[i][FixRuninWearState::WEAR_DEPTH], inc[INC_FLATTENED]);
-      inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
-      fix_wear->refresh_geometry(i, radius[i]);
-      // a summit worn or flattened past its equator has left the truncated-sphere geometry
-      if (state[i][FixRuninWearState::WEAR_DEPTH] > radius[i])
-        error->one(FLERR, fmt::format("pair runin/asperity: at step {} the summit of atom {} has been worn or "
-                                      "flattened by {:.4g} m, more than its radius {:.4g} m (the asperity is used "
-                                      "up): load or wear coefficient too large",
-                                      update->ntimestep, atom->tag[i], state[i][FixRuninWearState::WEAR_DEPTH],
-                                      radius[i]));
-    }
-    for (int k = 0; k < nworn_ghost; k++) {
-      double *inc = &increment[NINCREMENT * worn_ghost[k]];
-      inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
-    }
-    nworn_owned = nworn_ghost = 0;
+    // listed owned atoms: the increments into the state, the geometry refreshed; a summit worn or flattened past
+    // its equator has left the truncated-sphere geometry
+    const int used_up = increments.apply(*fix_wear, atom->radius);
+    if (used_up >= 0)
+      error->one(FLERR, runin_pair::used_up_message(update->ntimestep, atom->tag[used_up],
+                                                    fix_wear->state()[used_up][FixRuninWearState::WEAR_DEPTH],
+                                                    atom->radius[used_up]));
   }
 }
 
@@ -621,9 +543,9 @@ void PairRuninAsperity::raise_free_surfaces()
   const int nlocal = atom->nlocal, ntypes1 = atom->ntypes + 1;
   // per type: flattened volume, summits, summits out of contact
   std::vector<double> local(3 * ntypes1, 0.0), total(3 * ntypes1, 0.0);
-  for (int k = 0; k < nworn_owned; k++) {
-    const int i = worn_owned[k];
-    const double depth = increment[NINCREMENT * i + INC_FLATTENED];
+  for (int k = 0; k < increments.nowned(); k++) {
+    const int i = increments.owned()[k];
+    const double depth = increments.of(i)[runin_pair::Increments::FLATTENED];
     if (depth > 0.0)
       local[type[i]] += FixRuninWearState::flattened_volume(radius[i], state[i][FixRuninWearState::WEAR_DEPTH], depth);
   }
@@ -664,280 +586,39 @@ void PairRuninAsperity::raise_free_surfaces()
     if (!rise_free || contact_flag[i] == 0.0) state[i][FixRuninWearState::RISE] += rise[type[i]];
 }
 
-// How far plastic flattening (not wear) lowered the summits of i and j together (ghosts included: the wear
-// state forwards the flattened volume with the geometry).
-double PairRuninAsperity::flattened_drop(int i, int j) const
+runin_pair::Atoms<tagint> PairRuninAsperity::loop_atoms() const
 {
-  double **state = fix_wear->state();
-  const double *radius = atom->radius;
-  constexpr int DEPTH = FixRuninWearState::WEAR_DEPTH, FLATTENED = FixRuninWearState::VOLUME_FLATTENED;
-  return tribo::flattened_part_of_drop(radius[i], state[i][DEPTH], state[i][FLATTENED]) +
-         tribo::flattened_part_of_drop(radius[j], state[j][DEPTH], state[j][FLATTENED]);
+  return {atom->x,      atom->v,     atom->omega, atom->f,   atom->torque, atom->radius,
+          atom->rmass,  atom->type,  atom->mask,  atom->tag, atom->nlocal};
 }
 
-// The geometry of the contact of i and j (centre distance 1/rinv, overlap from the worn summits).
-tribo::ContactGeometry PairRuninAsperity::contact_geometry(int i, int j, double overlap, double rinv,
-                                                           const double *del, double flat) const
+runin_pair::Neighbours PairRuninAsperity::neighbours() const
 {
-  double **v = atom->v, **omega = atom->omega;
-  const double *radius = atom->radius, *rmass = atom->rmass;
-  tribo::ContactGeometry g;
-  const double radi = radius[i], radj = radius[j];
-  const double radsum = radi + radj;
-  g.overlap = overlap;
-  g.flat_radius = flat;
-  for (int k = 0; k < 3; k++) g.normal[k] = del[k] * rinv;
-  // m* = m_i m_j / (m_i + m_j) and R* = r_i r_j / (r_i + r_j) from one division
-  const double mass_sum = rmass[i] + rmass[j];
-  const double inv_sums = 1.0 / (mass_sum * radsum);
-  g.effective_mass = rmass[i] * rmass[j] * radsum * inv_sums;
-  g.effective_radius = radi * radj * mass_sum * inv_sums;
-  // relative velocity of i w.r.t. j at the contact point
-  const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-  g.normal_velocity = MathExtra::dot3(vr, g.normal);
-  const double spin[3] = {radi * omega[i][0] + radj * omega[j][0], radi * omega[i][1] + radj * omega[j][1],
-                          radi * omega[i][2] + radj * omega[j][2]};
-  double spin_velocity[3];
-  MathExtra::cross3(g.normal, spin, spin_velocity);
-  for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * g.normal[k] + spin_velocity[k];
-  return g;
+  return {list->inum,       list->ilist,           list->numneigh,
+          list->firstneigh, fix_history->firstflag, fix_history->firstvalue};
 }
 
-// One force evaluation. NORMAL, FRICTION: the sub-models (registry indices); WEAR: Archard wear (wear yes) into the
-// increments; RESHAPE: worn geometry enters the contact; SUMS: fill the contact sums; EVFLAG: tally energy
-// and virial.
+// One force evaluation: the shared pass (pair_contacts.h) on this host's arrays, then its reports.
 template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG>
 void PairRuninAsperity::eval(int eflag)
 {
-  const bool advance = update->setupflag == 0;
-  // the wear state is one contiguous block (memory->grow), NCOLUMNS per atom: index it without the row pointers
-  double **state_rows = RESHAPE ? fix_wear->state() : nullptr;
-  const double *state = state_rows && atom->nmax > 0 ? state_rows[0] : nullptr;
-  constexpr int NCOL = FixRuninWearState::NCOLUMNS;
-  constexpr int DEPTH = FixRuninWearState::WEAR_DEPTH, FLAT = FixRuninWearState::FLAT_RADIUS;
-  double **x = atom->x, **f = atom->f;
-  double **torque = atom->torque;
-  const double *radius = atom->radius;
-  const int *type = atom->type, *mask = atom->mask;
-  const int body_bit = body_groupbit;
-  const tagint *tag = atom->tag;
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
-  const int ntypes1 = atom->ntypes + 1;
-  const double step_dt = dt;    // a local: the force stores could alias the member
-  const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
-  const std::optional<tribo::ContactModel> *const model_table = models.data();
-  constexpr int HISTORY = tribo::contact_history_size<NORMAL>;
-  // plastic flattening lowers the summits: only with the worn geometry in the contact, and when advancing
-  constexpr bool PLASTIC_MODEL =
-      std::is_same_v<std::tuple_element_t<NORMAL, tribo::NormalModels>, tribo::ElasticPlasticNormalModel>;
-  const bool PLASTIC = PLASTIC_MODEL && RESHAPE && advance && increment != nullptr;
-  // a friction model with a surface film reads the summits' coverage and adds to their removal exposure
-  constexpr bool FILM = tribo::HasFilm<std::tuple_element_t<FRICTION, tribo::FrictionModels>>::value;
-  const double *coverage = FILM ? fix_film->coverage() : nullptr;
-  double *film_removal = FILM ? fix_film->exposure() : nullptr;
-  const double *film_inverse_removal = FILM ? film_inverse_removal_.data() : nullptr;
-  RuninContactSums local_sums;
-  // NaN and inf propagate through the sum of all pair forces: one add per contact replaces a pass over
-  // every atom's force (FixRuninFiniteCheck skips its pass for this pair)
-  double force_sum = 0.0;
-  int invalid_contact = -1;      // first contact outside every contact law's validity (see stop_past_centre)
-  double invalid_force = 0.0;    // its normal force
-  int worst_contact = -1;        // the contact furthest beyond its normal law's range (a counted WARNING)
-  double worst_range = 1.0, beyond_range = 0.0;    // its range ratio; contacts beyond (ratio > 1)
-
-  const int inum = list->inum;
-  const int *ilist = list->ilist, *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-  int **firsttouch = fix_history->firstflag;
-  double **firsthistory = fix_history->firstvalue;
-
-  // Centre distance at which two summits touch: worn summits sit lower by their wear depth (higher if material
-  // was deposited). Both passes use it, so they agree bit for bit on which pairs touch.
-  auto wear_depth = [state](int k) { return RESHAPE ? state[NCOL * k + DEPTH] : 0.0; };
-  // What the reach sees: the drop below the intact sphere, less the body's rise with rise yes (then from rows of
-  // the same stride that compute() filled, so the loop reads one value either way and costs nothing without it)
-  const double *reach_rows = rise_on ? reach_drop.data() : (state ? state + DEPTH : nullptr);
-  auto reach_depth = [reach_rows](int k) { return RESHAPE ? reach_rows[NCOL * k] : 0.0; };
-  auto summit_reach = [](double radi, double radj, double depth_i, double depth_j) {
-    return radi + radj - (depth_i + depth_j);
-  };
-
-  // Pass 1: the touching pairs of the neighbor list, compacted without a branch per pair (whether a
-  // neighbor touches is close to random); pairs that separated lose their history.
-  int ntouching = 0;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const int jnum = numneigh[i];
-    if (jnum == 0) continue;
-    if (ntouching + jnum + kPrefetchAhead > static_cast<int>(touching.size()))
-      touching.resize(2 * (ntouching + jnum + kPrefetchAhead));
-    TouchingPair *out = touching.data();
-    const double xi[3] = {x[i][0], x[i][1], x[i][2]};
-    const double radi = radius[i];
-    const double depth_i = reach_depth(i);
-    int *touch = firsttouch[i];
-    double *allhistory = firsthistory[i];
-    const int *jlist = firstneigh[i];
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
-      const double rsq = MathExtra::dot3(del, del);
-      const double reach = summit_reach(radi, radius[j], depth_i, reach_depth(j));
-      const bool in_contact = (!RESHAPE || reach > 0.0) && rsq < reach * reach;
-      out[ntouching] = {i, j, &allhistory[HISTORY * jj]};
-      ntouching += in_contact;
-      // a pair that was not touching has a zero history already (fix NEIGH_HISTORY zeroes new pairs)
-      if (touch[jj] && !in_contact)
-        for (int k = 0; k < HISTORY; k++) allhistory[HISTORY * jj + k] = 0.0;
-      touch[jj] = in_contact;
-    }
-  }
-
-  // Pass 2: the contact forces. The histories of all neighbours far exceed the caches and pass 1 did not
-  // read them: fetch each a few contacts ahead (the records past ntouching exist, as pass 1 sized the list
-  // for it; a prefetch of a stale address is harmless).
-  constexpr int HISTORY_LINES = (HISTORY * static_cast<int>(sizeof(double)) + 63) / 64;
-  for (int c = 0; c < ntouching; c++) {
-    const double *ahead = touching[c + kPrefetchAhead].history;
-    for (int line = 0; line < HISTORY_LINES; line++) __builtin_prefetch(ahead + 8 * line, 1);
-    const int i = touching[c].i, j = touching[c].j;
-    double *history = touching[c].history;
-    const int itype = type[i];
-    const double radi = radius[i], radj = radius[j];
-    const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-    const double rsq = MathExtra::dot3(del, del);
-    const double reach = summit_reach(radi, radj, reach_depth(i), reach_depth(j));
-    const int jtype = type[j];
-    const tribo::ContactModel &model = *model_table[itype * ntypes1 + jtype];
-    const double r = std::sqrt(rsq);
-    const double rinv = 1.0 / r;
-    const double flat =
-        RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
-    tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
-    if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
-    if constexpr (FILM) g.film_coverage = 0.5 * (coverage[i] + coverage[j]);
-    // a new contact of flattened summits is a reload: the model restores the state that flattened them
-    if (PLASTIC_MODEL && RESHAPE && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
-      g.flattened_drop = flattened_drop(i, j);
-    const double smaller_radius = std::min(radi, radj);
-    const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
-    const double fn = contact.normal_force;
-    const double *ft = contact.tangential.force;
-    const double *normal = g.normal;
-    // validity: not past the centre of the smaller summit, and not closing or pushed apart by more than its
-    // radius in one step; the first violation is remembered without a branch and reported after the loop
-    const bool invalid =
-        (std::max(g.overlap + g.summit_drop, std::fabs(g.normal_velocity) * step_dt) > smaller_radius) |
-        (fn * step_dt * step_dt > smaller_radius * g.effective_mass);
-    const bool first_invalid = invalid & (invalid_contact < 0);
-    invalid_contact = first_invalid ? c : invalid_contact;
-    invalid_force = first_invalid ? fn : invalid_force;
-    const double range = contact.normal.range_ratio;
-    beyond_range += range > 1.0;
-    worst_contact = range > worst_range ? c : worst_contact;
-    worst_range = std::max(range, worst_range);
-
-    const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
-    force_sum += fpair[0] + fpair[1] + fpair[2];
-    double tor[3];
-    MathExtra::cross3(normal, ft, tor);
-    const bool j_here = newton_pair || j < nlocal;
-    // torque about each centre at the contact point, R - delta/2 from it (LAMMPS's pair granular)
-    const double arm_i = radi - 0.5 * g.overlap, arm_j = radj - 0.5 * g.overlap;
-    for (int k = 0; k < 3; k++) {
-      f[i][k] += fpair[k];
-      torque[i][k] -= arm_i * tor[k];
-    }
-    if (j_here)
-      for (int k = 0; k < 3; k++) {
-        f[j][k] -= fpair[k];
-        torque[j][k] -= arm_j * tor[k];
-      }
-
-    // with newton off a contact with a ghost is computed on both ranks: count half on each
-    const double weight = SUMS && !j_here ? 0.5 : 1.0;
-    if (SUMS) {
-      const bool j_is_counter = jtype > itype || (jtype == itype && tag[j] > tag[i]);
-      const double orient = j_is_counter ? -weight : weight;
-      local_sums.normal_force += weight * fn;
-      for (int k = 0; k < 3; k++) local_sums.tangential_force[k] += orient * ft[k];
-      local_sums.contacts += weight;
-      if (!contact.tangential.slipping) local_sums.sticking_contacts += weight;
-      local_sums.contact_area += weight * contact.normal.real_area;
-      local_sums.adhesion_force += weight * contact.strength.adhesion;
-      local_sums.ploughing_force += weight * contact.strength.ploughing;
-      local_sums.frictional_power +=
-          weight * contact.tangential.force_magnitude * contact.tangential.slip_increment * inv_dt;
-      // the reaction on the measured body: contacts that cross its boundary (+ on i, - on j)
-      const int side = ((mask[i] & body_bit) != 0) - ((mask[j] & body_bit) != 0);
-      for (int k = 0; k < 3; k++) local_sums.body_force[k] += side * weight * fpair[k];
-    }
-
-    if constexpr (FILM) {
-      // each summit's film is worn over its own body's removal distance (1/s_r of its type, 0: no removal)
-      if (advance) {
-        const double slip = contact.tangential.slip_increment;
-        film_removal[i] += slip * film_inverse_removal[itype];
-        if (j_here) film_removal[j] += slip * film_inverse_removal[jtype];
-      }
-    }
-    if (PLASTIC && contact.normal.residual_increment > 0.0) {
-      // the summits sink by the growth of the residual interference, shared by the bodies' hardness
-      const double share_i = model.flattening_share_i();
-      add_flattening(i, share_i * contact.normal.residual_increment, nlocal);
-      if (j_here) add_flattening(j, (1.0 - share_i) * contact.normal.residual_increment, nlocal);
-    }
-    if (WEAR && contact.tangential.slip_increment > 0.0) {
-      const tribo::WearExchange &exchange = contact.wear;
-      add_wear(i, exchange.lost_a, exchange.gained_a, nlocal);
-      if (j_here) add_wear(j, exchange.lost_b, exchange.gained_b, nlocal);
-      force_sum += exchange.lost_a + exchange.lost_b;    // an overflowing wear law stops the run too
-      if (SUMS) local_sums.wear_volume += weight * contact.worn_volume;
-    }
-
-    if (EVFLAG) {
-      const double energy = eflag ? model.elastic_energy<NORMAL>(g, history) : 0.0;
-      ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
-    }
-  }
-
-  if (SUMS) sums = local_sums;
-  if (worst_contact >= 0 && advance)
-    contact_range.note(update->ntimestep, beyond_range, worst_range, tag[touching[worst_contact].i],
-                       tag[touching[worst_contact].j]);
-  if (invalid_contact >= 0) {
-    const int i = touching[invalid_contact].i, j = touching[invalid_contact].j;
-    const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-    const double r = std::sqrt(MathExtra::dot3(del, del));
-    const double reach = summit_reach(radius[i], radius[j], reach_depth(i), reach_depth(j));
-    const tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, 0.0);
-    const double drop = RESHAPE ? std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0) : 0.0;
-    stop_past_centre(i, j, g.overlap + drop, std::fabs(g.normal_velocity) * step_dt,
-                     invalid_force * step_dt * step_dt / g.effective_mass);
-  }
-  if (!std::isfinite(force_sum)) runin_lammps::stop_on_non_finite_force(lmp, "pair runin/asperity");
-}
-
-// Two summits pressed past the centre of the smaller one, or closing (or pushed apart) by more than its
-// radius in one step (the contact is not resolved in time): outside every sphere contact law. Only this rank knows (error->one);
-// it names the step, both atoms and the limit exceeded.
-void PairRuninAsperity::stop_past_centre(int i, int j, double interference, double approach_per_step,
-                                         double push_per_step) const
-{
-  const double radius = std::min(atom->radius[i], atom->radius[j]);
-  std::string what;
-  if (interference > radius)
-    what = fmt::format("interfere by {:.4g} m (overlap of the intact spheres), more than the smaller radius {:.4g} "
-                       "m: the summit is pressed past its centre, where no contact law holds", interference, radius);
-  else if (approach_per_step > radius)
-    what = fmt::format("close at {:.4g} m per step, more than the smaller radius {:.4g} m: the contact is not "
-                       "resolved in time", approach_per_step, radius);
-  else
-    what = fmt::format("are pushed apart by their contact force at {:.4g} m per step squared (F dt^2 / m*), more "
-                       "than the smaller radius {:.4g} m: the contact is not resolved in time", push_per_step, radius);
-  error->one(FLERR, fmt::format("pair runin/asperity: at step {} atoms {} and {} {} (load, speed or timestep too "
-                                "large)", update->ntimestep, atom->tag[i], atom->tag[j], what));
+  using W = FixRuninWearState;
+  runin_pair::Step step =
+      runin_pair::step_of<W>(models.data(), atom->ntypes + 1, dt, update->ntimestep, update->setupflag == 0,
+                             force->newton_pair, increments.reserved(), body_groupbit,
+                             RESHAPE ? fix_wear->state() : nullptr, atom->nmax);
+  // with rise yes the reach sees the drop less the rise, from rows of the same stride that compute() filled
+  if (rise_on) step.reach_rows = reach_drop.data();
+  const bool film = tribo::HasFilm<std::tuple_element_t<FRICTION, tribo::FrictionModels>>::value;
+  step.coverage = film ? fix_film->coverage() : nullptr;
+  step.film_removal = film ? fix_film->exposure() : nullptr;
+  step.film_inverse_removal = film ? film_inverse_removal_.data() : nullptr;
+  runin_pair::PairHost<PairRuninAsperity, true> host{*this, increments, atom->nlocal, force->newton_pair};
+  const runin_pair::Outcome outcome = runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(
+      host, loop_atoms(), neighbours(), step, eflag, touching, contact_range);
+  if (SUMS) sums = outcome.sums;
+  if (!outcome.invalid.empty()) error->one(FLERR, outcome.invalid);    // only this rank knows
+  if (!std::isfinite(outcome.force_sum)) runin_lammps::stop_on_non_finite_force(lmp, "pair runin/asperity");
 }
 
 // The history as seen from j (reverse transfer of newton-on contacts): the spring turns, the rest is shared.
@@ -960,51 +641,21 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
   for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
   if (!models[itype * (atom->ntypes + 1) + jtype])
     error->one(FLERR, "pair runin/asperity: single() before the pair was initialised");
-  double **state = fix_wear && reshape ? fix_wear->state() : nullptr;
-  const double depth_i = state ? state[i][FixRuninWearState::WEAR_DEPTH] : 0.0;
-  const double depth_j = state ? state[j][FixRuninWearState::WEAR_DEPTH] : 0.0;
-  const double flat =
-      state ? tribo::combined_flat_radius(state[i][FixRuninWearState::FLAT_RADIUS],
-                                          state[j][FixRuninWearState::FLAT_RADIUS])
-            : 0.0;
-  const double rise_i = state ? state[i][FixRuninWearState::RISE] : 0.0;
-  const double rise_j = state ? state[j][FixRuninWearState::RISE] : 0.0;
-  const double reach = atom->radius[i] + atom->radius[j] - ((depth_i - rise_i) + (depth_j - rise_j));
-  if (!(reach > 0.0) || rsq >= reach * reach) return 0.0;
-
+  double **state_rows = fix_wear && reshape ? fix_wear->state() : nullptr;
+  const double *state = state_rows ? state_rows[0] : nullptr;
   // this contact's history in i's neighbor list (a copy: single() must not advance it)
-  if (!fix_history || !fix_history->firstvalue)
-    error->one(FLERR, "pair runin/asperity: single() needs the contact history (run setup first)");
-  double history[MAX_HISTORY_SIZE] = {0.0};
-  const int jnum = list->numneigh[i];
-  const int *jlist = list->firstneigh[i];
-  for (int jj = 0; jj < jnum; jj++)
-    if ((jlist[jj] & NEIGHMASK) == j) {
-      std::copy_n(&fix_history->firstvalue[i][history_size * jj], history_size, history);
-      break;
-    }
-
-  double **x = atom->x;
-  const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-  const double r = std::sqrt(rsq);
-  tribo::ContactGeometry g = contact_geometry(i, j, reach - r, 1.0 / r, del, flat);
-  if (state) g.summit_drop = std::max(depth_i, 0.0) + std::max(depth_j, 0.0);
-  if (state && plastic_normal() && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
-    g.flattened_drop = flattened_drop(i, j);
-  const tribo::ContactModel &model = *models[itype * (atom->ntypes + 1) + jtype];
-  double energy = 0.0;
-  tribo::ContactResult contact;
+  auto history_of = [&](double *history) {
+    if (!fix_history || !fix_history->firstvalue)
+      error->one(FLERR, "pair runin/asperity: single() needs the contact history (run setup first)");
+    runin_pair::copy_history(neighbours(), i, j, history_size, history);
+  };
+  runin_pair::SingleContact contact;
   runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity: single()", false, [&] {
-    tribo::with_sub_models(choice, [&](auto normal, auto) {
-      contact = model.stored_force<decltype(normal)::value>(g, history);
-      energy = model.elastic_energy<decltype(normal)::value>(g, history);
-    });
+    contact = runin_pair::single_contact<FixRuninWearState>(loop_atoms(), state,
+                                                            *models[itype * (atom->ntypes + 1) + jtype], choice,
+                                                            plastic_normal(), i, j, rsq, history_of);
   });
-  fforce = contact.normal_force / r;
-  for (int k = 0; k < 3; k++) svector[k] = contact.tangential.force[k];
-  svector[3] = contact.normal.contact_radius;
-  svector[4] = g.overlap;
-  return energy;
+  return contact.returned(fforce, svector);
 }
 
 int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
@@ -1015,10 +666,10 @@ int PairRuninAsperity::pack_reverse_comm(int n, int first, double *buf)
     return m;
   }
   for (int k = 0; k < n; k++) {
-    const double *inc = &increment[NINCREMENT * (first + k)];
-    buf[m++] = inc[INC_LOST];
-    if (comm_gained) buf[m++] = inc[INC_GAINED];
-    if (comm_flattened) buf[m++] = inc[INC_FLATTENED];
+    const double *inc = increments.of(first + k);
+    buf[m++] = inc[runin_pair::Increments::LOST];
+    if (comm_gained) buf[m++] = inc[runin_pair::Increments::GAINED];
+    if (comm_flattened) buf[m++] = inc[runin_pair::Increments::FLATTENED];
   }
   return m;
 }
@@ -1035,8 +686,8 @@ void PairRuninAsperity::unpack_reverse_comm(int n, int *list, double *buf)
     const double lost = buf[m++];
     const double gained = comm_gained ? buf[m++] : 0.0;
     const double flattened = comm_flattened ? buf[m++] : 0.0;
-    if (lost != 0.0 || gained != 0.0) add_wear(list[k], lost, gained, nlocal);
-    if (flattened != 0.0) add_flattening(list[k], flattened, nlocal);
+    if (lost != 0.0 || gained != 0.0) increments.add_wear(list[k], lost, gained, nlocal);
+    if (flattened != 0.0) increments.add_flattening(list[k], flattened, nlocal);
   }
 }
 
@@ -1129,8 +780,7 @@ void PairRuninAsperity::reset_dt()
 
 double PairRuninAsperity::memory_usage()
 {
-  return static_cast<double>(nmax_increment) * (2.0 * sizeof(double) + 2.0 * sizeof(int)) +
-         static_cast<double>(touching.capacity()) * sizeof(TouchingPair);
+  return increments.memory_usage() + static_cast<double>(touching.capacity()) * sizeof(runin_pair::TouchingPair);
 }
 
 double PairRuninAsperity::atom2cut(int i)

@@ -13,6 +13,8 @@ PairStyle(runin/asperity,PairRuninAsperity);
 #define LMP_PAIR_RUNIN_ASPERITY_H
 
 #include "pair.h"
+#include "pair_contacts.h"
+#include "pair_increments.h"
 #include "runin_contact_sums.h"
 #include "runin_timestep_guard.h"
 #include "tribo/contact_model.h"
@@ -82,49 +84,10 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   bool sums_requested;             // a compute runin/friction exists (set at init): fill 'sums'
   int body_groupbit;               // group whose contact reaction the sums carry (0: none)
 
-  // Wear, transfer and plastic-flattening increments of one step, owned + ghost, reverse-communicated:
-  // {lost, gained, flattened depth} per atom side by side. All zero between steps: an atom is listed when its
-  // first nonzero increment arrives (sums of values >= 0 stay nonzero), and only the listed entries are
-  // applied (owned atoms) and cleared, instead of passes over all owned and ghost atoms.
-  static constexpr int NINCREMENT = 3;
-  enum Increment { INC_LOST = 0, INC_GAINED, INC_FLATTENED };
-  double *increment;               // NINCREMENT per atom
-  int nmax_increment;
-  int *worn_owned, *worn_ghost;    // the listed atoms, owned and ghost (nmax_increment + 1 each)
-  int nworn_owned, nworn_ghost;
+  // Wear, transfer and plastic-flattening increments of one step, owned + ghost, reverse-communicated
+  runin_pair::Increments increments;
   bool comm_gained, comm_flattened;    // which increments reverse communication carries besides 'lost'
-  // The summit of one asperity sinks to the deepest residual of its contacts in a step, not their sum: every
-  // contact of the asperity sees the same summit, so each one's sink below it is the same flattening.
-  void add_flattening(int i, double depth, int nlocal)
-  {
-    // branch-free: the slot is always written and kept only for an atom listed now
-    double *slot = &increment[NINCREMENT * i];
-    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
-    slot[INC_FLATTENED] = std::max(slot[INC_FLATTENED], depth);
-    const bool first = was_zero && slot[INC_FLATTENED] != 0.0, owned = i < nlocal;
-    worn_owned[nworn_owned] = i;
-    worn_ghost[nworn_ghost] = i;
-    nworn_owned += first && owned;
-    nworn_ghost += first && !owned;
-  }
-  void add_wear(int i, double lost, double gained, int nlocal)
-  {
-    double *slot = &increment[NINCREMENT * i];
-    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
-    slot[0] += lost;
-    slot[1] += gained;
-    const bool first = was_zero && (slot[0] != 0.0 || slot[1] != 0.0), owned = i < nlocal;
-    worn_owned[nworn_owned] = i;
-    worn_ghost[nworn_ghost] = i;
-    nworn_owned += first && owned;
-    nworn_ghost += first && !owned;
-  }
-  struct TouchingPair {
-    int i, j;
-    double *history;
-  };
-  std::vector<TouchingPair> touching;    // the touching pairs of one step (grows, never shrinks)
-  static constexpr int kPrefetchAhead = 8;    // contacts between a history's prefetch and its use
+  std::vector<runin_pair::TouchingPair> touching;    // the touching pairs of one step (grows, never shrinks)
   double *maxrad;            // per type
 
   class FixDummy *fix_dummy;
@@ -140,7 +103,6 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
 
   void allocate();
   void attach_wear_state();
-  void grow_increments();
   // The force loop, specialised at compile time on the sub-models and features in use (OPT-package style).
   // flatten: the contact model, Mindlin spring and helpers are inlined whatever GCC's size heuristics say
   // (near their limit, a small change to the contact law outlined ContactModel::evaluate or mindlin_spring
@@ -150,15 +112,11 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   static constexpr int NFLAGS = 4;    // WEAR, RESHAPE, SUMS, EVFLAG
   template <int... Index>
   static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
-  // The part of the two summits' drop that plastic flattening left (a reload's flattened_drop).
-  double flattened_drop(int i, int j) const;
-  // One contact's geometry from positions, velocities, radii, masses and the worn state (eval and single).
-  // Inlined into the force loop (out of line it cost a call and a 14-value struct through memory per contact).
-  [[gnu::always_inline]] inline runin::tribo::ContactGeometry contact_geometry(int i, int j, double overlap,
-                                                                               double rinv, const double *del,
-                                                                               double flat) const;
-  [[noreturn]] void stop_past_centre(int i, int j, double interference, double approach_per_step,
-                                     double push_per_step) const;
+  // The shared pass (pair_contacts.h): its adaptor, and its view of the atoms and of the neighbour list with the
+  // contact history (eval and single())
+  friend struct runin_pair::PairHost<PairRuninAsperity, true>;
+  runin_pair::Atoms<tagint> loop_atoms() const;
+  runin_pair::Neighbours neighbours() const;
   runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);
   runin::tribo::ContactParameters read_coefficients_file(const std::string &file, const std::string &material_i,
                                                          const std::string &material_j);

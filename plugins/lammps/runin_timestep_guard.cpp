@@ -47,8 +47,10 @@ void FixRuninFiniteCheck::pre_reverse(int, int)
 // the pair has no end-of-run hook of its own
 void FixRuninFiniteCheck::post_run()
 {
-  if (auto *pair = dynamic_cast<runin_lammps::FiniteForcePair *>(force->pair))
-    pair->contact_range.report(lmp, fmt::format("pair {}", force->pair_style));
+  if (auto *pair = dynamic_cast<runin_lammps::FiniteForcePair *>(force->pair)) {
+    const std::string warning = pair->contact_range.report(world, fmt::format("pair {}", force->pair_style));
+    if (!warning.empty()) error->warning(FLERR, warning);
+  }
 }
 
 namespace {

@@ -64,7 +64,7 @@ double guard_timestep(LAMMPS_NS::LAMMPS *lmp, const char *style,
 class FiniteForcePair {
  public:
   virtual ~FiniteForcePair() noexcept(std::is_nothrow_destructible_v<LAMMPS_NS::Pointers>) {}    // see RuninContactSource
-  ContactRangeMonitor contact_range;
+  runin_host::ContactRangeMonitor contact_range;
 };
 
 // For a force loop that found a non-finite force on this rank: stops the run with the guard's ERROR

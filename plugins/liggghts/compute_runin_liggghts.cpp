@@ -1,7 +1,7 @@
 #include "compute_runin_liggghts.h"
 #include "../lammps/runin_roughness_core.h"
 
-#include "../lammps/runin_contact_sums.h"
+#include "runin_contact_sums.h"
 #include "fix_runin_wear_state_liggghts.h"
 #include "runin_liggghts_errors.h"
 #include "tribo/surface_statistics.h"

@@ -1,6 +1,6 @@
 // fix runin/wall for LIGGGHTS 3.8 (liggghts_runin): asperities against a rigid flat counterface z = z_wall.
 // The keywords, the wall motion and servo, the contact loop and the restart record are runin_wall (plugins/
-// lammps/runin_wall_core.h), the code the LAMMPS fix runs; the law is runin::tribo::ContactModel. This class
+// common/runin_wall_core.h), the code the LAMMPS fix runs; the law is runin::tribo::ContactModel. This class
 // holds LIGGGHTS's side: the variables, the MPI reductions, the per-atom contact history (exchange and restart)
 // and the wear-state fix. What differs from the LAMMPS style: doc/liggghts.md.
 #ifndef LMP_FIX_RUNIN_WALL_LIGGGHTS_H
@@ -8,8 +8,8 @@
 
 #include "fix.h"
 
-#include "../lammps/runin_contact_sums.h"
-#include "../lammps/runin_wall_core.h"
+#include "runin_contact_sums.h"
+#include "runin_wall_core.h"
 
 namespace LAMMPS_NS {
 

@@ -1,4 +1,5 @@
 #include "pair_runin_asperity_liggghts.h"
+#include "pair_coefficients.h"
 
 #include "fix_runin_wear_state_liggghts.h"
 #include "runin_liggghts_errors.h"
@@ -59,10 +60,13 @@ Fix *history_creator(LAMMPS *lmp, int narg, char **arg)
 
 PairRuninAsperityLiggghts::PairRuninAsperityLiggghts(LAMMPS *lmp) :
     Pair(lmp), history_size(tribo::TANGENTIAL_HISTORY_SIZE), dt(0.0), wear_on(true), reshape(true),
-    sums_requested(false), body_groupbit(0), computeflag(0), maxrad(nullptr), increment(nullptr),
-    nmax_increment(0), worn_owned(nullptr), nworn_owned(0), fix_history(nullptr), fix_wear(nullptr)
+    sums_requested(false), body_groupbit(0), computeflag(0), maxrad(nullptr), fix_history(nullptr),
+    fix_wear(nullptr)
 {
-  single_enable = 0;
+  single_enable = 1;
+  // single(): normal force (fforce * del), then the tangential force on i, the contact radius and overlap
+  single_extra = 5;
+  svector = new double[single_extra];
   no_virial_fdotr_compute = 1;
   restartinfo = 0;
 }
@@ -75,8 +79,7 @@ PairRuninAsperityLiggghts::~PairRuninAsperityLiggghts()
     memory->destroy(cutsq);
     delete[] maxrad;
   }
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
+  delete[] svector;
 }
 
 void PairRuninAsperityLiggghts::allocate()
@@ -184,34 +187,21 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
     origin = "file";
     optional_first = 6;
   } else if (narg == 10 || (narg > 10 && !runin_liggghts::is_double(arg[10]))) {
-    const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
-    double v[8];
-    for (int k = 0; k < 8; k++) v[k] = runin_liggghts::finite_number(lmp, FLERR, where, names[k], arg[2 + k]);
-    p.effective_modulus = v[0];
-    p.effective_shear_modulus = v[1];
-    p.restitution = v[2];
-    p.mu_static = v[3];
-    p.mu_kinetic = v[4];
-    p.slip_weakening_distance = v[5];
-    p.wear_coefficient = v[6];
-    p.hardness_i = p.hardness_j = v[7];
-    p.yield_strength = v[7] / tribo::kTaborConstraintFactor;
-    p.yield_from_hardness = true;
+    double v[runin_pair::kExplicitValues];
+    for (int k = 0; k < runin_pair::kExplicitValues; k++)
+      v[k] = runin_liggghts::finite_number(lmp, FLERR, where, runin_pair::kExplicitNames[k], arg[2 + k]);
+    p = runin_pair::explicit_parameters(v);
     optional_first = 10;
   } else {
     // count the numbers given after the type pair and name the positional values left out
-    const char *names[] = {"E*", "G*", "e", "mu_s", "mu_k", "d_c", "k", "H"};
     int given = 0;
     while (2 + given < narg && runin_liggghts::is_double(arg[2 + given])) given++;
-    std::string missing;
-    for (int k = given; k < 8; k++) missing += fmt::format("{}{}", missing.empty() ? "" : " ", names[k]);
     runin_liggghts::all(lmp, FLERR,
                         fmt::format("pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values "
                                     "after the type pair), got {} value(s){}; or 'I J file <path> <material-I> "
                                     "<material-J>', then optional 'tau_s X' 'plough X' 'S_y X' 'nu X' (the "
                                     "keyword-block form is LAMMPS-only)",
-                                    given, given < 8 ? fmt::format(" (missing: {})", missing)
-                                                     : fmt::format(" ({} too many)", given - 8)));
+                                    given, runin_pair::explicit_count_problem(given)));
   }
   for (int iarg = optional_first; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
@@ -224,25 +214,11 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
                                                       [&] { return tribo::find_interface_state(arg[iarg + 1]); });
       continue;
     }
-    if (keyword != "tau_s" && keyword != "plough" && keyword != "S_y" && keyword != "nu" && keyword != "f" &&
-        keyword != "alpha")
+    if (!runin_pair::optional_keyword(keyword, false))
       runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: unknown keyword '{}' (expected "
                                                   "tau_s, plough, S_y, nu, f, alpha or interface)", keyword));
     const double value = runin_liggghts::finite_number(lmp, FLERR, where, keyword, iarg + 1 < narg ? arg[iarg + 1] : "");
-    if (keyword == "tau_s")
-      p.shear_strength = value;
-    else if (keyword == "plough")
-      p.ploughing_factor = value;
-    else if (keyword == "nu")
-      p.poisson_ratio = value;
-    else if (keyword == "f")
-      p.interface_coefficient = value;
-    else if (keyword == "alpha")
-      p.junction_alpha = value;
-    else {
-      p.yield_strength = value;
-      p.yield_from_hardness = false;
-    }
+    runin_pair::set_optional(p, keyword, value);
   }
   if (p.yield_from_hardness && plastic_normal() && comm->me == 0)
     error->warning(FLERR, fmt::format("pair_coeff runin/asperity {} {}: no yield strength given (S_y keyword or "
@@ -317,17 +293,10 @@ void PairRuninAsperityLiggghts::init_style()
   neighbor->requests[irequest]->granhistory = 1;
   neighbor->requests[irequest]->dnum = history_size;
 
-  std::vector<double> local(atom->ntypes + 1, 0.0);
-  for (int i = 0; i < atom->nlocal; i++)
-    local[atom->type[i]] = std::max(local[atom->type[i]], atom->radius[i]);
-  MPI_Allreduce(local.data(), maxrad, atom->ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  runin_pair::largest_radius_per_type(atom->radius, atom->type, atom->nlocal, atom->ntypes, world, maxrad);
   models.assign(coeffs.size(), std::nullopt);
 
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  increment = nullptr;
-  worn_owned = nullptr;
-  nmax_increment = nworn_owned = 0;
+  increments.release();
 
   sums_requested = false;
   for (int i = 0; i < modify->ncompute; i++)
@@ -373,8 +342,7 @@ void *PairRuninAsperityLiggghts::extract(const char *name, int &dim)
 
 double PairRuninAsperityLiggghts::memory_usage()
 {
-  return static_cast<double>(nmax_increment) * (3.0 * sizeof(double) + sizeof(int)) +
-         static_cast<double>(touching.capacity()) * sizeof(TouchingPair);
+  return increments.memory_usage() + static_cast<double>(touching.capacity()) * sizeof(runin_pair::TouchingPair);
 }
 
 template <int... Index>
@@ -384,18 +352,6 @@ std::array<PairRuninAsperityLiggghts::EvalFunction, sizeof...(Index)> PairRuninA
   constexpr int NFRICTION = std::tuple_size_v<tribo::FrictionModels>;
   return {{&PairRuninAsperityLiggghts::eval<(Index >> NFLAGS) / NFRICTION, (Index >> NFLAGS) % NFRICTION,
                                             (Index >> 3) & 1, (Index >> 2) & 1, (Index >> 1) & 1, Index & 1>...}};
-}
-
-void PairRuninAsperityLiggghts::grow_increments()
-{
-  if (atom->nmax <= nmax_increment) return;
-  nmax_increment = atom->nmax;
-  memory->destroy(increment);
-  memory->destroy(worn_owned);
-  memory->create(increment, NINCREMENT * nmax_increment, "pair:increment");
-  std::fill(increment, increment + NINCREMENT * nmax_increment, 0.0);
-  memory->create(worn_owned, nmax_increment + 1, "pair:worn_owned");
-  nworn_owned = 0;
 }
 
 void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
@@ -411,234 +367,89 @@ void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
   if (fix_wear && !advance) fix_wear->refresh_geometry_all();
   const bool worn_geometry = reshape && fix_wear;
   if (worn_geometry) fix_wear->forward_geometry(!advance);
-  if (track_wear) grow_increments();
+  if (track_wear) increments.reserve(atom->nmax);
 
   constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
   static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
   const int models_index = choice.of(SubModelKind::normal) * std::tuple_size_v<tribo::FrictionModels> +
                            choice.of(SubModelKind::friction);
-  const int index = (models_index << NFLAGS) | (track_wear ? 8 : 0) | (worn_geometry ? 4 : 0) |
+  // Archard wear only with wear yes: the increments of a plastic model without wear carry flattening alone
+  const int index = (models_index << NFLAGS) | (wear_on && advance ? 8 : 0) | (worn_geometry ? 4 : 0) |
                     (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
   runin_liggghts::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
 
   if (track_wear) {
     // newton off: every contact of an owned atom was computed here, so its increments are complete
-    double **state = fix_wear->state();
-    const double *radius = atom->radius;
-    using W = FixRuninWearStateLiggghts;
-    for (int k = 0; k < nworn_owned; k++) {
-      const int i = worn_owned[k];
-      double *inc = &increment[NINCREMENT * i];
-      state[i][W::VOLUME_LOST] += inc[INC_LOST];
-      state[i][W::VOLUME_GAINED] += inc[INC_GAINED];
-      if (inc[INC_FLATTENED] > 0.0)
-        state[i][W::VOLUME_FLATTENED] +=
-            W::flattened_volume(radius[i], state[i][W::WEAR_DEPTH], inc[INC_FLATTENED]);
-      inc[INC_LOST] = inc[INC_GAINED] = inc[INC_FLATTENED] = 0.0;
-      fix_wear->refresh_geometry(i, radius[i]);
-      if (state[i][W::WEAR_DEPTH] > radius[i])
-        runin_liggghts::one(lmp, FLERR,
-                            fmt::format("pair runin/asperity: at step {} the summit of atom {} has been worn or "
-                                        "flattened by {:.4g} m, more than its radius {:.4g} m (the asperity is used "
-                                        "up): load or wear coefficient too large",
-                                        update->ntimestep, atom->tag[i], state[i][W::WEAR_DEPTH], radius[i]));
-    }
-    nworn_owned = 0;
+    const int used_up = increments.apply(*fix_wear, atom->radius);
+    if (used_up >= 0)
+      runin_liggghts::one(lmp, FLERR, runin_pair::used_up_message(
+                                          update->ntimestep, atom->tag[used_up],
+                                          fix_wear->state()[used_up][FixRuninWearStateLiggghts::WEAR_DEPTH],
+                                          atom->radius[used_up]));
   }
 }
 
-// The geometry of one contact: the arithmetic of PairRuninAsperity::contact_geometry (plugins/lammps), term
-// for term, so both hosts hand the contact model the same numbers.
-tribo::ContactGeometry PairRuninAsperityLiggghts::contact_geometry(int i, int j, double overlap, double rinv,
-                                                                   const double *del, double flat) const
+runin_pair::Atoms<int> PairRuninAsperityLiggghts::loop_atoms() const
 {
-  double **v = atom->v, **omega = atom->omega;
-  const double *radius = atom->radius, *rmass = atom->rmass;
-  tribo::ContactGeometry g;
-  const double radi = radius[i], radj = radius[j];
-  const double radsum = radi + radj;
-  g.overlap = overlap;
-  g.flat_radius = flat;
-  for (int k = 0; k < 3; k++) g.normal[k] = del[k] * rinv;
-  const double mass_sum = rmass[i] + rmass[j];
-  const double inv_sums = 1.0 / (mass_sum * radsum);
-  g.effective_mass = rmass[i] * rmass[j] * radsum * inv_sums;
-  g.effective_radius = radi * radj * mass_sum * inv_sums;
-  const double vr[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
-  g.normal_velocity = MathExtra::dot3(vr, g.normal);
-  const double spin[3] = {radi * omega[i][0] + radj * omega[j][0], radi * omega[i][1] + radj * omega[j][1],
-                          radi * omega[i][2] + radj * omega[j][2]};
-  double spin_velocity[3];
-  MathExtra::cross3(g.normal, spin, spin_velocity);
-  for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * g.normal[k] + spin_velocity[k];
-  return g;
+  return {atom->x,     atom->v,    atom->omega, atom->f,   atom->torque, atom->radius,
+          atom->rmass, atom->type, atom->mask,  atom->tag, atom->nlocal};
 }
 
+runin_pair::Neighbours PairRuninAsperityLiggghts::neighbours() const
+{
+  return {list->inum,       list->ilist,
+          list->numneigh,   list->firstneigh,
+          list->listgranhistory->firstneigh, list->listgranhistory->firstdouble};
+}
+
+// One force evaluation: the pass of the LAMMPS pair (pair_contacts.h) on LIGGGHTS's arrays and contact history.
 template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG>
 void PairRuninAsperityLiggghts::eval(int eflag)
 {
-  const bool advance = update->setupflag == 0;
-  double **state_rows = RESHAPE ? fix_wear->state() : nullptr;
-  const double *state = state_rows && atom->nmax > 0 ? state_rows[0] : nullptr;
   using W = FixRuninWearStateLiggghts;
-  constexpr int NCOL = W::NCOLUMNS;
-  constexpr int DEPTH = W::WEAR_DEPTH, FLAT = W::FLAT_RADIUS, FLATTENED = W::VOLUME_FLATTENED;
-  double **x = atom->x, **f = atom->f;
-  double **torque = atom->torque;
-  const double *radius = atom->radius;
-  const int *type = atom->type, *mask = atom->mask;
-  const int body_bit = body_groupbit;
-  const int *tag = atom->tag;
-  const int nlocal = atom->nlocal;
-  const int ntypes1 = atom->ntypes + 1;
-  const double step_dt = dt;
-  const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
-  const std::optional<tribo::ContactModel> *const model_table = models.data();
-  constexpr int HISTORY = tribo::contact_history_size<NORMAL>;
-  constexpr bool PLASTIC_MODEL =
-      std::is_same_v<std::tuple_element_t<NORMAL, tribo::NormalModels>, tribo::ElasticPlasticNormalModel>;
-  const bool PLASTIC = PLASTIC_MODEL && RESHAPE && advance && increment != nullptr;
-  RuninContactSums local_sums;
-  double force_sum = 0.0;
-  int invalid_contact = -1;
-  double invalid_force = 0.0;
-
-  const int inum = list->inum;
-  const int *ilist = list->ilist, *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-  int **firsttouch = list->listgranhistory->firstneigh;
-  double **firsthistory = list->listgranhistory->firstdouble;
-
-  auto wear_depth = [state](int k) { return RESHAPE ? state[NCOL * k + DEPTH] : 0.0; };
-  auto summit_reach = [](double radi, double radj, double depth_i, double depth_j) {
-    return radi + radj - (depth_i + depth_j);
-  };
-
-  // pass 1: the touching pairs; pairs that separated lose their history
-  int ntouching = 0;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const int jnum = numneigh[i];
-    if (jnum == 0) continue;
-    if (ntouching + jnum > static_cast<int>(touching.size())) touching.resize(2 * (ntouching + jnum));
-    TouchingPair *out = touching.data();
-    const double xi[3] = {x[i][0], x[i][1], x[i][2]};
-    const double radi = radius[i];
-    const double depth_i = wear_depth(i);
-    int *touch = firsttouch[i];
-    double *allhistory = firsthistory[i];
-    const int *jlist = firstneigh[i];
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double del[3] = {xi[0] - x[j][0], xi[1] - x[j][1], xi[2] - x[j][2]};
-      const double rsq = MathExtra::dot3(del, del);
-      const double reach = summit_reach(radi, radius[j], depth_i, wear_depth(j));
-      const bool in_contact = (!RESHAPE || reach > 0.0) && rsq < reach * reach;
-      out[ntouching] = {i, j, &allhistory[HISTORY * jj]};
-      ntouching += in_contact;
-      if (touch[jj] && !in_contact)
-        for (int k = 0; k < HISTORY; k++) allhistory[HISTORY * jj + k] = 0.0;
-      touch[jj] = in_contact;
-    }
-  }
-
-  // pass 2: the contact forces
-  for (int c = 0; c < ntouching; c++) {
-    const int i = touching[c].i, j = touching[c].j;
-    double *history = touching[c].history;
-    const int itype = type[i];
-    const double radi = radius[i], radj = radius[j];
-    const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-    const double rsq = MathExtra::dot3(del, del);
-    const double reach = summit_reach(radi, radj, wear_depth(i), wear_depth(j));
-    const int jtype = type[j];
-    const tribo::ContactModel &model = *model_table[itype * ntypes1 + jtype];
-    const double r = std::sqrt(rsq);
-    const double rinv = 1.0 / r;
-    const double flat =
-        RESHAPE ? tribo::combined_flat_radius(state[NCOL * i + FLAT], state[NCOL * j + FLAT]) : 0.0;
-    tribo::ContactGeometry g = contact_geometry(i, j, reach - r, rinv, del, flat);
-    if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
-    // a new contact of flattened summits is a reload: the model restores the state that flattened them
-    // (PairRuninAsperity::flattened_drop, the same sum)
-    if (PLASTIC_MODEL && RESHAPE && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
-      g.flattened_drop = tribo::flattened_part_of_drop(radi, state[NCOL * i + DEPTH], state[NCOL * i + FLATTENED]) +
-                         tribo::flattened_part_of_drop(radj, state[NCOL * j + DEPTH], state[NCOL * j + FLATTENED]);
-    const double smaller_radius = std::min(radi, radj);
-    const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
-    const double fn = contact.normal_force;
-    const double *ft = contact.tangential.force;
-    const double *normal = g.normal;
-    const bool invalid =
-        (std::max(g.overlap + g.summit_drop, std::fabs(g.normal_velocity) * step_dt) > smaller_radius) |
-        (fn * step_dt * step_dt > smaller_radius * g.effective_mass);
-    const bool first_invalid = invalid & (invalid_contact < 0);
-    invalid_contact = first_invalid ? c : invalid_contact;
-    invalid_force = first_invalid ? fn : invalid_force;
-
-    const double fpair[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
-    force_sum += fpair[0] + fpair[1] + fpair[2];
-    double tor[3];
-    MathExtra::cross3(normal, ft, tor);
-    const bool j_here = j < nlocal;    // newton off
-    const double arm_i = radi - 0.5 * g.overlap, arm_j = radj - 0.5 * g.overlap;
-    for (int k = 0; k < 3; k++) {
-      f[i][k] += fpair[k];
-      torque[i][k] -= arm_i * tor[k];
-    }
-    if (j_here)
-      for (int k = 0; k < 3; k++) {
-        f[j][k] -= fpair[k];
-        torque[j][k] -= arm_j * tor[k];
-      }
-
-    const double weight = SUMS && !j_here ? 0.5 : 1.0;
-    if (SUMS) {
-      const bool j_is_counter = jtype > itype || (jtype == itype && tag[j] > tag[i]);
-      const double orient = j_is_counter ? -weight : weight;
-      local_sums.normal_force += weight * fn;
-      for (int k = 0; k < 3; k++) local_sums.tangential_force[k] += orient * ft[k];
-      local_sums.contacts += weight;
-      if (!contact.tangential.slipping) local_sums.sticking_contacts += weight;
-      local_sums.contact_area += weight * contact.normal.real_area;
-      local_sums.adhesion_force += weight * contact.strength.adhesion;
-      local_sums.ploughing_force += weight * contact.strength.ploughing;
-      local_sums.frictional_power +=
-          weight * contact.tangential.force_magnitude * contact.tangential.slip_increment * inv_dt;
-      const int side = ((mask[i] & body_bit) != 0) - ((mask[j] & body_bit) != 0);
-      for (int k = 0; k < 3; k++) local_sums.body_force[k] += side * weight * fpair[k];
-    }
-
-    if (PLASTIC && contact.normal.residual_increment > 0.0) {
-      const double share_i = model.flattening_share_i();
-      add_flattening(i, share_i * contact.normal.residual_increment, nlocal);
-      if (j_here) add_flattening(j, (1.0 - share_i) * contact.normal.residual_increment, nlocal);
-    }
-    if (WEAR && contact.tangential.slip_increment > 0.0) {
-      const tribo::WearExchange &exchange = contact.wear;
-      add_wear(i, exchange.lost_a, exchange.gained_a, nlocal);
-      if (j_here) add_wear(j, exchange.lost_b, exchange.gained_b, nlocal);
-      force_sum += exchange.lost_a + exchange.lost_b;
-      if (SUMS) local_sums.wear_volume += weight * contact.worn_volume;
-    }
-
-    if (EVFLAG) {
-      const double energy = eflag ? model.elastic_energy<NORMAL>(g, history) : 0.0;
-      ev_tally_xyz(i, j, nlocal, 0, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
-    }
-  }
-
-  if (SUMS) sums = local_sums;
-  if (invalid_contact >= 0) {
-    const int i = touching[invalid_contact].i, j = touching[invalid_contact].j;
-    runin_liggghts::one(lmp, FLERR,
-                        fmt::format("pair runin/asperity: at step {} atoms {} and {} interfere past the centre of "
-                                    "the smaller summit, or close or are pushed apart by more than its radius in "
-                                    "one step (normal force {:.4g} N): load, speed or timestep too large",
-                                    update->ntimestep, tag[i], tag[j], invalid_force));
-  }
-  if (!std::isfinite(force_sum))
+  const runin_pair::Step step =
+      runin_pair::step_of<W>(models.data(), atom->ntypes + 1, dt, update->ntimestep, update->setupflag == 0, false,
+                             increments.reserved(), body_groupbit, RESHAPE ? fix_wear->state() : nullptr, atom->nmax);
+  // newton off: a ghost's increments and forces belong to its own rank
+  runin_pair::PairHost<PairRuninAsperityLiggghts, false> host{*this, increments, atom->nlocal, 0};
+  const runin_pair::Outcome outcome = runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(
+      host, loop_atoms(), neighbours(), step, eflag, touching, contact_range);
+  if (SUMS) sums = outcome.sums;
+  if (!outcome.invalid.empty()) runin_liggghts::one(lmp, FLERR, outcome.invalid);
+  if (!std::isfinite(outcome.force_sum))
     runin_liggghts::one(lmp, FLERR, fmt::format("pair runin/asperity: a contact force is not finite at step {} "
                                                 "(a coefficient far outside its physical range?)",
                                                 update->ntimestep));
+}
+
+void PairRuninAsperityLiggghts::report_contact_range()
+{
+  const std::string warning = contact_range.report(world, "pair runin/asperity");
+  if (!warning.empty()) error->warning(FLERR, warning.c_str());
+}
+
+// The force of the contact of i and j as the force loop computes it, without changing its history (compute
+// group/group). fforce * del is the normal force on i; svector: tangential force on i (3), contact radius, overlap.
+double PairRuninAsperityLiggghts::single(int i, int j, int itype, int jtype, double rsq, double, double,
+                                         double &fforce)
+{
+  fforce = 0.0;
+  for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
+  if (!models[itype * (atom->ntypes + 1) + jtype])
+    runin_liggghts::one(lmp, FLERR, "pair runin/asperity: single() before the pair was initialised");
+  double **state_rows = fix_wear && reshape ? fix_wear->state() : nullptr;
+  const double *state = state_rows ? state_rows[0] : nullptr;
+  // this contact's history in i's neighbour list (a copy: single() must not advance it)
+  auto history_of = [&](double *history) {
+    if (!list || !list->listgranhistory || !list->listgranhistory->firstdouble)
+      runin_liggghts::one(lmp, FLERR, "pair runin/asperity: single() needs the contact history (run setup first)");
+    runin_pair::copy_history(neighbours(), i, j, history_size, history);
+  };
+  runin_pair::SingleContact contact;
+  runin_liggghts::kernel_call(lmp, FLERR, "pair runin/asperity: single()", false, [&] {
+    contact = runin_pair::single_contact<FixRuninWearStateLiggghts>(loop_atoms(), state,
+                                                                    *models[itype * (atom->ntypes + 1) + jtype],
+                                                                    choice, plastic_normal(), i, j, rsq, history_of);
+  });
+  return contact.returned(fforce, svector);
 }

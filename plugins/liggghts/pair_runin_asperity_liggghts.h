@@ -8,7 +8,10 @@
 
 #include "pair.h"
 
-#include "../lammps/runin_contact_sums.h"
+#include "pair_contacts.h"
+#include "pair_increments.h"
+#include "runin_contact_range.h"
+#include "runin_contact_sums.h"
 #include "tribo/contact_model.h"
 
 #include <array>
@@ -29,6 +32,7 @@ class PairRuninAsperityLiggghts : public Pair, public RuninContactSource {
   void init_style() override;
   void init_list(int, class NeighList *) override;
   double init_one(int, int) override;
+  double single(int, int, int, int, double, double, double, double &) override;
   void reset_dt() override;
   void *extract(const char *, int &) override;
   double memory_usage() override;
@@ -36,6 +40,8 @@ class PairRuninAsperityLiggghts : public Pair, public RuninContactSource {
   const RuninContactSums &contact_sums() const override { return sums; }
   void measure_body(int groupbit) override { body_groupbit = groupbit; }
   class FixRuninWearStateLiggghts *wear_state() const { return fix_wear; }
+  // The run's contacts beyond their normal law's range: one WARNING (collective; at the end of each run).
+  void report_contact_range();
 
  protected:
   int history_size;
@@ -52,48 +58,26 @@ class PairRuninAsperityLiggghts : public Pair, public RuninContactSource {
   int computeflag;    // read by LIGGGHTS's contact history fix (extract("computeflag"))
   double *maxrad;
 
-  // wear, transfer and flattening increments of one step, owned atoms only (newton off: no ghost shares)
-  static constexpr int NINCREMENT = 3;
-  enum Increment { INC_LOST = 0, INC_GAINED, INC_FLATTENED };
-  double *increment;
-  int nmax_increment;
-  int *worn_owned;
-  int nworn_owned;
-  void add_flattening(int i, double depth, int nlocal)
-  {
-    if (i >= nlocal) return;
-    double *slot = &increment[NINCREMENT * i];
-    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
-    slot[INC_FLATTENED] = slot[INC_FLATTENED] > depth ? slot[INC_FLATTENED] : depth;
-    if (was_zero && slot[INC_FLATTENED] != 0.0) worn_owned[nworn_owned++] = i;
-  }
-  void add_wear(int i, double lost, double gained, int nlocal)
-  {
-    if (i >= nlocal) return;
-    double *slot = &increment[NINCREMENT * i];
-    const bool was_zero = slot[0] == 0.0 && slot[1] == 0.0 && slot[2] == 0.0;
-    slot[0] += lost;
-    slot[1] += gained;
-    if (was_zero && (slot[0] != 0.0 || slot[1] != 0.0)) worn_owned[nworn_owned++] = i;
-  }
-  struct TouchingPair {
-    int i, j;
-    double *history;
-  };
-  std::vector<TouchingPair> touching;
+  // wear, transfer and flattening increments of one step (newton off: owned atoms only)
+  runin_pair::Increments increments;
+  std::vector<runin_pair::TouchingPair> touching;
+  runin_host::ContactRangeMonitor contact_range;
 
   class FixContactHistory *fix_history;
   class FixRuninWearStateLiggghts *fix_wear;
 
   void allocate();
-  void grow_increments();
-  template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG> void eval(int eflag);
+  // The force loop, specialised at compile time on the sub-models and features in use (as the LAMMPS pair).
+  template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG> [[gnu::flatten]] void eval(int eflag);
   using EvalFunction = void (PairRuninAsperityLiggghts::*)(int);
   static constexpr int NFLAGS = 4;
   template <int... Index>
   static std::array<EvalFunction, sizeof...(Index)> eval_table(std::integer_sequence<int, Index...>);
-  runin::tribo::ContactGeometry contact_geometry(int i, int j, double overlap, double rinv, const double *del,
-                                                 double flat) const;
+  // The shared pass (pair_contacts.h): its adaptor (no film: friction junction/film is refused in settings()), and
+  // its view of the atoms and of the neighbour list with the contact history (eval and single())
+  friend struct runin_pair::PairHost<PairRuninAsperityLiggghts, false>;
+  runin_pair::Atoms<int> loop_atoms() const;
+  runin_pair::Neighbours neighbours() const;
   runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);
   void set_sub_model(runin::tribo::SubModelKind kind, const std::string &name);
   bool plastic_normal() const;

@@ -50,6 +50,69 @@ struct ContactGeometry {
   double film_coverage = 0.0;
 };
 
+// The kinematic part of a contact's geometry, shared by every host (pair loops, single(), wall). The arithmetic
+// is fixed: hosts that must print the same digits call these, never a copy.
+namespace geometry_detail {
+inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline void cross3(const double *a, const double *b, double *out)
+{
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+// v_n, then v_t = v_r - v_n n + n x spin (the contact point's velocity of i relative to the counter-body)
+inline void relative_velocities(ContactGeometry &g, const double *vr, const double *spin)
+{
+  g.normal_velocity = dot3(vr, g.normal);
+  double spin_velocity[3];
+  cross3(g.normal, spin, spin_velocity);
+  for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * g.normal[k] + spin_velocity[k];
+}
+}    // namespace geometry_detail
+
+// Spheres i and j (radius, mass, velocity, angular velocity) at centre distance 1 / rinv along del = x_i - x_j,
+// interfering by `overlap`, with the flat radius `flat` of their worn summits: normal towards i, m*, R* and the
+// relative velocities of i at the contact point. The summit drops are the host's.
+inline ContactGeometry sphere_sphere_geometry(double overlap, double rinv, const double *del, double flat,
+                                              double radi, double radj, double massi, double massj,
+                                              const double *vi, const double *vj, const double *omegai,
+                                              const double *omegaj)
+{
+  ContactGeometry g;
+  const double radsum = radi + radj;
+  g.overlap = overlap;
+  g.flat_radius = flat;
+  for (int k = 0; k < 3; k++) g.normal[k] = del[k] * rinv;
+  // m* = m_i m_j / (m_i + m_j) and R* = r_i r_j / (r_i + r_j) from one division
+  const double mass_sum = massi + massj;
+  const double inv_sums = 1.0 / (mass_sum * radsum);
+  g.effective_mass = massi * massj * radsum * inv_sums;
+  g.effective_radius = radi * radj * mass_sum * inv_sums;
+  const double vr[3] = {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]};
+  const double spin[3] = {radi * omegai[0] + radj * omegaj[0], radi * omegai[1] + radj * omegaj[1],
+                          radi * omegai[2] + radj * omegaj[2]};
+  geometry_detail::relative_velocities(g, vr, spin);
+  return g;
+}
+
+// A sphere (radius, mass, velocity, angular velocity) on a rigid flat moving at `flat_velocity`, with the unit
+// normal from the flat to the sphere: R* is the sphere's radius, m* its mass.
+inline ContactGeometry sphere_flat_geometry(double overlap, const double *normal, double flat, double radius,
+                                            double mass, const double *v, const double *flat_velocity,
+                                            const double *omega)
+{
+  ContactGeometry g;
+  g.overlap = overlap;
+  g.flat_radius = flat;
+  g.effective_radius = radius;
+  g.effective_mass = mass;
+  for (int k = 0; k < 3; k++) g.normal[k] = normal[k];
+  const double vr[3] = {v[0] - flat_velocity[0], v[1] - flat_velocity[1], v[2] - flat_velocity[2]};
+  const double spin[3] = {radius * omega[0], radius * omega[1], radius * omega[2]};
+  geometry_detail::relative_velocities(g, vr, spin);
+  return g;
+}
+
 // Per-contact history stored by the host (zero for a new contact): the tangential slots, then the slots of
 // the normal model (NormalModel::history_slots); contact_history_size<NORMAL> values in all, at most
 // CONTACT_HISTORY_SIZE. Hertz keeps none, so its contacts carry 4 values (the neighbour-list history of a

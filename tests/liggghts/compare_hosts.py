@@ -4,18 +4,24 @@
   compare_hosts.py scene   --liggghts LG --lmp LMP --mpiexec MPIEXEC --np N --scene NAME --workdir DIR [--set V=X]
   compare_hosts.py bad     --liggghts LG --workdir DIR --pattern REGEX -- <deck lines>
   compare_hosts.py restart --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
+  compare_hosts.py warning --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR --pattern REGEX
+                           [--count K] [--set V=X]
 
 scene: runs the scene's LAMMPS deck (inputs/) with lmp_runin and its LIGGGHTS deck (tests/liggghts/decks/)
 with liggghts_runin, both at N ranks with the same variables, and compares every thermo column both print
 (the mu, wear and roughness entries of compute runin/friction and runin/roughness, the forces on the counter-body)
 row by row: relative difference <= 1e-10 (absolute below 1e-300 for zeros).
+The scene single_pair also checks the pair's single() (compute group/group) against its force loop (compute
+runin/friction [1]) in every row, loading and unloading.
 bad: one deck with a wrong style argument must stop with exit 1 and one ERROR line matching REGEX, no crash.
+warning: a LIGGGHTS deck runs to the end and prints exactly K (default 1) WARNING lines matching REGEX.
 restart: a LIGGGHTS restart deck (tests/liggghts/decks/in.restart_*) run as mode 0 (N/2 + N/2 steps), mode 1
 (N/2 steps, write_restart) and mode 2 (read_restart, N/2 steps): the final per-atom dumps of modes 0 and 2 and
 the thermo rows of their last run must be identical (bit for bit: every digit of %.17g), and the run must have
 contacts and wear (else the check would be empty).
 """
 import argparse
+import math
 import os
 import re
 import shutil
@@ -39,12 +45,21 @@ SCENES = {
     # rank's), so the worn geometry sent to ghosts enters the forces (without that send it fails at 2 ranks)
     "rough_slider_small": ("inputs/in.rough_slider", "tests/liggghts/decks/in.rough_slider",
                            {"nside": 10, "nsettle": 600, "nslide": 1400, "thermo_every": 100}, ()),
+    # wear no: plastic flattening alone changes the summits (no Archard wear on either host)
+    "rough_slider_nowear": ("inputs/in.rough_slider", "tests/liggghts/decks/in.rough_slider",
+                            {"nsettle": 600, "nslide": 1400, "thermo_every": 100, "wear": "no"}, ()),
     # rough on flat (fix runin/wall, servo-held load, wear, re-stick after a dwell); the deck prints 10 digits:
     # every digit for the comparison
     "runin_wall": ("inputs/in.runin_wall", "tests/liggghts/decks/in.runin_wall",
                    {"nload": 300, "nslide": 1500, "nhold": 200, "nresume": 500, "thermo_every": 100},
                    (("thermo_modify   format float %.10g", "thermo_modify   format float %.17g"),)),
+    # two summits pressed, slid and lifted: single() through compute group/group (c_pair) next to the loop's force
+    "single_pair": ("tests/liggghts/decks/in.single_pair.lammps", "tests/liggghts/decks/in.single_pair",
+                    {"nrun": 200, "nlift": 120, "thermo_every": 20}, ()),
 }
+# columns the LAMMPS deck of a scene must print (else the comparison would be empty)
+NEEDED = {"single_pair": {"c_pair", "c_pair[1]", "c_pair[2]", "c_pair[3]", "c_fric[1]"}}
+NEEDED_DEFAULT = {"c_fric[3]", "c_fric[5]", "c_fric[16]", "c_rough[2]", "c_rough[3]"}
 
 
 def run(command, workdir, log, np, mpiexec, variables, extra=()):
@@ -139,12 +154,62 @@ def scene(args):
                     worst = rel
                 if rel > TOLERANCE:
                     fail(f"step {lrow[0]} {name}: LAMMPS {a!r}, LIGGGHTS {b!r} (relative {rel:.3g} > {TOLERANCE})")
-    needed = {"c_fric[3]", "c_fric[5]", "c_fric[16]", "c_rough[2]", "c_rough[3]"}
+    needed = NEEDED.get(args.scene, NEEDED_DEFAULT)
     seen = {name for header, _ in logs["lammps"] for name in header}
     if not needed <= seen:
         fail(f"the LAMMPS deck does not print {sorted(needed - seen)}")
     print(f"{args.scene} at {args.np} rank(s): {compared} values in {len(logs['lammps'])} thermo tables, worst "
           f"relative difference {worst:.3g} (tolerance {TOLERANCE})")
+    if args.scene == "single_pair":
+        single_against_loop(logs)
+
+
+def single_against_loop(logs):
+    """single() (compute group/group: the normal force on the upper summit, F_n along x_2 - x_1) against the force
+    loop (compute runin/friction [1], F_n) on both hosts, in the pressing and the lifting run."""
+    for host, tables in logs.items():
+        if len(tables) != 2:
+            fail(f"{host}: expected the pressing and the lifting thermo tables, found {len(tables)}")
+        for run, (header, rows) in zip(("pressing", "lifting"), tables):
+            column = {strip(name): k for k, name in enumerate(header)}
+            touching = 0
+            for row in rows:
+                force = [float(row[column[f"pair[{k}]"]]) for k in (1, 2, 3)]
+                loop = float(row[column["fric[1]"]])
+                distance = [float(row[column[name]]) for name in ("dx", "dy", "dz")]
+                size = math.sqrt(sum(f * f for f in force))
+                along = sum(f * d for f, d in zip(force, distance)) / math.sqrt(sum(d * d for d in distance))
+                if abs(size - loop) > 1e-12 * loop or abs(along - size) > 1e-12 * max(size, 1e-300):
+                    fail(f"{host}, {run}, step {row[0]}: single() gives the normal force {force} (|F| {size!r}, "
+                         f"along x_2 - x_1 {along!r}), the force loop {loop!r}")
+                touching += loop > 0.0
+            if touching < len(rows) // 2:
+                fail(f"{host}, {run}: the summits press in only {touching} of {len(rows)} rows (empty check)")
+    print("single() (compute group/group) = the force loop's normal force in every row on both hosts, pressing and "
+          "lifting")
+
+
+def warning(args):
+    shutil.rmtree(args.workdir, ignore_errors=True)
+    os.makedirs(args.workdir)
+    os.symlink(os.path.join(SOURCE_DIR, "potentials"), os.path.join(args.workdir, "potentials"))
+    variables = dict(item.partition("=")[::2] for item in args.set or [])
+    command = run([args.liggghts], args.workdir, "log.liggghts", args.np, args.mpiexec, variables, ("-st",))
+    command[command.index("DECK")] = os.path.join(SOURCE_DIR, args.deck)
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True)
+    log = os.path.join(args.workdir, "log.liggghts")
+    text = open(log).read() if os.path.exists(log) else ""
+    if result.returncode != 0:
+        fail(f"{' '.join(command)} exited with {result.returncode}\n{result.stderr[-1500:]}\n{text[-1500:]}")
+    if args.np > 1 and used_ranks(text) != args.np:
+        fail(f"the run did not use {args.np} MPI ranks")
+    matching = [line for line in text.splitlines() if line.startswith("WARNING") and re.search(args.pattern, line)]
+    if len(matching) != args.count:
+        fail(f"expected {args.count} WARNING line(s) matching {args.pattern!r}, got {matching}")
+    values = [word for _, rows in thermo_blocks(text) for row in rows for word in row]
+    if any(re.fullmatch(r"[-+]?(nan|inf)", word, re.I) for word in values):
+        fail("a thermo value is not finite")
+    print(f"ok: {matching[0]}")
 
 
 def bad(args):
@@ -224,17 +289,21 @@ def main():
     p.add_argument("--workdir", required=True)
     p.add_argument("--pattern", required=True)
     p.add_argument("lines", nargs="+")
-    p = sub.add_parser("restart")
-    p.add_argument("--liggghts", required=True)
-    p.add_argument("--mpiexec", default="mpiexec")
-    p.add_argument("--np", type=int, default=1)
-    p.add_argument("--deck", required=True)
-    p.add_argument("--workdir", required=True)
+    for mode in ("restart", "warning"):    # a LIGGGHTS deck at N ranks
+        p = sub.add_parser(mode)
+        p.add_argument("--liggghts", required=True)
+        p.add_argument("--mpiexec", default="mpiexec")
+        p.add_argument("--np", type=int, default=1)
+        p.add_argument("--deck", required=True)
+        p.add_argument("--workdir", required=True)
+    p.add_argument("--pattern", required=True)
+    p.add_argument("--count", type=int, default=1)
+    p.add_argument("--set", action="append", metavar="NAME=VALUE", help="a deck variable")
     args = parser.parse_args()
     args.liggghts = os.path.abspath(args.liggghts)
     if getattr(args, "lmp", None):
         args.lmp = os.path.abspath(args.lmp)
-    {"scene": scene, "bad": bad, "restart": restart}[args.mode](args)
+    {"scene": scene, "bad": bad, "restart": restart, "warning": warning}[args.mode](args)
 
 
 if __name__ == "__main__":

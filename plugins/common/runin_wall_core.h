@@ -350,7 +350,6 @@ void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **hi
               StepLocal<Tag> &out)
 {
   using ::MathExtra::cross3;
-  using ::MathExtra::dot3;
   sums = LAMMPS_NS::RuninContactSums();
   const bool track_wear = advance && c.parameters.wear_coefficient > 0.0;
   const tribo::ContactModel &model = *c.model;
@@ -370,36 +369,28 @@ void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **hi
     const double r = radius[i];
     // a worn summit sits lower by its wear depth and carries a flat (pair runin/asperity reshape)
     const double summit_drop = worn_geometry ? wear_state[i][WearFix::WEAR_DEPTH] : 0.0;
-    tribo::ContactGeometry g;
-    g.overlap = r - summit_drop - side_sign * (x[i][2] - wall_z);
-    if (g.overlap <= 0.0) {
+    const double overlap = r - summit_drop - side_sign * (x[i][2] - wall_z);
+    if (overlap <= 0.0) {
       // the spring and slip belong to one contact; the largest interference belongs to the asperity under
       // this flat and stays, so a reload retraces the elastic unloading curve up to it
       for (int k = 0; k < HISTORY_SIZE; k++)
         if (!tribo::is_plastic_history(k)) history[i][k] = 0.0;
       continue;
     }
-    if (g.overlap + std::max(summit_drop, 0.0) > r) {
+    if (overlap + std::max(summit_drop, 0.0) > r) {
       // past the centre of the intact sphere (worn or flattened summits included): no sphere contact law
       // holds (the run stops after the reduction)
       local[LOCAL_THROUGH] += 1.0;
       out.first_through = std::min(out.first_through, tag[i]);
     }
-    g.flat_radius = worn_geometry ? wear_state[i][WearFix::FLAT_RADIUS] : 0.0;
+    const double flat = worn_geometry ? wear_state[i][WearFix::FLAT_RADIUS] : 0.0;
+    tribo::ContactGeometry g =
+        tribo::sphere_flat_geometry(overlap, normal, flat, r, rmass[i], v[i], wall_velocity, omega[i]);
     g.summit_drop = std::max(summit_drop, 0.0);
     // a flattened summit under a contact without plastic history is a reload: the model restores the state
     // that flattened it (the history kept below normally holds it already)
     if (worn_geometry && summit_drop > 0.0 && !(history[i][tribo::HISTORY_MAX_OVERLAP] > 0.0))
       g.flattened_drop = tribo::flattened_part_of_drop(r, summit_drop, wear_state[i][WearFix::VOLUME_FLATTENED]);
-    g.effective_radius = r;    // a flat wall: the asperity's own radius
-    g.effective_mass = rmass[i];
-    for (int k = 0; k < 3; k++) g.normal[k] = normal[k];
-    const double vr[3] = {v[i][0] - wall_velocity[0], v[i][1] - wall_velocity[1], v[i][2] - wall_velocity[2]};
-    g.normal_velocity = dot3(vr, normal);
-    const double spin[3] = {r * omega[i][0], r * omega[i][1], r * omega[i][2]};
-    double spin_velocity[3];
-    cross3(normal, spin, spin_velocity);
-    for (int k = 0; k < 3; k++) g.tangential_velocity[k] = vr[k] - g.normal_velocity * normal[k] + spin_velocity[k];
 
     const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, 1>(g, history[i], dt, advance);
     const double fn = contact.normal_force;
