@@ -4,6 +4,7 @@
   wear_jump.py archard     --lmp LMP --workdir DIR
   wear_jump.py ranks       --lmp LMP --workdir DIR [--mpiexec MPIEXEC]
   wear_jump.py convergence --lmp LMP --workdir DIR
+  wear_jump.py max_change  --lmp LMP --workdir DIR
 
 Steel1020 on Steel1020 (R 100 um, sigma 0.2 um per body) at 5 MPa, Archard k lowered to mild wear through the
 pair's wear_scale (k = 7e-3 x accel). Asserted (doc/fix_runin_wear_jump.rst):
@@ -11,6 +12,10 @@ archard: k = 1e-5, 12^2 summits, to h = 1 nm: the sliding the jumps stand for is
   > 20 x the distance run) and the worn volume of both bodies is Archard's at the equivalent distance,
   h + h_cf = 2 k p s / H within 1e-3; each jump adds at most max_depth to h + h_cf.
 ranks: the same cell at 16^2 summits, 1 and 2 MPI ranks, every output value within 1e-9 relative.
+max_change: k = 1e-5, 12^2 summits, to h = 2 nm, the mean-depth cap max_depth 10 nm (it would move the summits in
+  contact by hundreds of nm in one jump) and the state tolerance max_change 8 nm: no jump changes a summit's height by
+  more than max_change, jumps are reduced to it with a WARNING naming it, and the worn volume stays Archard's at the
+  equivalent distance (1e-3).
 convergence (study, ~10 min): 24^2 summits to h = 5 nm, 2 seeds: halving max_depth (0.05 -> 0.025 nm), and k = 1e-6
   against 1e-5 (the mild-wear limit), change the seed means of mu_body(h) and Rq(h) by < 3 % RMS over h = 1-5 nm;
   worn depths Archard's to 1 %. The severe k = 7e-3 without jumps is printed beside them (not asserted).
@@ -18,6 +23,7 @@ convergence (study, ~10 min): 24^2 summits to h = 5 nm, 2 seeds: halving max_dep
 import argparse
 import math
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -84,6 +90,42 @@ def ranks(args):
     print(f"{len(one)} rows with jumps, largest relative difference between 1 and 2 ranks {worst:.3g}")
     if worst > 1e-9:
         fail(f"the jumped cell depends on the number of ranks: relative difference {worst:.3g} > 1e-9")
+    print("PASS")
+
+
+def max_change(args):
+    """fix runin/wear/jump ... max_change Z bounds each jump by the largest change of one summit's height."""
+    fresh_dir(args.workdir)
+    k, max_depth, bound = 1.0e-5, 1.0e-8, 8.0e-9
+    # the deck with the fix's largest per-summit change of the last jump (vector entry 5) as an extra column
+    with open(DECK) as f:
+        text = f.read()
+    record = "v_mu_adh v_mu_plough v_contacts format"
+    if record not in text:
+        fail(f"{DECK}: the output line '{record}' was not found: update this test's copy of the deck")
+    deck = os.path.join(args.workdir, "in.rve_rough_change")
+    with open(deck, "w") as f:
+        f.write(text.replace(record, "v_mu_adh v_mu_plough v_contacts f_jump[5] format"))
+    variables = cell_variables(k, 12, 2.0e-9, max_depth)
+    variables["jump_max_change"] = bound
+    log = run_lammps(args, deck, variables, log="log.cell")
+    path = os.path.join(args.workdir, "cell.dat")
+    if not os.path.exists(path):
+        fail("cell.dat: no output")
+    rows = [dict(zip(COLUMNS + ("change",), r)) for r in numeric_table(path)]
+    largest = max(r["change"] for r in rows)
+    if largest > bound * (1.0 + 1e-9):
+        fail(f"a jump changed a summit's height by {largest:.6g} m > max_change {bound:g} m")
+    unbounded = [float(x) for x in re.findall(r"a summit's height would change by (\S+), the jump is kept within "
+                                               r"max_change", log)]
+    if not unbounded or max(unbounded) <= bound:
+        fail("no jump was reduced to max_change (WARNING naming it): the test does not reach the tolerance")
+    last = rows[-1]
+    ratio = (last["h"] + last["h_cf"]) / (2.0 * k * PRESSURE * last["s"] / H)
+    if abs(ratio - 1.0) > 1e-3:
+        fail(f"h + h_cf = {last['h'] + last['h_cf']:.6g} m is {ratio:.6f} x Archard at the equivalent distance")
+    print(f"largest change of a summit per jump {largest:.6g} m (max_change {bound:g} m; unbounded up to "
+          f"{max(unbounded):.4g} m); h + h_cf = {ratio:.6f} x Archard at s = {last['s']:.5g} m")
     print("PASS")
 
 
@@ -158,13 +200,13 @@ def convergence(args):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("mode", choices=["archard", "ranks", "convergence"])
+    parser.add_argument("mode", choices=["archard", "ranks", "convergence", "max_change"])
     parser.add_argument("--lmp", required=True)
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--mpiexec", default="mpiexec")
     args = parser.parse_args()
     args.workdir = os.path.abspath(args.workdir)
-    {"archard": archard, "ranks": ranks, "convergence": convergence}[args.mode](args)
+    {"archard": archard, "ranks": ranks, "convergence": convergence, "max_change": max_change}[args.mode](args)
 
 
 if __name__ == "__main__":
