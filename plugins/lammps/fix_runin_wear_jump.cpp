@@ -75,7 +75,9 @@ FixRuninWearJump::FixRuninWearJump(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "fix runin/wear/jump: {}, got keyword '{}'", usage, arg[iarg]);
     }
   }
-  depth_now = max_depth;
+  // with rate the jumps start small and grow while the state allows (an ODE stepper's start): the first phases
+  // see the plastic shakedown of the loaded summits, before any measurement of it
+  depth_now = rate_variable.empty() ? max_depth : 1e-3 * max_depth;
 
   scalar_flag = 1;
   vector_flag = 1;
@@ -239,23 +241,26 @@ double FixRuninWearJump::compute_vector(int n)
 void FixRuninWearJump::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double list[8] = {static_cast<double>(phase_start_step), extra_steps, jumps, reduced_jumps, last_factor,
+  // list[0] < 0 marks this layout by its length; the first layout (6 values) began with the phase start step >= 0
+  const double list[9] = {-9.0, static_cast<double>(phase_start_step), extra_steps, jumps, reduced_jumps, last_factor,
                           largest_change, depth_now, rate_previous};
   const int size = sizeof(list);
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(list, sizeof(double), 8, fp);
+  fwrite(list, sizeof(double), 9, fp);
 }
 
 void FixRuninWearJump::restart(char *buf)
 {
-  const auto *list = reinterpret_cast<const double *>(buf);
+  auto *list = reinterpret_cast<const double *>(buf);
+  const bool tagged = list[0] < 0.0;    // this layout (9 values); else the first (6 values, no rate state)
+  if (tagged) ++list;
   phase_start_step = static_cast<bigint>(list[0]);
   extra_steps = list[1];
   jumps = list[2];
   reduced_jumps = list[3];
   last_factor = list[4];
   largest_change = list[5];
-  if (!rate_variable.empty()) {    // the controller's state; without rate the jump depth is this definition's
+  if (tagged && !rate_variable.empty()) {    // the controller's state; without rate the depth is this definition's
     depth_now = list[6];
     rate_previous = list[7];
   }

@@ -5,6 +5,7 @@
   wear_jump.py ranks       --lmp LMP --workdir DIR [--mpiexec MPIEXEC]
   wear_jump.py convergence --lmp LMP --workdir DIR
   wear_jump.py max_change  --lmp LMP --workdir DIR
+  wear_jump.py deep        --lmp LMP --workdir DIR [--max-change Z] [--rate T] [--depth H]
 
 Steel1020 on Steel1020 (R 100 um, sigma 0.2 um per body) at 5 MPa, Archard k lowered to mild wear through the
 pair's wear_scale (k = 7e-3 x accel). Asserted (doc/fix_runin_wear_jump.rst):
@@ -16,6 +17,11 @@ max_change: k = 1e-5, 12^2 summits, to h = 2 nm, the mean-depth cap max_depth 10
   contact by hundreds of nm in one jump) and the state tolerance max_change 8 nm: no jump changes a summit's height by
   more than max_change, jumps are reduced to it with a WARNING naming it, and the worn volume stays Archard's at the
   equivalent distance (1e-3).
+deep (study, ~15 min on 2 cores): the deep law's cell (inputs/homogenise_steel_mild_deep.toml: 24^2 summits at
+  5 MPa, junction at the oxidised state, k = 1e-5) to h = 200 nm, seeds 11 and 12, with the jump controlled by the
+  state (max_change Z and rate T) and with both halved: the seed means of mu_body and Rq on the law's depth grid
+  (0, then 16 points geometric from 0.03 nm) differ by < 3 % RMS; Rq and mu_body settle within the depth (their
+  change over sigma / 10 of h below 1 % of the first sigma / 10's); worn depths Archard's to 1 %.
 convergence (study, ~10 min): 24^2 summits to h = 5 nm, 2 seeds: halving max_depth (0.05 -> 0.025 nm), and k = 1e-6
   against 1e-5 (the mild-wear limit), change the seed means of mu_body(h) and Rq(h) by < 3 % RMS over h = 1-5 nm;
   worn depths Archard's to 1 %. The severe k = 7e-3 without jumps is printed beside them (not asserted).
@@ -198,15 +204,120 @@ def convergence(args):
     print("PASS")
 
 
+def law_grid(depth, points=16, first=3.0e-11):
+    """The deep law's depth grid: 0, then `points` depths geometric from `first` to `depth`."""
+    return [0.0] + [first * (depth / first) ** (i / (points - 1)) for i in range(points)]
+
+
+def on_grid(rows, column, grid):
+    """Rq linear in h between rows; mu_body the mean of the rows between the neighbouring grid depths (sliding rows
+    only; linear in h as Rq where a jump left none there), close to how runin homogenise resamples a sample."""
+    rows = [r for r in rows if r["s"] > 0.0]
+    out = []
+    for i, h in enumerate(grid):
+        low = grid[i - 1] if i > 0 else 0.0
+        high = grid[i + 1] if i + 1 < len(grid) else h
+        values = [r[column] for r in rows if low <= r["h"] <= high]
+        if column == "rq" or not values:    # mu_body without rows there (a jump over it): linear as Rq
+            above = next(j for j, r in enumerate(rows) if r["h"] >= h)
+            if above == 0:
+                out.append(rows[0][column])
+                continue
+            a, b = rows[above - 1], rows[above]
+            out.append(a[column] + (b[column] - a[column]) * (h - a["h"]) / (b["h"] - a["h"]))
+        else:
+            out.append(sum(values) / len(values))
+    return out
+
+
+def window_curve(rows, column, edges):
+    """Rq linear in h at each edge; mu_body the mean of the sliding rows within half a window of it."""
+    if column == "rq":
+        return on_grid(rows, "rq", edges)
+    half = 0.5 * (edges[1] - edges[0])
+    out = []
+    for e in edges:
+        values = [r[column] for r in rows if r["s"] > 0.0 and abs(r["h"] - e) <= half]
+        if not values:
+            fail(f"no rows with h within {half:g} m of {e:g} m")
+        out.append(sum(values) / len(values))
+    return out
+
+
+def settled_depth(rows_per_seed, column, window):
+    """The first h (a multiple of window) from which the seed-mean column changes over one window by less than 1 % of
+    its change over the first window; None if it does not within the rows."""
+    top = min(rows[-1]["h"] for rows in rows_per_seed)
+    edges = [k * window for k in range(int(top / window) + 1)]
+    curve = [sum(v) / len(v) for v in zip(*(window_curve(rows, column, edges) for rows in rows_per_seed))]
+    first = abs(curve[1] - curve[0])
+    for k in range(1, len(curve) - 1):
+        if abs(curve[k + 1] - curve[k]) < 0.01 * first:
+            return edges[k], first, curve
+    return None, first, curve
+
+
+def deep(args):
+    """The deep law's jump control (max_change, rate) against both halved, 5 MPa, seeds 11 and 12."""
+    fresh_dir(args.workdir)
+    k, seeds, sigma = 1.0e-5, (11, 12), 2.0e-7
+    setups = {"deep": (args.max_change, args.rate), "half": (0.5 * args.max_change, 0.5 * args.rate)}
+    cells = {}
+    for name, (change, rate) in setups.items():
+        for seed in seeds:
+            v = cell_variables(k, 24, args.depth, 5.0e-11, seed=seed, out=f"{name}_s{seed}.dat")
+            v.update({"nout": 200, "nslide": 5000000, "friction": "junction", "interface": "oxidised",
+                      "jump_max_change": change, "jump_rate": rate})
+            cells[f"{name}_s{seed}"] = v
+    runs = run_all(args, cells)
+    for name, rows in runs.items():
+        last = rows[-1]
+        ratio = (last["h"] + last["h_cf"]) / (2.0 * k * PRESSURE * last["s"] / H)
+        print(f"{name}: {int(last['step'] - rows[0]['step'])} sliding steps to h = {1e9 * last['h']:.4g} nm, "
+              f"s = {last['s']:.5g} m, worn depth {ratio:.5f} x Archard k p s / H")
+        if abs(ratio - 1.0) > 0.01:
+            fail(f"{name}: worn depth {ratio:.5f} x Archard's k p s / H")
+    grid = law_grid(args.depth)
+    means = {}
+    for name in setups:
+        for column in ("mu", "rq"):
+            per_seed = [on_grid(runs[f"{name}_s{seed}"], column, grid) for seed in seeds]
+            means[name, column] = [sum(v) / len(v) for v in zip(*per_seed)]
+    print("h [nm] | deep mu_body, Rq [nm] | half mu_body, Rq [nm]")
+    for i, h in enumerate(grid):
+        print(f"{1e9 * h:.4g} | " + " | ".join(f"{means[name, 'mu'][i]:.4f}, {1e9 * means[name, 'rq'][i]:.1f}"
+                                                for name in setups))
+    failures = []
+    for column in ("mu", "rq"):
+        rms = rms_relative(means["deep", column], means["half", column])
+        print(f"tolerances halved: {column}(h) RMS difference {100 * rms:.2f} % over the law's grid")
+        if rms > 0.03:
+            failures.append(f"tolerances halved: {column}(h) differs by {100 * rms:.2f} % RMS > 3 %")
+    for column in ("rq", "mu"):
+        depth, first, _ = settled_depth([runs[f"deep_s{seed}"] for seed in seeds], column, 0.1 * sigma)
+        if depth is None:
+            failures.append(f"{column} has not settled by h = {1e9 * args.depth:g} nm")
+        else:
+            print(f"{column} settled from h = {1e9 * depth:.0f} nm (change over sigma/10 below 1 % of the first "
+                  f"sigma/10's, {first:.4g})")
+    if failures:
+        fail("; ".join(failures))
+    print("PASS")
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("mode", choices=["archard", "ranks", "convergence", "max_change"])
+    parser.add_argument("mode", choices=["archard", "ranks", "convergence", "max_change", "deep"])
     parser.add_argument("--lmp", required=True)
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--mpiexec", default="mpiexec")
+    parser.add_argument("--max-change", type=float, default=3.2e-8, help="deep: max_change Z [m]")
+    parser.add_argument("--rate", type=float, default=0.01, help="deep: rate tolerance T")
+    parser.add_argument("--depth", type=float, default=2.0e-7, help="deep: depth [m]")
     args = parser.parse_args()
     args.workdir = os.path.abspath(args.workdir)
-    {"archard": archard, "ranks": ranks, "convergence": convergence, "max_change": max_change}[args.mode](args)
+    {"archard": archard, "ranks": ranks, "convergence": convergence, "max_change": max_change,
+     "deep": deep}[args.mode](args)
 
 
 if __name__ == "__main__":
