@@ -6,6 +6,7 @@
   wear_jump.py convergence --lmp LMP --workdir DIR
   wear_jump.py max_change  --lmp LMP --workdir DIR
   wear_jump.py deep        --lmp LMP --workdir DIR [--max-change Z] [--rate T] [--depth H]
+  wear_jump.py settled     --law LAW.json    (no LAMMPS: where a built law's Rq and mu_body settle, per pressure)
 
 Steel1020 on Steel1020 (R 100 um, sigma 0.2 um per body) at 5 MPa, Archard k lowered to mild wear through the
 pair's wear_scale (k = 7e-3 x accel). Asserted (doc/fix_runin_wear_jump.rst):
@@ -305,19 +306,66 @@ def deep(args):
     print("PASS")
 
 
+def settled(args):
+    """Per pressure of a built state law: the depth from which the seed-mean Rq and mu_body change over sigma/10 of h
+    by less than 1 % of their change over the first sigma/10 (linear in h between the law's points), and the
+    range of mu_body and of Rq."""
+    import json
+    with open(args.law) as f:
+        law = json.load(f)
+    sigma, grid = law["surface"]["sigma"], law["worn_depth"]
+    window = 0.1 * sigma
+    edges = [k * window for k in range(int(grid[-1] / window + 1e-9) + 1)]
+
+    def at(values, h):
+        j = next(j for j in range(1, len(grid)) if grid[j] >= h)
+        return values[j - 1] + (values[j] - values[j - 1]) * (h - grid[j - 1]) / (grid[j] - grid[j - 1])
+
+    if len(edges) < 3:
+        print(f"depth axis to {1e9 * grid[-1]:.4g} nm, shorter than two windows of sigma/10 = {1e9 * window:.4g} nm: "
+              f"not settled")
+        return
+    unsettled = []
+    for i, p in enumerate(law["pressure"]):
+        line = [f"p = {p / 1e6:.3g} MPa:"]
+        for name in ("rq", "mu_body"):
+            values = law["fields"][name]["mean"][i]
+            curve = [at(values, e) for e in edges]
+            first = abs(curve[1] - curve[0])
+            depth = next((edges[k] for k in range(1, len(curve) - 1)
+                          if abs(curve[k + 1] - curve[k]) < 0.01 * first), None)
+            scale = 1e9 if name == "rq" else 1.0
+            line.append(f"{name} {scale * values[0]:.4g} -> {scale * values[-1]:.4g}, settled from "
+                        + (f"h = {1e9 * depth:.0f} nm" if depth is not None else "- (not settled)"))
+            if depth is None:
+                unsettled.append(f"{name} at {p:g} Pa")
+        print("; ".join(line))
+    print(f"depth axis to {1e9 * grid[-1]:.4g} nm = {grid[-1] / sigma:.3g} sigma; windows of sigma/10 = "
+          f"{1e9 * window:.4g} nm")
+    if unsettled:
+        print("not settled: " + ", ".join(unsettled))
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("mode", choices=["archard", "ranks", "convergence", "max_change", "deep"])
-    parser.add_argument("--lmp", required=True)
-    parser.add_argument("--workdir", required=True)
+    parser.add_argument("mode", choices=["archard", "ranks", "convergence", "max_change", "deep", "settled"])
+    parser.add_argument("--lmp")
+    parser.add_argument("--workdir")
+    parser.add_argument("--law", help="settled: a state law (JSON)")
     parser.add_argument("--mpiexec", default="mpiexec")
     parser.add_argument("--max-change", type=float, default=3.2e-8, help="deep: max_change Z [m]")
     parser.add_argument("--rate", type=float, default=0.01, help="deep: rate tolerance T")
     parser.add_argument("--depth", type=float, default=2.0e-7, help="deep: depth [m]")
     args = parser.parse_args()
-    args.workdir = os.path.abspath(args.workdir)
+    if args.mode == "settled":
+        if not args.law:
+            parser.error("settled needs --law")
+    elif not (args.lmp and args.workdir):
+        parser.error(f"{args.mode} needs --lmp and --workdir")
+    else:
+        args.workdir = os.path.abspath(args.workdir)
     {"archard": archard, "ranks": ranks, "convergence": convergence, "max_change": max_change,
-     "deep": deep}[args.mode](args)
+     "deep": deep, "settled": settled}[args.mode](args)
 
 
 if __name__ == "__main__":
