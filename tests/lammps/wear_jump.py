@@ -14,7 +14,7 @@ archard: k = 1e-5, 12^2 summits, to h = 1 nm: the sliding the jumps stand for is
   > 20 x the distance run) and the worn volume of both bodies is Archard's at the equivalent distance,
   h + h_cf = 2 k p s / H within 1e-3; each jump adds at most max_depth to h + h_cf.
 ranks: the same cell at 16^2 summits, 1 and 2 MPI ranks, every output value within 1e-9 relative.
-max_change: k = 1e-5, 12^2 summits, to h = 2 nm, the mean-depth cap max_depth 10 nm (it would move the summits in
+max_change: k = 1e-5, 12^2 summits, to h = 1 nm, the mean-depth cap max_depth 10 nm (it would move the summits in
   contact by hundreds of nm in one jump) and the state tolerance max_change 8 nm: no jump changes a summit's height by
   more than max_change, jumps are reduced to it with a WARNING naming it, and the worn volume stays Archard's at the
   equivalent distance (1e-3).
@@ -113,7 +113,7 @@ def max_change(args):
     deck = os.path.join(args.workdir, "in.rve_rough_change")
     with open(deck, "w") as f:
         f.write(text.replace(record, "v_mu_adh v_mu_plough v_contacts f_jump[5] format"))
-    variables = cell_variables(k, 12, 2.0e-9, max_depth)
+    variables = cell_variables(k, 12, 1.0e-9, max_depth)
     variables["jump_max_change"] = bound
     log = run_lammps(args, deck, variables, log="log.cell")
     path = os.path.join(args.workdir, "cell.dat")
