@@ -21,8 +21,9 @@ max_change: k = 1e-5, 12^2 summits, to h = 1 nm, the mean-depth cap max_depth 10
 deep (study, ~15 min on 2 cores): the deep law's cell (inputs/homogenise_steel_mild_deep.toml: 24^2 summits at
   5 MPa, junction at the oxidised state, k = 1e-5) to h = 200 nm, seeds 11 and 12, with the jump controlled by the
   state (max_change Z and rate T) and with both halved: the seed means of mu_body and Rq on the law's depth grid
-  (0, then 16 points geometric from 0.03 nm) differ by < 3 % RMS; Rq and mu_body settle within the depth (their
-  change over sigma / 10 of h below 1 % of the first sigma / 10's); worn depths Archard's to 1 %.
+  (0, then 16 points geometric from 0.03 nm) differ by < 3 % RMS; Rq settles within the depth (its change over
+  sigma / 10 of h below 1 % of the first sigma / 10's); mu_body (no run-in: Tabor's junction value from the first
+  contacts) changes by < 1 % of its value per sigma / 10 past the first; worn depths Archard's to 1 %.
 convergence (study, ~10 min): 24^2 summits to h = 5 nm, 2 seeds: halving max_depth (0.05 -> 0.025 nm), and k = 1e-6
   against 1e-5 (the mild-wear limit), change the seed means of mu_body(h) and Rq(h) by < 3 % RMS over h = 1-5 nm;
   worn depths Archard's to 1 %. The severe k = 7e-3 without jumps is printed beside them (not asserted).
@@ -270,7 +271,11 @@ def deep(args):
             v.update({"nout": 200, "nslide": 5000000, "friction": "junction", "interface": "oxidised",
                       "jump_max_change": change, "jump_rate": rate})
             cells[f"{name}_s{seed}"] = v
-    runs = run_all(args, cells)
+    analyse_deep(args, run_all(args, cells), setups, seeds)
+
+
+def analyse_deep(args, runs, setups, seeds):
+    k, sigma = 1.0e-5, 2.0e-7
     for name, rows in runs.items():
         last = rows[-1]
         ratio = (last["h"] + last["h_cf"]) / (2.0 * k * PRESSURE * last["s"] / H)
@@ -294,13 +299,21 @@ def deep(args):
         print(f"tolerances halved: {column}(h) RMS difference {100 * rms:.2f} % over the law's grid")
         if rms > 0.03:
             failures.append(f"tolerances halved: {column}(h) differs by {100 * rms:.2f} % RMS > 3 %")
-    for column in ("rq", "mu"):
-        depth, first, _ = settled_depth([runs[f"deep_s{seed}"] for seed in seeds], column, 0.1 * sigma)
-        if depth is None:
-            failures.append(f"{column} has not settled by h = {1e9 * args.depth:g} nm")
-        else:
-            print(f"{column} settled from h = {1e9 * depth:.0f} nm (change over sigma/10 below 1 % of the first "
-                  f"sigma/10's, {first:.4g})")
+    depth, first, _ = settled_depth([runs[f"deep_s{seed}"] for seed in seeds], "rq", 0.1 * sigma)
+    if depth is None:
+        failures.append(f"Rq has not settled by h = {1e9 * args.depth:g} nm")
+    else:
+        print(f"rq settled from h = {1e9 * depth:.0f} nm (change over sigma/10 below 1 % of the first "
+              f"sigma/10's, {first:.4g})")
+    # mu_body of the junction cell has no run-in to settle: Tabor's value from the first contacts, its change per
+    # sigma/10 past the first is at the rows' noise; it must stay within 1 % of its value
+    depth, first, curve = settled_depth([runs[f"deep_s{seed}"] for seed in seeds], "mu", 0.1 * sigma)
+    later = max(abs(b - a) for a, b in zip(curve[1:], curve[2:]))
+    print(f"mu_body: change over the first sigma/10 {first:.4g}, largest later {later:.4g} "
+          f"({100 * later / curve[-1]:.3f} % of its value), "
+          + (f"settled from h = {1e9 * depth:.0f} nm" if depth is not None else "never below 1 % of the first"))
+    if later > 0.01 * curve[-1]:
+        failures.append(f"mu_body changes by {later:.4g} over sigma/10 past the first, > 1 % of its value")
     if failures:
         fail("; ".join(failures))
     print("PASS")
