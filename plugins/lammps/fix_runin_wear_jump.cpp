@@ -29,11 +29,13 @@ constexpr int kReportedReductions = 5;    // WARNINGs for reduced jumps before t
 }
 
 FixRuninWearJump::FixRuninWearJump(LAMMPS *lmp, int narg, char **arg) :
-    RuninPeratomColumns(lmp, narg, arg, kColumns, "runin/wear/jump:phase_start"), factor(1.0), max_depth(0.0), max_change(0.0), rate_tolerance(0.0), depth_now(0.0), rate_previous(0.0),
+    RuninPeratomColumns(lmp, narg, arg, kColumns, "runin/wear/jump:phase_start"), factor(1.0), max_depth(0.0),
+    max_change(0.0), rate_tolerance(0.0), depth_now(0.0), rate_previous(0.0),
     phase_start_step(0), extra_steps(0.0),
     jumps(0.0), reduced_jumps(0.0), last_factor(1.0), largest_change(0.0), wear_state(nullptr), phase_started(false)
 {
-  constexpr const char *usage = "expected 'fix ID group runin/wear/jump N M max_depth D [max_change Z] [rate v_name T]'";
+  constexpr const char *usage =
+      "expected 'fix ID group runin/wear/jump N M max_depth D [max_change Z] [rate v_name T]'";
   if (narg < 7 || strcmp(arg[5], "max_depth") != 0)
     error->all(FLERR, "fix runin/wear/jump: {}{}", usage,
                narg < 7 ? fmt::format(", got {} arguments", narg - 3) : fmt::format(", got keyword '{}'", arg[5]));
@@ -149,9 +151,12 @@ void FixRuninWearJump::end_of_step()
     if (!std::isfinite(value))
       error->all(FLERR, "fix runin/wear/jump: rate variable v_{} is {} at step {}", rate_variable, value,
                  update->ntimestep);
-    if (rate_previous != 0.0)
-      depth_now = runin::tribo::jump_depth_by_rate(depth_now, std::fabs(value - rate_previous) / std::fabs(rate_previous),
-                                                   rate_tolerance, max_depth);
+    if (rate_previous != 0.0) {
+      const double change = std::fabs(value - rate_previous) / std::fabs(rate_previous);
+      depth_now = runin_lammps::kernel_call(lmp, FLERR, "fix runin/wear/jump", true, [&] {
+        return runin::tribo::jump_depth_by_rate(depth_now, change, rate_tolerance, max_depth);
+      });
+    }
     rate_previous = value;
   }
   double extra = runin_lammps::kernel_call(lmp, FLERR, "fix runin/wear/jump", true, [&] {
