@@ -13,7 +13,8 @@ pair's wear_scale (k = 7e-3 x accel). Asserted (doc/fix_runin_wear_jump.rst):
 archard: k = 1e-5, 12^2 summits, to h = 1 nm: the sliding the jumps stand for is counted (equivalent distance
   > 20 x the distance run) and the worn volume of both bodies is Archard's at the equivalent distance,
   h + h_cf = 2 k p s / H within 1e-3; each jump adds at most max_depth to h + h_cf.
-ranks: the same cell at 16^2 summits, 1 and 2 MPI ranks, every output value within 1e-9 relative.
+ranks: the same cell at 16^2 summits, 1 and 2 MPI ranks, every output value within 1e-9 relative (--controls: with
+  the jump controlled by the state, max_change 8 nm and rate 2 %).
 max_change: k = 1e-5, 12^2 summits, to h = 1 nm, the mean-depth cap max_depth 10 nm (it would move the summits in
   contact by hundreds of nm in one jump) and the state tolerance max_change 8 nm: no jump changes a summit's height by
   more than max_change, jumps are reduced to it with a WARNING naming it, and the worn volume stays Archard's at the
@@ -88,8 +89,10 @@ def ranks(args):
     fresh_dir(args.workdir)
     runs = []
     for np in (1, 2):
-        run_lammps(args, DECK, cell_variables(1.0e-5, 16, 1.0e-9, 1.0e-10, out=f"np{np}.dat"), log=f"log.np{np}",
-                   np=np)
+        variables = cell_variables(1.0e-5, 16, 1.0e-9, 1.0e-10, out=f"np{np}.dat")
+        if args.controls:    # the deep law's jump control: bisection on the largest summit change, rate on Rq
+            variables.update(jump_max_change=8.0e-9, jump_rate=0.02)
+        run_lammps(args, DECK, variables, log=f"log.np{np}", np=np)
         runs.append(rows_of(args, f"np{np}.dat"))
     one, two = runs
     if len(one) != len(two):
@@ -365,6 +368,7 @@ def main():
     parser.add_argument("--lmp")
     parser.add_argument("--workdir")
     parser.add_argument("--law", help="settled: a state law (JSON)")
+    parser.add_argument("--controls", action="store_true", help="ranks: with jump_max_change and jump_rate")
     parser.add_argument("--mpiexec", default="mpiexec")
     parser.add_argument("--max-change", type=float, default=3.2e-8, help="deep: max_change Z [m]")
     parser.add_argument("--rate", type=float, default=0.01, help="deep: rate tolerance T")
