@@ -325,7 +325,8 @@ def analyse_deep(args, runs, setups, seeds):
 def settled(args):
     """Per pressure of a built state law: the depth from which the seed-mean Rq and mu_body change over sigma/10 of h
     by less than 1 % of their change over the first sigma/10 (linear in h between the law's points), and the
-    range of mu_body and of Rq."""
+    range of mu_body and of Rq. mu_body without a run-in (its later changes within 1 % of its value) counts as
+    settled, as in the deep study."""
     import json
     with open(args.law) as f:
         law = json.load(f)
@@ -353,6 +354,11 @@ def settled(args):
             scale = 1e9 if name == "rq" else 1.0
             line.append(f"{name} {scale * values[0]:.4g} -> {scale * values[-1]:.4g}, settled from "
                         + (f"h = {1e9 * depth:.0f} nm" if depth is not None else "- (not settled)"))
+            if name == "mu_body":    # no run-in (junction): its later changes against its value, as the study
+                later = max(abs(b - a) for a, b in zip(curve[1:], curve[2:]))
+                line[-1] += f" (largest change per sigma/10 past the first {100 * later / curve[-1]:.3f} % of it)"
+                if depth is None and later <= 0.01 * curve[-1]:
+                    continue
             if depth is None:
                 unsettled.append(f"{name} at {p:g} Pa")
         print("; ".join(line))
