@@ -208,6 +208,8 @@ void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &de
   if (c.jump_max_depth > 0.0)    // M unbounded: the mean depth per jump sets each jump
     vars.insert(vars.end(), {{"jump", "1e12"}, {"jump_every", std::to_string(c.jump_every)},
                              {"jump_max_depth", g17(c.jump_depth_at(s.pressure))}});
+  if (c.jump_max_change > 0.0) vars.emplace_back("jump_max_change", g17(c.jump_max_change));
+  if (c.jump_rate > 0.0) vars.emplace_back("jump_rate", g17(c.jump_rate));
   std::string text = "# runin homogenise: sample " + s.key + " (" + s.label() + ")\n";
   text += "log " + quoted(s.log().string()) + "\n";
   text += "print \"$(version)\" file " + quoted((s.dir / "lammps_version").string()) + " screen no\n";
@@ -440,6 +442,12 @@ void check_deck(const HomogeniseCase &c, const fs::path &deck, const std::string
   if (c.jump_max_depth > 0.0 && deck_variable(deck_text, "jump").empty())
     throw InputError(c.path + ": key 'wear.jump_max_depth': the deck " + deck.string() +
                      " does not support cycle jumping (it has no jump variable; inputs/in.rve_rough does)");
+  if (c.jump_max_change > 0.0 && deck_variable(deck_text, "jump_max_change").empty())
+    throw InputError(c.path + ": key 'wear.jump_max_change': the deck " + deck.string() +
+                     " has no jump_max_change variable (inputs/in.rve_rough has)");
+  if (c.jump_rate > 0.0 && deck_variable(deck_text, "jump_rate").empty())
+    throw InputError(c.path + ": key 'wear.jump_rate': the deck " + deck.string() +
+                     " has no jump_rate variable (inputs/in.rve_rough has)");
   // accelerated wear is valid only in a cell whose law in h does not depend on it; the deck says so
   const double top = *std::max_element(c.acceleration.begin(), c.acceleration.end());
   if (top > 1.0 && deck_variable(deck_text, "accel_invariant") != "yes")

@@ -26,7 +26,7 @@ const Schema &schema() {
       {"surface", {"R", "sigma", "spacing", "nside", "heights"}},
       {"sliding", {"speed"}},
       {"contact", {"friction", "interface"}},
-      {"wear", {"k", "jump_max_depth", "jump_every", "jump_reference_pressure"}},
+      {"wear", {"k", "jump_max_depth", "jump_every", "jump_reference_pressure", "jump_max_change", "jump_rate"}},
       {"run", {"launcher"}},
       {"grid",
        {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "depth_first", "nslide",
@@ -195,6 +195,23 @@ void read_wear(const CaseReader &reader, const tribo::MaterialFile &materials, H
       reader.fail("wear.jump_reference_pressure", "needs wear.jump_max_depth (cycle jumping is off without it)");
     c.jump_reference_pressure = reader.positive("wear.jump_reference_pressure");
   }
+  if (reader.has("wear.jump_max_change")) {
+    if (!(c.jump_max_depth > 0.0))
+      reader.fail("wear.jump_max_change", "needs wear.jump_max_depth (cycle jumping is off without it)");
+    c.jump_max_change = reader.positive("wear.jump_max_change");
+    if (!(c.jump_max_change < c.sigma))
+      reader.fail("wear.jump_max_change",
+                  fmt::format("must be below surface.sigma ({:g} m), got {:g}: one jump would move a summit by more "
+                              "than the height spread of the surface", c.sigma, c.jump_max_change));
+  }
+  if (reader.has("wear.jump_rate")) {
+    if (!(c.jump_max_change > 0.0))
+      reader.fail("wear.jump_rate", "needs wear.jump_max_change (the rate-controlled jumps grow up to it)");
+    c.jump_rate = reader.positive("wear.jump_rate");
+    if (!(c.jump_rate < 1.0))
+      reader.fail("wear.jump_rate", fmt::format("must be below 1 (a relative change of Rq per cycle), got {:g}",
+                                                c.jump_rate));
+  }
 }
 
 // What is wrong with a launcher text (empty: nothing); its words into `words`.
@@ -275,6 +292,8 @@ nlohmann::json HomogeniseCase::wear_json() const {
     out["jump_max_depth"] = jump_max_depth;
     out["jump_every"] = jump_every;
     if (jump_reference_pressure > 0.0) out["jump_reference_pressure"] = jump_reference_pressure;
+    if (jump_max_change > 0.0) out["jump_max_change"] = jump_max_change;
+    if (jump_rate > 0.0) out["jump_rate"] = jump_rate;
   }
   return out;
 }

@@ -48,6 +48,10 @@ struct HomogeniseCase {
   double jump_max_depth = 0.0;   // cycle jumping (fix runin/wear/jump): mean depth per jump, h + h_cf [m]; 0: off
   long jump_every = 1000;        // steps per phase of the jumps
   double jump_reference_pressure = 0.0;  // > 0: the tolerance at pressure p is jump_max_depth x p / this
+  double jump_max_change = 0.0;  // > 0: largest change of one summit's height per jump [m], at every p (the state
+                                 // tolerance of a deep law: doc/fix_runin_wear_jump.rst, "Choosing the jump")
+  double jump_rate = 0.0;        // > 0: the jump's mean depth from Rq's measured relative change per cycle (needs
+                                 // jump_max_change; jump_max_depth is the first jump's)
   // The jump tolerance of the sample at pressure p: the summits in contact move about D / (contact fraction) per
   // jump and that fraction goes with p, so D proportional to p keeps their change per jump the same at every p.
   double jump_depth_at(double pressure) const {

@@ -2,7 +2,7 @@
 """`runin homogenise` of a mild-wear law ([wear] k = 1e-5 with cycle jumping) and of a dry junction law ([contact]
 friction junction at the file's oxidised state) on inputs/in.rve_rough.
 
-  check_homogenise_mild.py --runin RUNIN --lmp LMP --workdir DIR [--mode wear|contact]
+  check_homogenise_mild.py --runin RUNIN --lmp LMP --workdir DIR [--mode wear|contact|deep]
 
 AISI 1020 (potentials/Steel1020.runin, whose pair k is the severe 7e-3), 8^2 + 7^2 summits, 2 and 8 MPa, one seed,
 to h = 0.5 nm on a geometric depth grid (grid.depth_first). Asserted: the law records the wear table (k,
@@ -14,11 +14,15 @@ contact: the same cell at the file's k with [contact] friction = "junction", int
 the table, and its mu_body at every grid point is Tabor's f / sqrt(alpha (1 - f^2)) for f = the file's oxidised m
 and alpha = 12, within 5 % (every contact of a worn rough-on-rough cell is a plastic junction; the rest is the
 normal forces' tilt, ~2-3 %, doc/interface_strength.md).
+deep: the wear case with the jumps controlled by the state (wear.jump_max_change 16 nm, wear.jump_rate 2 %,
+inputs/homogenise_steel_mild_deep.toml's keys) to h = 3 nm: the law records them, each sample's fix runin/wear/jump
+ran with max_change and rate v_rq, and wear rates and sliding distances stay Archard's (1 %), as above.
 """
 import math
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 
@@ -89,11 +93,13 @@ def main():
     ap.add_argument("--runin", required=True)
     ap.add_argument("--lmp", required=True)
     ap.add_argument("--workdir", required=True)
-    ap.add_argument("--mode", choices=("wear", "contact"), default="wear")
+    ap.add_argument("--mode", choices=("wear", "contact", "deep"), default="wear")
     a = ap.parse_args()
     fresh_dir(a.workdir)
     case = os.path.join(a.workdir, "mild.toml")
     text = CASE
+    if a.mode == "deep":
+        text = text.replace("depth = 5.0e-10\n", "depth = 3.0e-9\n") + "jump_max_change = 1.6e-8\njump_rate = 0.02\n"
     if a.mode == "contact":
         # the even grid 0, 0.25, 0.5 nm: the geometric one's 0.1 nm point sits in the first encounters' 5 % bump
         text = text[:text.index("[wear]")].replace("depth_points = 4\ndepth_first = 1.0e-10\n", "depth_points = 3\n")
@@ -112,8 +118,19 @@ def main():
         check_contact(law)
         return
     wear = law["samples"].get("wear")
-    if wear != {"k": K, "jump_max_depth": 5.0e-11, "jump_every": 1000, "jump_reference_pressure": P_REF}:
-        fail(f"the law's samples.wear is {wear}")
+    want_wear = {"k": K, "jump_max_depth": 5.0e-11, "jump_every": 1000, "jump_reference_pressure": P_REF}
+    if a.mode == "deep":
+        want_wear.update(jump_max_change=1.6e-8, jump_rate=0.02)
+    if wear != want_wear:
+        fail(f"the law's samples.wear is {wear}, want {want_wear}")
+    if a.mode == "deep":    # each sample's jump fix ran with the state's controls
+        for entry in law["samples"]["list"]:
+            log = open(os.path.join(a.workdir, "cache", entry["key"], "log.lammps")).read()
+            ran = re.findall(r"runin/wear/jump 1000 1e12 max_depth \S+ max_change ([0-9.e+-]+) rate v_rq ([0-9.e+-]+)",
+                             log)
+            if not ran or abs(float(ran[-1][0]) / 1.6e-8 - 1) > 1e-12 or abs(float(ran[-1][1]) / 0.02 - 1) > 1e-12:
+                fail(f"sample at p = {entry['pressure']:g} Pa: its log has no fix runin/wear/jump with max_change "
+                     f"1.6e-08 and rate v_rq 0.02 (found {ran})")
     # each sample's deck got the tolerance D p / P_REF (wear.jump_reference_pressure)
     for entry in law["samples"]["list"]:
         deck = open(os.path.join(a.workdir, "cache", entry["key"], "sample.in")).read()
@@ -123,7 +140,10 @@ def main():
             fail(f"sample at p = {entry['pressure']:g} Pa ran with jump_max_depth {got:g}, want D p / P_ref = {want:g}")
     # the geometric depth grid (grid.depth_first): 0, then 1e-10 .. 5e-10 m in ratio 5^(1/2)
     grid = law["worn_depth"]
-    if len(grid) != 4 or grid[0] != 0.0 or abs(grid[1] / 1e-10 - 1) > 1e-12 or abs(grid[2] / (1e-10 * 5 ** 0.5) - 1) > 1e-12:
+    if a.mode == "deep" and grid[-1] != 3.0e-9:
+        fail(f"worn-depth grid {grid}: does not end at the case's 3 nm")
+    if a.mode == "wear" and (len(grid) != 4 or grid[0] != 0.0 or abs(grid[1] / 1e-10 - 1) > 1e-12
+                             or abs(grid[2] / (1e-10 * 5 ** 0.5) - 1) > 1e-12):
         fail(f"worn-depth grid {grid}: not 0, then geometric from 1e-10 to 5e-10 m")
     worst = 0.0
     for i, p in enumerate(law["pressure"]):

@@ -4,7 +4,7 @@
   verify_micro.py impact --lmp LMP --workdir DIR                     elastic: energy, Hertz contact time
   verify_micro.py impact --lmp LMP --workdir DIR --restitution E...  damped: rebound / impact speed = e
   verify_micro.py wear-budget --lmp LMP --workdir DIR [--mpiexec M --np N]
-  verify_micro.py restart --lmp LMP --workdir DIR [--jump M]         write_restart/read_restart bit for bit
+  verify_micro.py restart --lmp LMP --workdir DIR [--jump M [--jump-rate T --jump-max-depth D]]  bit for bit
                                                                      (--jump: with fix runin/wear/jump)
 
 Decks: tests/lammps/decks/in.impact_pair, in.slider_verify, in.slider_verify_restart.
@@ -31,6 +31,8 @@ def run_lmp(args, deck, variables, log, np=1):
     variables = dict(variables, normal=normal)
     if getattr(args, "jump", 1.0) > 1.0:
         variables["jump"] = args.jump    # fix runin/wear/jump from the slide on (the decks' jump variables)
+        if getattr(args, "jump_rate", 0.0) > 0.0:
+            variables.update(jump_rate=args.jump_rate, jump_max_depth=args.jump_max_depth)
     if normal == "elastic/plastic" and "load" not in variables:
         variables["load"] = PLASTIC_LOAD
     return thermo_blocks(run_lammps(args, os.path.join(DECKS, deck), variables, log, np))
@@ -167,7 +169,7 @@ def restart(args):
         os.rename(os.path.join(args.workdir, "state.restarted.dump"),
                   os.path.join(args.workdir, f"state.restarted_{respecify}.dump"))
     if args.jump > 1.0:
-        # the jump fix's global state (equivalent steps, jumps, last factor) continues as well
+        # the jump fix's global state (equivalent steps, jumps, last factor, the rate controller's depth) continues
         def jump_line(log):
             lines = [line for line in open(os.path.join(args.workdir, log)) if line.startswith("JUMP ")]
             if not lines:
@@ -209,6 +211,9 @@ def main():
             p.add_argument("--restitution", type=float, nargs="+")
         if name == "restart":
             p.add_argument("--jump", type=float, default=1.0, help="jump factor of fix runin/wear/jump (1: none)")
+            p.add_argument("--jump-rate", type=float, default=0.0, help="with --jump: its rate tolerance (the "
+                           "controller's state restarts too)")
+            p.add_argument("--jump-max-depth", type=float, default=1.0, help="with --jump-rate: its max_depth")
     args = parser.parse_args()
     {"impact": impact, "wear-budget": wear_budget, "restart": restart}[args.command](args)
 
