@@ -145,9 +145,10 @@ double law_interface_factor(const CaseReader &reader, const coupling::StateLaw &
 
 }  // namespace
 
-std::optional<continuum::FilmSettings> read_film(const CaseReader &reader, const continuum::SlidingFriction &friction) {
-  if (!reader.has("film")) return std::nullopt;
-  const auto *state = friction.state_law();
+void read_film(const CaseReader &reader, const continuum::SlidingFriction &friction,
+               const std::string &counterface_refusal) {
+  if (!reader.has("film")) return;
+  auto *state = friction.state_law();
   if (!state) reader.fail("film", "a surface film needs friction.model = \"state_law\" (the law's contact fraction)");
   const auto &law = *state->law;
   const auto samples = law.metadata().value("samples", nlohmann::json::object());
@@ -171,8 +172,13 @@ std::optional<continuum::FilmSettings> read_film(const CaseReader &reader, const
                  : law_interface_factor(reader, law, "film.interface", reader.text("film.interface", ""));
   f.removal_distance = reader.number("film.removal_distance", 0.0);
   f.growth_rate = reader.number("film.growth_rate", 0.0);
-  if (reader.has("film.counterface_coverage") || reader.has("film.counterface_removal_distance") ||
-      reader.has("film.counterface_growth_rate")) {
+  bool counterface = false;
+  for (const char *key : {"film.counterface_coverage", "film.counterface_removal_distance", "film.counterface_growth_rate"})
+    if (reader.has(key)) {
+      if (!counterface_refusal.empty()) reader.fail(key, counterface_refusal);
+      counterface = true;
+    }
+  if (counterface) {
     continuum::CounterfaceFilm c;
     c.coverage = reader.number("film.counterface_coverage", 1.0);
     c.removal_distance = reader.number("film.counterface_removal_distance", 0.0);
@@ -186,7 +192,7 @@ std::optional<continuum::FilmSettings> read_film(const CaseReader &reader, const
     const auto colon = what.find(": ");
     reader.fail(what.substr(0, colon), what.substr(colon + 2));
   }
-  return f;
+  state->film = f;
 }
 
 namespace {
@@ -574,7 +580,7 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
   if (reader.has("sweep")) read_pin_sweep(reader, c, state_law);
   read_wear_steps(reader, c, state_law);
   c.wear_steps.stop_times = c.vtk_times;
-  if (auto film = read_film(reader, *c.friction)) c.friction->state_law()->film = std::move(film);
+  read_film(reader, *c.friction);
   return c;
 }
 

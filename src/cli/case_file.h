@@ -74,9 +74,12 @@ tribo::Material read_runin_material(const std::string &path, const std::string &
 
 class CaseReader;
 // [film] of an element on a state law (doc/surface_films.md, "In an element"): coverage, f_film or interface (a state
-// of the law's material file), removal_distance, growth_rate; f_base and alpha from the law (samples.contact, a
-// junction law); the law must have its contact_fraction field. nullopt without [film]; bad input fails naming the key.
-std::optional<continuum::FilmSettings> read_film(const CaseReader &reader, const continuum::SlidingFriction &friction);
+// of the law's material file), removal_distance, growth_rate, counterface_*; f_base and alpha from the law
+// (samples.contact, a junction law); the law must have its contact_fraction field. Sets the state law's film; nothing
+// without [film]. Bad input fails naming the key; so does a counterface_* key when `counterface_refusal` (the
+// element's reason) is not empty.
+void read_film(const CaseReader &reader, const continuum::SlidingFriction &friction,
+               const std::string &counterface_refusal = {});
 const std::set<std::string> &film_keys();
 
 // A file named in a case file: an absolute path as given; a relative one against the case file's directory, else

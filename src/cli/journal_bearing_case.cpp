@@ -175,16 +175,10 @@ JournalBearingCase read_journal_bearing_case(const std::string &path, const std:
       reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
   c.friction = read_friction(reader, law_path);
   check_law_materials(reader, *c.friction, law_path, "contact.bearing_material", c.bearing_material_name, "contact.shaft_material", c.shaft_material_name);
-  if (auto film = read_film(reader, *c.friction)) {
-    // one shaft passes both halves: its film would be one state shared by them, which the halves' nodes do not hold
-    if (film->counterface)
-      for (const char *key : {"film.counterface_coverage", "film.counterface_removal_distance",
-                              "film.counterface_growth_rate"})
-        if (reader.has(key))
-          reader.fail(key, "a film on the shaft is not modelled in the journal bearing (the bore's film is: drop the "
-                           "counterface_* keys)");
-    c.friction->state_law()->film = std::move(film);
-  }
+  // one shaft passes both halves: its film would be one state shared by them, which the halves' nodes do not hold
+  read_film(reader, *c.friction,
+            "a film on the shaft is not modelled in the journal bearing (the bore's film is: drop the counterface_* "
+            "keys)");
   c.alpha = c.friction->speed_coefficient();
   if (c.friction_model == "static_kinetic") {
     const double mu_static = reader.number("friction.mu_static");

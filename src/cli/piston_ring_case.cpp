@@ -393,16 +393,10 @@ PistonRingCase read_piston_ring_case(const std::string &path, const std::optiona
 
   c.friction = read_friction(reader, law_path);
   check_law_materials(reader, *c.friction, law_path, "material.ring_material", c.ring_material_name, "material.liner_material", c.liner_material_name);
-  if (auto film = read_film(reader, *c.friction)) {
-    // the liner is one surface under every ring of the pack and along the stroke: its film is not held per face cell
-    if (film->counterface)
-      for (const char *key : {"film.counterface_coverage", "film.counterface_removal_distance",
-                              "film.counterface_growth_rate"})
-        if (reader.has(key))
-          reader.fail(key, "a film on the liner is not modelled in the piston ring (the ring face's film is: drop "
-                           "the counterface_* keys)");
-    c.friction->state_law()->film = std::move(film);
-  }
+  // the liner is one surface under every ring of the pack and along the stroke: its film is not held per face cell
+  read_film(reader, *c.friction,
+            "a film on the liner is not modelled in the piston ring (the ring face's film is: drop the counterface_* "
+            "keys)");
   c.friction_model =
       reader.choice("friction.model", {"constant", "static_kinetic", "law_file", "feedback", "state_law"});
   const bool state_law = c.friction_model == "state_law";

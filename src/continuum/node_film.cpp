@@ -1,5 +1,7 @@
 #include "continuum/node_film.h"
 
+#include "tribo/contact_model.h"
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -51,7 +53,7 @@ double NodeFilm::contact_coverage(std::size_t node) const {
   return theta_cf_.empty() ? theta_[node] : 0.5 * (theta_[node] + theta_cf_[node]);
 }
 
-double NodeFilm::tabor(double f) const { return f / std::sqrt(s_.alpha * (1.0 - f * f)); }
+double NodeFilm::tabor(double f) const { return tribo::JunctionFrictionModel::tabor_sliding_ratio(f, s_.alpha); }
 
 double NodeFilm::friction_factor(std::size_t node) const {
   return tabor(tribo::FilmKinetics::interpolate(contact_coverage(node), s_.f_base, s_.f_film)) / tabor_base_;

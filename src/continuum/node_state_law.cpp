@@ -94,14 +94,15 @@ NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressur
   Increment inc;
   inc.body.assign(h_.size(), 0.0);
   inc.counterface.assign(h_.size(), 0.0);
-  if (film_) {  // at the contact fractions of the step's start (the film does not change the wear)
-    std::vector<double> phi(h_.size(), 0.0);
-    for (std::size_t i = 0; i < h_.size(); ++i)
-      if (pressure[i] > 0.0)
-        phi[i] = law_->value(StateField::ContactFraction, law_->slice(pressure[i], policy_), h_[i]);
-    film_->advance(phi, ds, dt, counterface_duty_);
-  }
-  if (ds == 0.0) return inc;
+  // the film moves at the contact fractions of the step's start (it does not change the wear); at rest it only regrows
+  std::vector<double> phi(film_ ? h_.size() : 0, 0.0);
+  if (ds > 0.0) wear_nodes(pressure, ds, inc, phi);
+  if (film_) film_->advance(phi, ds, dt, counterface_duty_);
+  return inc;
+}
+
+void NodeStateLaw::wear_nodes(const std::vector<double> &pressure, double ds, Increment &inc,
+                              std::vector<double> &phi) {
   const double n_real = std::isfinite(substep_) ? std::ceil(ds / substep_) : 1.0;
   if (n_real > 1e8) throw std::runtime_error("node state law: " + std::to_string(ds) + " m needs more than 1e8 sub-steps");
   const int n = std::max(1, static_cast<int>(n_real));
@@ -112,6 +113,7 @@ NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressur
     const double p = pressure[i];
     if (!(p > 0.0)) continue;
     const coupling::StateLaw::PressureSlice slice = law_->slice(p, policy_);  // p is held over the step
+    if (!phi.empty()) phi[i] = law_->value(StateField::ContactFraction, slice, h_[i]);
     double h = h_[i], c = 0.0;
     double w1, c1, w2, c2, w3, c3, w4, c4;
     if (h >= last_depth) {
@@ -135,7 +137,6 @@ NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressur
     h_[i] += inc.body[i];
     c_[i] += inc.counterface[i];
   }
-  return inc;
 }
 
 double NodeStateLaw::stable_contact_step(const std::vector<double> &pressure, double stiffness, double safety) {

@@ -77,6 +77,10 @@ class NodeStateLaw {
   double counterface_duty_ = 1.0;
   coupling::RangeUse use_;
   double substep_ = 0.0;
+
+  // RK4 of every loaded node's h over ds > 0 (advance()); phi (when not empty) gets each node's contact fraction at
+  // the step's start.
+  void wear_nodes(const std::vector<double> &pressure, double ds, Increment &inc, std::vector<double> &phi);
 };
 
 // One line for a summary: "N lookups, M clamped below p_min, K above p_max, L beyond the last worn depth".

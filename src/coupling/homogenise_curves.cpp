@@ -64,19 +64,16 @@ CellSeries cell_series(const coupling::AveTimeTable &table, double rough_summits
                                                                                   {"v_rq", &c.rq},
                                                                                   {"v_rsk", &c.rsk},
                                                                                   {"v_area_fraction", &c.area_fraction}}};
-  for (const auto &[name, out] : columns) {
-    *out = table.column(name);  // InputFormatError (a runtime_error) naming the file and the columns it has
-    for (std::size_t i = 0; i < out->size(); ++i)
-      if (!std::isfinite((*out)[i]))
+  const auto read = [&](const char *name, std::vector<double> &out) {
+    out = table.column(name);  // InputFormatError (a runtime_error) naming the file and the columns it has
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (!std::isfinite(out[i]))
         throw std::runtime_error(table.source() + ": " + name + " is not finite in data row " + std::to_string(i + 1));
-  }
+  };
+  for (const auto &[name, out] : columns) read(name, *out);
   if (rough_summits > 0.0 && table.has_column("v_contacts")) {
-    c.contact_fraction = table.column("v_contacts");
-    for (std::size_t i = 0; i < c.contact_fraction.size(); ++i) {
-      if (!std::isfinite(c.contact_fraction[i]))
-        throw std::runtime_error(table.source() + ": v_contacts is not finite in data row " + std::to_string(i + 1));
-      c.contact_fraction[i] /= rough_summits;
-    }
+    read("v_contacts", c.contact_fraction);
+    for (double &x : c.contact_fraction) x /= rough_summits;
   }
   return c;
 }

@@ -581,8 +581,11 @@ class JunctionFrictionModel {
       throw InvalidCoefficient(std::string("alpha: junction growth constant must be > 0 and finite, got ") + got);
     }
     elastic_ratio_ = f_ / std::sqrt(alpha_);
-    sliding_ratio_ = f_ / std::sqrt(alpha_ * (1.0 - f_ * f_));
+    sliding_ratio_ = tabor_sliding_ratio(f_, alpha_);
   }
+  // Tabor's closed form for a plastic junction at gross sliding, f / sqrt(alpha (1 - f^2)): the one formula the
+  // junction models and the elements' surface film (continuum/node_film.h) share.
+  static double tabor_sliding_ratio(double f, double alpha) { return f / std::sqrt(alpha * (1.0 - f * f)); }
   Coefficients values() const { return {f_, alpha_}; }
   static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
   {
@@ -660,7 +663,7 @@ class JunctionFilmFrictionModel {
     if (!(normal_force > 0.0)) return 0.0;
     const double f = interface_coefficient(theta);
     const double ratio = JunctionFrictionModel::plastic_junction(normal, flat_radius)
-                             ? f / std::sqrt(alpha_ * (1.0 - f * f))
+                             ? JunctionFrictionModel::tabor_sliding_ratio(f, alpha_)
                              : f / std::sqrt(alpha_);
     parts.adhesion = ratio * normal_force;
     return parts.adhesion;

@@ -40,13 +40,12 @@ from state_law import StateLaw  # noqa: E402
 
 CASE = os.path.join(SOURCE_DIR, "inputs", "pin_on_disk_film.toml")
 JB_CASE = os.path.join(SOURCE_DIR, "inputs", "journal_bearing_state_law.toml")
-JB_FILM = """
-[film]
-coverage = 1.0
-interface = "boundary"
-removal_distance = 2e-5
-growth_rate = 0.0
-"""
+
+
+def rise_film(removal_distance):
+    """The rise inputs as a [film] table appended to an element's case."""
+    return ("\n[film]\ncoverage = 1.0\ninterface = \"boundary\"\n"
+            f"removal_distance = {removal_distance!r}\ngrowth_rate = 0.0\n")
 LAW = os.path.join(SOURCE_DIR, "inputs", "state_law_steel_mild.json")
 P = 20.0 / (math.pi * 1.5e-3 ** 2)
 SPEED, S_R, F_FILM, F_BASE, ALPHA = 0.5, 0.05, 0.1, 0.8921, 12.0
@@ -191,7 +190,7 @@ def piston_ring(a):
         text = f.read().replace('"inputs/', f'"{SOURCE_DIR}/inputs/').replace('"potentials/', f'"{SOURCE_DIR}/potentials/')
     film_case = os.path.join(a.workdir, "pr_film.toml")
     with open(film_case, "w") as f:
-        f.write(text + JB_FILM.replace("2e-5", "2e-4"))
+        f.write(text + rise_film(2e-4))
     film = ring(film_case, os.path.join(a.workdir, "pr_film"))
     for k in ("A", "B"):
         r, b = film[k], bare[k]
@@ -213,7 +212,7 @@ def journal_bearing(a):
         return rows(os.path.join(out, "journal_bearing.csv"))
     bare = jb(JB_CASE, os.path.join(a.workdir, "jb_bare"))
     with open(JB_CASE) as f:
-        case = f.read().replace('law = "inputs/', f'law = "{SOURCE_DIR}/inputs/') + JB_FILM
+        case = f.read().replace('law = "inputs/', f'law = "{SOURCE_DIR}/inputs/') + rise_film(2e-5)
     film_case = os.path.join(a.workdir, "jb_film.toml")
     with open(film_case, "w") as f:
         f.write(case)
