@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The three dry machine elements, each on its own pair's dry state law (oxidised junctions, mild wear k = 1e-5 by
-cycle jumping): the Cu pin on the Al disk on inputs/state_law_cual.json, the steel journal bearing on the pipeline's
-inputs/state_law_steel_mild.json, the grey-iron ring pack on inputs/state_law_cast_iron.json.
+cycle jumping): the Cu pin on the Al disk on inputs/state_law_cual.json, the steel journal bearing on
+inputs/state_law_steel_mild_deep.json (the pipeline's cell taken to the settled depth; the pipeline itself passes the
+shallow law it builds), the grey-iron ring pack on inputs/state_law_cast_iron.json.
 
   check_dry_law_elements.py --runin RUNIN --workdir DIR
 
@@ -29,7 +30,7 @@ SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(SOURCE, "tools"))
 from runin_common import fail, interface_factor, law_material_file, material_hardness, run_or_fail  # noqa: E402
 
-LAWS = {"pin-on-disk": "state_law_cual.json", "journal-bearing": "state_law_steel_mild.json",
+LAWS = {"pin-on-disk": "state_law_cual.json", "journal-bearing": "state_law_steel_mild_deep.json",
         "piston-ring": "state_law_cast_iron.json"}
 TOLERANCE = 0.02
 # element, case, [(csv, [(label, volume column, load column or None for the pin's constant load, rough body?)])]

@@ -10,11 +10,18 @@ wear steps) and checks its summary against its own CSV and the law (doc/state_la
 - Archard's invariant: worn volume / (K W s) within 2 % of 1 for the pin and for the disk, K = the case's law's
   wear_rate (counterface_wear_rate) / p at its lowest grid pressure and h = 0; recomputed and equal to the summary's;
 - the slow steps are the CSV's rows after the first;
+- the law reaches the settled roughness at the pin's pressure, so the last column it holds beyond its last worn depth
+  is the settled state, not a truncation: Rq(p, h) of the law (the reader's interpolation) changes over a window of
+  sigma/10 of h by less than 1 % of its change over the first window from some depth inside the law on (the
+  criterion of doc/rve_cell.md, "Mild wear to the settled depth"), and Rq along the pin's path, Rq(p, h_mean), is
+  within 2 % of its end value from before the pin wears past the law's last depth (printed: that roughness run-in
+  distance, the settled depth and where the pin reaches it, the law lookups beyond the last depth);
 - check_state_law_pod.py on the output: mu_eff(s) and h(s) within 1 % of the law integrated directly along s at the
   uniform nominal pressure, F/W = the held mu_eff, disk/pin volume = 1, the three VTK frames.
 """
 import argparse
 import csv
+import json
 import math
 import os
 import re
@@ -48,6 +55,27 @@ def run_in(s, mu):
             break
         settle = s[k]
     return steady, settle
+
+
+def settled_depth(law, law_path, pressure):
+    """The first h (a multiple of sigma/10) from which the law's Rq at this pressure changes over sigma/10 by less
+    than 1 % of its change over the first sigma/10 (None: the law is too shallow or Rq still falls at its end)."""
+    with open(law_path) as f:
+        window = 0.1 * json.load(f)["surface"]["sigma"]
+    edges = [k * window for k in range(int(law.h[-1] / window + 1e-9) + 1)]
+    if len(edges) < 3:
+        return None
+    curve = [law.value("rq", pressure, e) for e in edges]
+    first = abs(curve[1] - curve[0])
+    return next((edges[k] for k in range(1, len(curve) - 1) if abs(curve[k + 1] - curve[k]) < 0.01 * first), None)
+
+
+def distance_at_depth(s, h, depth):
+    """The sliding distance at which the pin's mean worn depth reaches depth (linear between rows), or None."""
+    for k in range(1, len(s)):
+        if h[k] >= depth:
+            return s[k - 1] + (s[k] - s[k - 1]) * (depth - h[k - 1]) / (h[k] - h[k - 1])
+    return None
 
 
 def close(a, b, rel=1e-9):
@@ -119,6 +147,38 @@ def main():
         fail("no wear-steps line with %d slow steps" % steps)
 
     pressure = LOAD / (math.pi * FLAT_RADIUS ** 2)
+    # the roughness along the path and where the law's depth axis ends
+    h = [float(r["h_mean_m"]) for r in rows]
+    rq = [law.value("rq", pressure, x) for x in h]
+    rq_settle = None
+    for k in range(len(s) - 1, -1, -1):
+        if abs(rq[k] - rq[-1]) > SETTLE_TOLERANCE * rq[-1]:
+            break
+        rq_settle = s[k]
+    s_last = distance_at_depth(s, h, law.h[-1])
+    depth = settled_depth(law, law_path, pressure)
+    s_depth = None if depth is None else distance_at_depth(s, h, depth)
+    m = re.search(r"law lookups +(\d+) lookups: (\d+) clamped below p = \S+ Pa, (\d+) above p = \S+ Pa, (\d+) beyond",
+                  stdout)
+    if not m:
+        fail("no law lookups line")
+    lookups, below, above, beyond = (int(x) for x in m.groups())
+    print("law depth: last worn depth %.4g nm reached at s = %s m (%.4g %% of the sliding beyond it); lookups %d: "
+          "%d (%.3g %%) beyond the last worn depth, %d (%.3g %%) below the lowest pressure, %d above"
+          % (1e9 * law.h[-1], "%.4g" % s_last if s_last is not None else "-",
+             100 * (s[-1] - s_last) / s[-1] if s_last is not None else 0.0, lookups, beyond, 100 * beyond / lookups,
+             below, 100 * below / lookups, above))
+    print("roughness: Rq(p, h_mean) %.4g -> %.4g nm, within 2 %% of its end from s = %.4g m; the law's Rq at %.4g Pa "
+          "settled from h = %s nm (s = %s m)"
+          % (1e9 * rq[0], 1e9 * rq[-1], rq_settle, pressure, "%.4g" % (1e9 * depth) if depth is not None else "-",
+             "%.4g" % s_depth if s_depth is not None else "-"))
+    if depth is None:
+        fail("the law's Rq at %g Pa has not settled by its last worn depth %g m (change per sigma/10 not below 1 %% "
+             "of the first): holding its last column beyond it truncates the roughness run-in" % (pressure, law.h[-1]))
+    if s_last is not None and rq_settle > s_last:
+        fail("Rq along the path settles at s = %g m, after the pin wears past the law's last depth (s = %g m)"
+             % (rq_settle, s_last))
+
     check = subprocess.run([sys.executable, os.path.join(HERE, "check_state_law_pod.py"), out, "--law", law_path,
                             "--flat", repr(pressure), "--counterface-ratio", "1.0", "--vtk", "3",
                             "--min-distance", "999", "--no-expect-fall", "--min-mu-change", "0.004"], capture_output=True, text=True)
@@ -126,7 +186,7 @@ def main():
     if check.returncode != 0:
         fail("check_state_law_pod.py: " + check.stdout.strip().splitlines()[-1])
     print("tribometer: 1 km in %.3g s, %d slow steps, settles within 2 %% of mu = %.5g at s = %.4g m; Archard pin "
-          "%.5f, disk %.5f" % (wall, steps, steady, settle, ratios[0], ratios[1]))
+          "%.5f, disk %.5f; mu_eff %.6g -> %.6g" % (wall, steps, steady, settle, ratios[0], ratios[1], mu[0], mu[-1]))
     print("check_tribometer: ok")
 
 
