@@ -186,7 +186,7 @@ def main():
     if check.returncode != 0:
         fail("check_state_law_pod.py: " + check.stdout.strip().splitlines()[-1])
     print("tribometer: 1 km in %.3g s, %d slow steps, settles within 2 %% of mu = %.5g at s = %.4g m; Archard pin "
-          "%.5f, disk %.5f; mu_eff %.6g -> %.6g" % (wall, steps, steady, settle, ratios[0], ratios[1], mu[0], mu[-1]))
+          "%.5f, disk %.5f (mu_eff %.6g -> %.6g)" % (wall, steps, steady, settle, ratios[0], ratios[1], mu[0], mu[-1]))
     print("check_tribometer: ok")
 
 
