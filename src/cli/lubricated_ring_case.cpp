@@ -69,7 +69,7 @@ void read_ring_lubrication(const CaseReader &reader, LubricatedRingCase &c) {
   if (p.viscosity < 1e-5)
     reader.fail("lubrication.viscosity", "must be at least 1e-5 Pa s (a gas, not an oil), got " + CaseReader::format(p.viscosity));
   // cycle jumping makes cycles cheap, not free: 1e5 revolutions of the shipped case take 15 s (45 computed)
-  c.run.cycles = reader.positive_integer("lubrication.cycles", 0, 100000L);
+  c.run.cycles = reader.positive_integer("lubrication.cycles", 0, 1000000000L);   // cycle jumping: a mild-wear run-in is millions of revolutions
   if (c.run.cycles == 0) reader.fail("lubrication.cycles", "missing (required): engine cycles to run in");
   const std::string inlet = reader.choice("lubrication.inlet", {"flooded", "starved"}, std::string("flooded"));
   p.supply = inlet == "flooded" ? continuum::OilSupply::Flooded : continuum::OilSupply::Starved;

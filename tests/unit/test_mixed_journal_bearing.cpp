@@ -13,10 +13,11 @@ using namespace runin::continuum;
 
 namespace {
 
+// The shipped case's law: boundary-lubricated asperity contacts, k = 1e-6 (inputs/homogenise_steel_boundary.toml).
 std::shared_ptr<const runin::coupling::StateLaw> steel_law()
 {
   static auto law = std::make_shared<const runin::coupling::StateLaw>(
-      runin::coupling::StateLaw::read_file(std::string(RUNIN_SOURCE_DIR) + "/inputs/state_law_steel_rough.json"));
+      runin::coupling::StateLaw::read_file(std::string(RUNIN_SOURCE_DIR) + "/inputs/state_law_steel_boundary.json"));
   return law;
 }
 
@@ -98,57 +99,56 @@ TEST(MixedJournalBearing, StribeckRegimesMinimumAndPetroff)
 // the asperities, the law's severe dry wear rate) and the viscous friction creeps up by a few per cent.
 TEST(MixedJournalBearing, RunInReachesFilmEquilibrium)
 {
-  const MixedJournalBearingSystem sys(bearing());   // the shipped case (its grid), sampled every 30 s
+  const MixedJournalBearingSystem sys(bearing());   // the shipped case (its grid): 100 h, sampled every 600 s
   MixedRunSettings rs;
-  rs.t_end = 3600.0;
-  rs.output_interval = 30.0;
+  rs.t_end = 360000.0;
+  rs.output_interval = 600.0;
   std::vector<MixedSample> s;
   const MixedRunReport rep = run_in(sys, rs, [&](const MixedSample &x) { s.push_back(x); });
   ASSERT_TRUE(rep.ok()) << rep.message;
-  ASSERT_GT(s.size(), 100u);
+  ASSERT_GT(s.size(), 600u);
   const auto &law = *sys.parameters().law;
   const MixedSample &first = s.front(), &last = s.back();
   // starts mixed
   EXPECT_GT(first.lambda, 1.0);
   EXPECT_LT(first.lambda, 2.5);
   EXPECT_GT(first.asperity_share, 0.01);
-  // the run-in: share and friction fall monotonically until the friction minimum
+  // the run-in: the asperity share and R fall at every sample; friction too, within the law's seed scatter of
+  // mu_body (one step of 3e-4 at h ~ 0.1 nm) and the conformal creep of the viscous part once the film has the load
   std::size_t best = 0;
-  for (std::size_t k = 1; k < s.size(); ++k)
+  double worst_rise = 0.0;
+  for (std::size_t k = 1; k < s.size(); ++k) {
     if (s[k].mu < s[best].mu) best = k;
-  for (std::size_t k = 1; k <= best; ++k) {
-    EXPECT_LT(s[k].mu, s[k - 1].mu) << "t = " << s[k].t;
+    worst_rise = std::max(worst_rise, s[k].mu / s[k - 1].mu - 1.0);
     EXPECT_LT(s[k].asperity_share, s[k - 1].asperity_share) << "t = " << s[k].t;
     EXPECT_LE(s[k].sigma_contact, s[k - 1].sigma_contact) << "t = " << s[k].t;
   }
-  // the asperity share keeps falling to below 1e-4 and stays there
-  std::size_t tiny = s.size();
-  for (std::size_t k = 1; k < s.size(); ++k) {
-    if (tiny == s.size() && s[k].asperity_share < 1e-4) tiny = k;
-    if (tiny == s.size()) EXPECT_LT(s[k].asperity_share, s[k - 1].asperity_share) << "t = " << s[k].t;
-  }
-  ASSERT_LT(tiny, s.size());
-  for (std::size_t k = tiny; k < s.size(); ++k) EXPECT_LT(s[k].asperity_share, 1e-4) << "t = " << s[k].t;
-  // friction: a third of the start, the later creep within 15 % of the minimum
+  EXPECT_LT(worst_rise, 1e-3);
   EXPECT_LT(s[best].mu, 0.4 * first.mu);
-  EXPECT_LT(last.mu, 1.15 * s[best].mu);
-  // equilibrium of R over the last 20 % of the run
-  double r_lo = HUGE_VAL, r_hi = 0.0;
+  // equilibrium: friction settled (the last 30 % of the run within 1e-3), R's rate down by more than 1e3
+  double mu_lo = HUGE_VAL, mu_hi = 0.0;
   for (const auto &x : s)
-    if (x.t >= 0.8 * rs.t_end) r_lo = std::min(r_lo, x.sigma_contact), r_hi = std::max(r_hi, x.sigma_contact);
-  EXPECT_LT((r_hi - r_lo) / r_hi, 1e-3);
-  EXPECT_LT(last.sigma_contact, 0.6 * first.sigma_contact);
-  // because the film took over: the wear rate (bore volume per metre) fell by > 1e3
+    if (x.t >= 0.7 * rs.t_end) mu_lo = std::min(mu_lo, x.mu), mu_hi = std::max(mu_hi, x.mu);
+  EXPECT_LT((mu_hi - mu_lo) / mu_lo, 1e-3);
+  const MixedSample &a1 = s[1], &b1 = s[s.size() - 2];
+  const double r_rate0 = (first.sigma_contact - a1.sigma_contact) / (a1.t - first.t);
+  const double r_rate1 = (b1.sigma_contact - last.sigma_contact) / (last.t - b1.t);
+  EXPECT_LT(r_rate1, 1e-3 * r_rate0);
+  EXPECT_LT(last.sigma_contact, 0.7 * first.sigma_contact);
+  // because the film took over: the wear rate (bore volume per metre) fell by > 1e2
   const double rate0 = sys.wear_rates(rep.final_state, rep.initial).bore_volume;   // rates depend on p_a and h only
   const double rate1 = sys.wear_rates(rep.final_state, rep.final).bore_volume;
-  std::printf("run-in: mu %.5g -> min %.5g (t %.4g s) -> %.5g; share %.3g -> %.3g; lambda %.3g -> %.3g; R %.4g -> "
-              "%.4g nm; h_max %.4g nm (law's depths end at %.4g nm), journal %.4g nm; wear rate ratio %.3g; %ld steps\n",
-              first.mu, s[best].mu, s[best].t, last.mu, first.asperity_share, last.asperity_share, first.lambda,
-              last.lambda, 1e9 * first.sigma_contact, 1e9 * last.sigma_contact, 1e9 * last.h_max,
-              1e9 * law.worn_depth().back(), 1e9 * last.shaft_depth, rate1 / rate0, rep.steps);
-  EXPECT_LT(rate1, 1e-3 * rate0);
-  // honest bookkeeping: the worn depth of the contact runs beyond the law's table (rq held there)
-  EXPECT_GT(last.h_max, law.worn_depth().back());
+  std::printf("run-in: mu %.5g -> min %.5g (t %.4g s) -> %.5g (largest rise between samples %.3g, last 30 %% within "
+              "%.3g); share %.3g -> %.3g; lambda %.3g -> %.3g; R %.4g -> %.4g nm (rate ratio %.3g); h_max %.4g nm "
+              "(law's depths end at %.4g nm), journal %.4g nm; wear rate ratio %.3g; %ld steps\n",
+              first.mu, s[best].mu, s[best].t, last.mu, worst_rise, (mu_hi - mu_lo) / mu_lo, first.asperity_share,
+              last.asperity_share, first.lambda, last.lambda, 1e9 * first.sigma_contact, 1e9 * last.sigma_contact,
+              r_rate1 / r_rate0, 1e9 * last.h_max, 1e9 * law.worn_depth().back(), 1e9 * last.shaft_depth, rate1 / rate0,
+              rep.steps);
+  EXPECT_LT(rate1, 1e-2 * rate0);
+  EXPECT_LT(last.asperity_share, 1e-2 * first.asperity_share);
+  // the equilibrium is the film's, not the law's end: the worn depth stays inside the law's table
+  EXPECT_LT(last.h_max, law.worn_depth().back());
 }
 
 // Wear bookkeeping: the worn volume (sum of h_i A_i) equals the integral over nodes and time of wear_rate ds.

@@ -24,7 +24,15 @@ using continuum::MixedRingParameters;
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The shipped case's law: boundary-lubricated asperity contacts, k = 1e-6 (inputs/homogenise_steel_boundary.toml).
 std::shared_ptr<const coupling::StateLaw> steel_law() {
+  static const auto law = std::make_shared<const coupling::StateLaw>(
+      coupling::StateLaw::read_file(std::string(RUNIN_SOURCE_DIR) + "/inputs/state_law_steel_boundary.json"));
+  return law;
+}
+
+// A severe-wear law (k = 7e-3): one cycle wears nanometres, which the stepper's status and jump tests need.
+std::shared_ptr<const coupling::StateLaw> severe_law() {
   static const auto law = std::make_shared<const coupling::StateLaw>(
       coupling::StateLaw::read_file(std::string(RUNIN_SOURCE_DIR) + "/inputs/state_law_steel_rough.json"));
   return law;
@@ -232,9 +240,9 @@ TEST(MixedPistonRing, StarvedInletCarriesLessFilm) {
   EXPECT_NEAR(c.h_min / a.h_min, 1.0, 1e-6);
 }
 
-// A short run-in of the shipped ring at eta = 4 mPa s (dead centres mixed, lambda 1.9): over the cycles mu and the
-// asperity share fall monotonically; R settles because the film takes over (share < 1 % of the first cycle's)
-// while the worn depth is still inside the law's table (not because the table ran out).
+// The run-in of the shipped ring at eta = 4 mPa s (dead centres mixed, lambda 1.9), 3e6 cycles: over the cycles the
+// asperity share and R fall monotonically, mu too within the law's scatter (1e-3); R settles because the film takes
+// over (share < 1 % of the first cycle's) while the worn depth is still inside the law's table.
 MixedRingParameters run_in_parameters(const coupling::StateLaw &law) {
   auto p = ring_parameters(law);
   p.nodes = 41;
@@ -246,13 +254,14 @@ TEST(MixedPistonRing, RunInFrictionAndAsperityShareFallUntilTheFilmTakesOver) {
   const auto law = steel_law();
   MixedPistonRing ring(run_in_parameters(*law), law);
   continuum::RunInSettings rs;
-  rs.cycles = 400;
+  rs.cycles = 3000000;   // 33 h at 1500 rpm: boundary-lubricated wear (k = 1e-6) runs in over millions of cycles
   std::vector<continuum::CycleSample> rows;
   const auto report = continuum::run_in(ring, rs, [&](const continuum::CycleSample &s) { rows.push_back(s); });
   ASSERT_TRUE(report.ok()) << report.message;
   ASSERT_GE(rows.size(), 5u);
+  double worst_rise = 0.0;   // mu may rise within the law's seed scatter of mu_body between two depths
   for (std::size_t k = 1; k < rows.size(); ++k) {
-    EXPECT_LE(rows[k].mu, rows[k - 1].mu * (1.0 + 1e-9)) << k;
+    worst_rise = std::max(worst_rise, rows[k].mu / rows[k - 1].mu - 1.0);
     EXPECT_LE(rows[k].asperity_share, rows[k - 1].asperity_share) << k;
     EXPECT_LE(rows[k].rq, rows[k - 1].rq) << k;
   }
@@ -261,9 +270,10 @@ TEST(MixedPistonRing, RunInFrictionAndAsperityShareFallUntilTheFilmTakesOver) {
   const double rate_end = (c.rq - b.rq) / (b.cycle - c.cycle);
   double h_max = 0.0;
   for (double h : ring.worn_depth()) h_max = std::max(h_max, h);
-  std::printf("run-in: %ld cycles (%ld computed): mu %.5g -> %.5g, share %.4g -> %.4g, min lambda %.3f -> %.3f, R %.4g -> "
+  EXPECT_LT(worst_rise, 1e-3);
+  std::printf("run-in: %ld cycles (%ld computed): mu %.5g -> %.5g (largest rise %.3g), share %.4g -> %.4g, min lambda %.3f -> %.3f, R %.4g -> "
               "%.4g nm, dR/dcycle %.3g -> %.3g nm, h_max %.4g nm (law table ends at %.4g nm)\n",
-              report.cycles, report.computed_cycles, a.mu, b.mu, a.asperity_share, b.asperity_share, a.min_lambda,
+              report.cycles, report.computed_cycles, a.mu, b.mu, worst_rise, a.asperity_share, b.asperity_share, a.min_lambda,
               b.min_lambda, 1e9 * a.rq, 1e9 * b.rq, 1e9 * rate0, 1e9 * rate_end, 1e9 * h_max,
               1e9 * law->worn_depth().back());
   EXPECT_LT(a.min_lambda, 3.0);                       // mixed at the dead centres
@@ -277,7 +287,7 @@ TEST(MixedPistonRing, RunInFrictionAndAsperityShareFallUntilTheFilmTakesOver) {
 // A flat face (no wedge) rides on its asperities and wears 300 nm in its first cycle, more than half its sigma:
 // not a gradual run-in at fixed geometry, so the stepper stops with a status instead of jumping.
 TEST(MixedPistonRing, RunInStopsWhenOneCycleWearsMoreThanHalfSigma) {
-  const auto law = steel_law();
+  const auto law = severe_law();
   auto p = run_in_parameters(*law);
   p.crown_height = 0.0;
   MixedPistonRing ring(p, law);
@@ -327,7 +337,7 @@ TEST(MixedPistonRing, LinerRoughnessAndGasLoad) {
 
 // Cycle jumping against every cycle computed over 16 cycles of the same run-in.
 TEST(MixedPistonRing, CycleJumpingMatchesEveryCycleComputed) {
-  const auto law = steel_law();
+  const auto law = severe_law();
   auto run = [&](bool jumping, std::vector<continuum::CycleSample> &rows) {
     MixedPistonRing ring(run_in_parameters(*law), law);
     continuum::RunInSettings rs;
