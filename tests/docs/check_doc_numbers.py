@@ -17,6 +17,7 @@ regex `quote` whose one group is the number as the doc prints it (it must match 
   texts(regex[, group])     every such number, as a list
   key(name)                 a value of a key-number file ('name value' lines)
   csv(path, column[, row])  a value of a CSV the command wrote (path relative to DIR)
+  column(path, name)        every value of a CSV column, as a list
   rank_diff(glob_a, glob_b) the worst difference over all columns of two reference files (check_example.py --diff)
   plus math's functions.
 The doc's number must equal the value to the digits it prints (|doc - value| <= half a unit of its last digit);
@@ -138,6 +139,9 @@ class Source:
             rows = list(csvmod.DictReader(open(os.path.join(self.work, path))))
             return float(rows[row][column])
 
+        def column(path, name):
+            return [float(r[name]) for r in csvmod.DictReader(open(os.path.join(self.work, path)))]
+
         def rank_diff(file_a, file_b):
             """examples/check_example.py --diff: the worst difference over all columns of two reference files."""
             sys.path.insert(0, os.path.join(SOURCE_DIR, "examples"))
@@ -152,7 +156,7 @@ class Source:
             return worst
 
         names = {name: getattr(math, name) for name in dir(math) if not name.startswith("_")}
-        names.update(log=log, log_table=log_table, text=text, texts=texts, key=key, csv=csv, rank_diff=rank_diff, abs=abs, min=min, max=max, range=range, sum=sum, len=len)
+        names.update(log=log, log_table=log_table, text=text, texts=texts, key=key, csv=csv, column=column, rank_diff=rank_diff, abs=abs, min=min, max=max, range=range, sum=sum, len=len, zip=zip)
         return names
 
 
