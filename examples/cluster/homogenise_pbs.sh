@@ -8,8 +8,8 @@
 #
 # What to choose:
 #   select x ncpus/mpiprocs   samples that run at the same time: one MPI rank = one LAMMPS partition = one
-#               sample. The pipeline's case (inputs/homogenise_rough_pipeline.toml) is 5 pressures x 2 seeds =
-#               10 samples; more ranks than samples still to run stay idle.
+#               sample. The default case (inputs/homogenise_steel_mild_deep.toml, the dry steel law to its
+#               settled depth) is 8 pressures x 3 seeds = 24 samples; more ranks than samples still to run stay idle.
 #   walltime    the slowest sample decides; a job that runs out of time loses only its running samples:
 #               resubmit it and it continues from the cache.
 #
@@ -17,7 +17,7 @@
 # file), the cache and the output directory.
 #
 #PBS -N runin-law
-#PBS -l select=2:ncpus=5:mpiprocs=5
+#PBS -l select=2:ncpus=12:mpiprocs=12
 #PBS -l walltime=01:00:00
 #PBS -j oe
 
@@ -28,7 +28,7 @@ cd "$PBS_O_WORKDIR"    # PBS starts the script in the home directory
 # module load openmpi
 
 RUNIN=${RUNIN:-build/runin}
-CASE=${CASE:-inputs/homogenise_rough_pipeline.toml}
+CASE=${CASE:-inputs/homogenise_steel_mild_deep.toml}
 OUT=${OUT:-out/law_${PBS_JOBID%%.*}}
 # kept across jobs: a resubmitted job reruns only the missing samples
 CACHE=${CACHE:-$PWD/.cache/homogenise}

@@ -8,8 +8,8 @@
 #
 # What to choose:
 #   --ntasks    samples that run at the same time: one MPI rank = one LAMMPS partition = one sample. The
-#               pipeline's case (inputs/homogenise_rough_pipeline.toml) is 5 pressures x 2 seeds = 10
-#               samples; more ranks than samples still to run stay idle (runin starts at most one per sample).
+#               default case (inputs/homogenise_steel_mild_deep.toml, the dry steel law to its settled depth)
+#               is 8 pressures x 3 seeds = 24 samples; more ranks than samples still to run stay idle (runin starts at most one per sample).
 #   --time      the slowest sample decides: the low pressures of the rough-on-rough cell take longest. A job
 #               that runs out of time loses only its running samples: resubmit it and it continues.
 #
@@ -17,7 +17,7 @@
 # file), the cache (each sample writes its log and output there) and the output directory.
 #
 #SBATCH --job-name=runin-law
-#SBATCH --ntasks=10
+#SBATCH --ntasks=24
 #SBATCH --cpus-per-task=1
 #SBATCH --time=01:00:00
 #SBATCH --output=runin-law-%j.out
@@ -28,7 +28,7 @@ set -euo pipefail
 # module load openmpi
 
 RUNIN=${RUNIN:-build/runin}
-CASE=${CASE:-inputs/homogenise_rough_pipeline.toml}
+CASE=${CASE:-inputs/homogenise_steel_mild_deep.toml}
 OUT=${OUT:-out/law_${SLURM_JOB_ID}}
 # the sample cache: keep it across jobs (not in a per-job scratch directory), so a resubmitted job reruns only
 # the samples that are missing; a sample is reused only if all its inputs and the lmp_runin binary are the same
