@@ -55,13 +55,14 @@ class NodeStateLaw {
   struct Increment {
     std::vector<double> body;         // dh_i, m (the rough body's wear depth increment)
     std::vector<double> counterface;  // dc_i, m (the counter body's)
-    int substeps = 0;
+    int substeps = 0;                 // the most RK4 sub-steps any node took
   };
   // Slides ds >= 0 at the held pressures in dt >= 0 s: h_i += dh_i (the film, if any, over ds and dt, at each
   // node's contact fraction at the start of the step); returns the increments.
   Increment advance(const std::vector<double> &pressure, double ds, double dt = 0.0);
-  // Largest sub-step advance() takes: 0.5 / (largest |d wear_rate / dh| of the law) and the smallest h-grid
-  // spacing over the largest wear rate (no stage jumps a grid cell).
+  // Bound on every sub-step of advance(): 0.05 / (largest |d wear_rate / dh| of the law). Each node's sub-steps
+  // are also bounded by the h-grid spacing at its own depth over its own rate (no stage jumps a grid cell), so a
+  // node deep in a log-spaced law is not stepped at the spacing of the first cells.
   double substep_bound() const { return substep_; }
   // Bound on the outer (contact re-solve) step for a contact whose pressure falls by `stiffness` Pa per metre
   // of uniform wear: the linearised update h += (w/p)(p0 - K h) ds is stable for ds < 2 / (K max_i w_i/p_i);
@@ -77,6 +78,8 @@ class NodeStateLaw {
   double counterface_duty_ = 1.0;
   coupling::RangeUse use_;
   double substep_ = 0.0;
+  // Largest sliding distance one RK4 sub-step of a node at depth h and rate w may take (ds_left caps it).
+  double substep(double h, double w, double ds_left) const;
 
   // RK4 of every loaded node's h over ds > 0 (advance()); phi (when not empty) gets each node's contact fraction at
   // the step's start.

@@ -21,10 +21,17 @@ constexpr double kQ = 0.25;    // counterface rate / body rate
 double mu_exact(double p, double h) { return (0.3 - 1e5 * h) * std::pow(p / 1e7, 0.1); }
 double c_of(double p) { return kC * std::pow(p / 1e7, 0.5); }
 
-std::shared_ptr<const StateLaw> make_law() {
+// The depth grid: 10 equal cells, or (log_spaced) 0 and 16 depths log-spaced from 1e-5 h0 to h0, as the
+// shipped laws to the settled depth are.
+std::shared_ptr<const StateLaw> make_law(bool log_spaced = false) {
   const std::vector<double> p = {1e6, 1e7, 1e8};
   std::vector<double> h;
-  for (int j = 0; j <= 10; ++j) h.push_back(kH0 * j / 10.0);
+  if (log_spaced) {
+    h.push_back(0.0);
+    for (int j = 0; j <= 15; ++j) h.push_back(kH0 * std::pow(10.0, -5.0 + 5.0 * j / 15.0));
+  } else {
+    for (int j = 0; j <= 10; ++j) h.push_back(kH0 * j / 10.0);
+  }
   std::array<StateFieldTable, state_field_count> fields;
   for (std::size_t f = 0; f < state_field_count; ++f) {
     auto &t = fields[f].mean;
@@ -94,11 +101,28 @@ TEST(NodeStateLaw, WearIntegrationMatchesTheExponentialSolution) {
 
 TEST(NodeStateLaw, ALargeSlideIsSubdividedStably) {
   NodeStateLaw nodes(make_law(), OutOfRange::Error, 1);
-  EXPECT_NEAR(nodes.substep_bound(), std::min(0.5 / c_of(1e8), (kH0 / 10) / (c_of(1e8) * kH0)), 1e-12);
+  EXPECT_NEAR(nodes.substep_bound(), 0.05 / c_of(1e8), 1e-12);
   const auto inc = nodes.advance({1e7}, 0.05);  // 100 e-foldings in one call
   EXPECT_GT(inc.substeps, 100);
   EXPECT_NEAR(nodes.state()[0], kH0, 1e-9 * kH0);
   EXPECT_LE(nodes.state()[0], kH0 * (1 + 1e-12));
+}
+
+// On a log-spaced depth grid each node's sub-steps follow the cell it is in: a slide through all 16 cells takes
+// tens of sub-steps, not the (finest cell / fastest rate) ones a global bound would take (3e5 here), and stays exact.
+TEST(NodeStateLaw, SubStepsFollowTheNodesOwnDepthCell) {
+  NodeStateLaw nodes(make_law(true), OutOfRange::Error, 2);
+  const std::vector<double> p = {1e6, 1e7};
+  const double ds = 1.0 / c_of(p[1]);   // one e-folding of the faster node
+  const auto inc = nodes.advance(p, ds);
+  for (int i = 0; i < 2; ++i) {
+    const double exact = kH0 * (1.0 - std::exp(-c_of(p[i]) * ds));
+    EXPECT_NEAR(nodes.state()[i], exact, 1e-6 * exact) << "node " << i;
+    EXPECT_NEAR(nodes.counterface()[i], kQ * exact, 1e-6 * exact) << "node " << i;
+  }
+  const double global = 1e-5 * kH0 / (c_of(1e8) * kH0);   // finest cell over the law's fastest rate
+  EXPECT_GT(ds / global, 1e5);
+  EXPECT_LT(inc.substeps, 100);
 }
 
 TEST(NodeStateLaw, PressureOutsideTheLawIsAnErrorNamingPAndTheRange) {
