@@ -190,8 +190,8 @@ inline const tribo::SubModelInfo &chosen(const tribo::ContactModelChoice &choice
   return tribo::registered_sub_models(kind)[choice.of(kind)];
 }
 
-// Blocks 'KIND NAME values...' from arg[iarg] on, until narg or, with `complete`, until every kind is given (the
-// wall's keywords follow the block). `fixed`: each block must name the model `choice` holds (pair_style's);
+// Blocks 'KIND NAME values...' from arg[iarg] on, until narg or, with `complete`, until every kind is given or a
+// word that names no kind (the wall's keywords follow the block). `fixed`: each block must name the model `choice` holds (pair_style's);
 // otherwise the blocks set `choice`. iarg ends after the last block.
 inline tribo::ContactCoefficients read_blocks(const Host &host, int narg, char **arg, int &iarg,
                                               tribo::ContactModelChoice &choice, bool fixed, bool complete)
@@ -201,6 +201,7 @@ inline tribo::ContactCoefficients read_blocks(const Host &host, int narg, char *
   auto all_given = [&] { return std::all_of(given.begin(), given.end(), [](bool g) { return g; }); };
   while (iarg < narg && !(complete && all_given())) {
     const int kind_index = kind_of(arg[iarg]);
+    if (kind_index < 0 && complete) break;    // the host's next keyword: the missing blocks are named below
     if (kind_index < 0)
       fail(host, fmt::format("{}: unknown keyword '{}' (expected normal, damping, tangential, friction or wear)",
                              host.style, arg[iarg]));
