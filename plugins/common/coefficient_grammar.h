@@ -235,14 +235,21 @@ inline tribo::ContactCoefficients read_blocks(const Host &host, int narg, char *
   return c;
 }
 
-// A coefficient of the chosen model by its registry name (nullptr where the model has none).
+// The position of a coefficient of the chosen model by its registry name (-1 where the model has none): the one
+// spelling of each coefficient (tau_s, S_y, k_i, ...) is the registry's.
+inline int named_index(const tribo::ContactModelChoice &choice, tribo::SubModelKind kind, const char *name)
+{
+  const auto &names = chosen(choice, kind).coefficient_names;
+  for (std::size_t k = 0; k < names.size(); k++)
+    if (std::strcmp(names[k], name) == 0) return static_cast<int>(k);
+  return -1;
+}
+
 inline const double *named_coefficient(const tribo::ContactModelChoice &choice, const tribo::ContactCoefficients &c,
                                        tribo::SubModelKind kind, const char *name)
 {
-  const auto &names = chosen(choice, kind).coefficient_names;
-  for (std::size_t k = 0; k < names.size() && k < c.of(kind).size(); k++)
-    if (std::strcmp(names[k], name) == 0) return &c.of(kind)[k];
-  return nullptr;
+  const int k = named_index(choice, kind, name);
+  return k >= 0 && k < static_cast<int>(c.of(kind).size()) ? &c.of(kind)[k] : nullptr;
 }
 
 // ---- one form in, one checked struct out ----

@@ -258,8 +258,8 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
     read.origin = "keywords";
     read.values = block;
     for (const char *k : {"k_i", "k_j"})
-      if (const double *value = runin_coeff::named_coefficient(c.choice, block, tribo::SubModelKind::wear, k))
-        read.values.of(tribo::SubModelKind::wear)[value - block.of(tribo::SubModelKind::wear).data()] *= wear_scale;
+      if (const int index = runin_coeff::named_index(c.choice, tribo::SubModelKind::wear, k); index >= 0)
+        read.values.of(tribo::SubModelKind::wear)[index] *= wear_scale;
   } else {
     for (const auto &[name, value] : named) runin_coeff::set_named(parameters, name, value);
     // S_y and nu of the yielding body: keyword 'yield', else the material file, else Tabor's H / 2.8
