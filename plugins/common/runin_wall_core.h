@@ -133,6 +133,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
                               "restick, transfer, normal, yield, friction_model, wear_scale or interface)", keyword));
     if (keyword == "coeff") {
       // the keyword block of pair_coeff: all five kinds, then the wall's keywords go on
+      if (have_block) fail(hooks, "fix runin/wall: keyword 'coeff' is given twice");
       iarg++;
       block = runin_coeff::read_blocks(hooks, narg, arg, iarg, c.choice, false, true);
       have_block = true;
