@@ -337,6 +337,24 @@ inline tribo::ContactCoefficients pair_coeff(const Host &host, int narg, char **
                  fmt::format("{} {} {}", host.style, arg[0], arg[1]), "S_y keyword");
 }
 
+// pair_coeff's type pairs I <= J in the ranges ilo..ihi, jlo..jhi (the host's bounds of arg[0], arg[1]): c for I,J,
+// as seen from J for J,I, marked set; none in range is an ERROR.
+template <class CoeffOf>
+void store_type_pairs(const Host &host, char **arg, int ilo, int ihi, int jlo, int jhi,
+                      const tribo::ContactModelChoice &choice, const tribo::ContactCoefficients &c, CoeffOf coeff_of,
+                      int **setflag)
+{
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = std::max(jlo, i); j <= jhi; j++) {
+      coeff_of(i, j) = c;
+      coeff_of(j, i) = tribo::swap_bodies(choice, c);
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) fail(host, fmt::format("{}: no type pair in range {} {}", host.style, arg[0], arg[1]));
+}
+
 }    // namespace runin_coeff
 
 #endif

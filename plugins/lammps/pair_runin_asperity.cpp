@@ -214,15 +214,8 @@ void PairRuninAsperity::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = std::max(jlo, i); j <= jhi; j++) {
-      coeff_of(i, j) = c;
-      coeff_of(j, i) = tribo::swap_bodies(choice, c);
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0) error->all(FLERR, "pair_coeff runin/asperity: no type pair in range {} {}", arg[0], arg[1]);
+  runin_coeff::store_type_pairs(host, arg, ilo, ihi, jlo, jhi, choice, c,
+                                [this](int i, int j) -> tribo::ContactCoefficients & { return coeff_of(i, j); }, setflag);
   // here, before the first run's init prints the citation block (and again at init_style, after a restart)
   runin_lammps::cite(lmp, runin_lammps::model_citations(choice, wear_on, false));
 }

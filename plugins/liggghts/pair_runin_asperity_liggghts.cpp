@@ -185,17 +185,8 @@ void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   force->bounds(arg[0], atom->ntypes, ilo, ihi);
   force->bounds(arg[1], atom->ntypes, jlo, jhi);
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = std::max(jlo, i); j <= jhi; j++) {
-      coeff_of(i, j) = c;
-      coeff_of(j, i) = tribo::swap_bodies(choice, c);
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0)
-    runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: no type pair in range {} {}", arg[0],
-                                                arg[1]));
+  runin_coeff::store_type_pairs(host, arg, ilo, ihi, jlo, jhi, choice, c,
+                                [this](int i, int j) -> tribo::ContactCoefficients & { return coeff_of(i, j); }, setflag);
 }
 
 void PairRuninAsperityLiggghts::init_style()
