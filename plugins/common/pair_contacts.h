@@ -18,6 +18,7 @@
 #include "lmptype.h"    // NEIGHMASK of the host
 
 #include <fmt/format.h>
+#include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -460,6 +461,15 @@ SingleContact single_contact(const Atoms<Tag> &a, const double *state, const tri
   out.contact_radius = contact.normal.contact_radius;
   out.overlap = g.overlap;
   return out;
+}
+
+// The largest radius per type over all ranks (out: ntypes + 1 values): it bounds the contact cutoff.
+inline void largest_radius_per_type(const double *radius, const int *type, int nlocal, int ntypes, MPI_Comm world,
+                                    double *out)
+{
+  std::vector<double> local(ntypes + 1, 0.0);
+  for (int i = 0; i < nlocal; i++) local[type[i]] = std::max(local[type[i]], radius[i]);
+  MPI_Allreduce(local.data(), out, ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
 }
 
 }    // namespace runin_pair

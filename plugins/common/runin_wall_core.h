@@ -8,6 +8,7 @@
 #ifndef RUNIN_WALL_CORE_H
 #define RUNIN_WALL_CORE_H
 
+#include "coefficient_grammar.h"
 #include "runin_contact_sums.h"
 #include "tribo/asperity_geometry.h"
 #include "tribo/contact.h"
@@ -46,22 +47,17 @@ struct Setting {
   int ivar = -1;
 };
 
-// What the host provides to the parser. `fail` reports one ERROR line on every rank and does not return;
-// `number` reads a finite number or fails naming it ("fix runin/wall: <name> must be a finite number, got ..");
-// `material` reads a pair of a RunIn material file; `warning` prints on the first rank only.
-struct Hooks {
-  std::function<void(const std::string &)> fail;
-  std::function<double(const std::string &name, const char *text)> number;
-  std::function<tribo::ContactParameters(const char *path, const char *a, const char *b)> material;
-  std::function<void(const std::string &)> warning;
-};
+// The host adaptor: plugins/common/coefficient_grammar.h (style "fix runin/wall", no film).
+using Hooks = runin_coeff::Host;
 
 // Everything the keywords of fix runin/wall set.
 struct Config {
-  tribo::ContactParameters parameters;
+  tribo::ContactParameters parameters;    // the value groups' or file's (unused with the keyword block)
   tribo::ContactModelChoice choice;
+  tribo::ContactCoefficients coefficients;    // checked, as the contact model holds them
   tribo::ContactSettings contact_settings;
   std::optional<tribo::ContactModel> model;
+  bool wear = false;          // an Archard k > 0 (else no wear bookkeeping)
   bool reshape = true;        // worn geometry (summit drop, flat) of the wear state enters the normal force
   double side_sign = 0.0;     // +1 side lo (wall below the atoms), -1 side hi (wall above)
   double wall_z = 0.0;
@@ -71,63 +67,96 @@ struct Config {
   double load_target = 0.0, servo_gain = -1.0, servo_vmax = -1.0;
 };
 
-[[noreturn]] inline void fail(const Hooks &hooks, const std::string &message)
+// The wall's coefficient keywords other than `file` and `coeff`: groups of the grammar's named values
+// (runin_coeff::set_named), the one place they map. `labels` name the values in messages; `friction`: the friction
+// model the group selects (else none).
+struct ValueGroup {
+  const char *keyword;
+  int count;
+  std::array<const char *, 3> names, labels;
+  const char *friction;
+};
+inline constexpr ValueGroup kValueGroups[] = {
+    {"elastic", 3, {"E*", "G*", "e"}, {"E*", "G*", "e"}, nullptr},
+    {"friction", 3, {"mu_s", "mu_k", "d_c"}, {"mu_s", "mu_k", "d_c"}, nullptr},
+    {"wear", 3, {"k", "H_i", "H_j"}, {"k", "H_asperity", "H_wall"}, nullptr},
+    {"strength", 2, {"tau_s", "plough"}, {"tau_s", "plough"}, "strength"},
+    {"junction", 2, {"f", "alpha"}, {"f", "alpha"}, "junction"},
+    {"yield", 2, {"S_y", "nu"}, {"S_y", "nu"}, nullptr}};
+
+inline const ValueGroup *value_group(const std::string &keyword)
 {
-  hooks.fail(message);
-  std::abort();    // not reached: the host's fail stops the run
+  for (const ValueGroup &g : kValueGroups)
+    if (keyword == g.keyword) return &g;
+  return nullptr;
 }
+
+using runin_coeff::fail;
 
 // fix ID group runin/wall <keywords>: arg[0..narg), the keywords from arg[3].
 inline Config parse(int narg, char **arg, const Hooks &hooks)
 {
   static const std::map<std::string, int> kKeywordValues = {
-      {"zplane", 1}, {"side", 1},     {"file", 3},  {"elastic", 3},  {"friction", 3}, {"wear", 3},
-      {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},    {"load", 1},     {"pressure", 1}, {"servo", 2},
-      {"strength", 2}, {"junction", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1}, {"yield", 2}, {"friction_model", 1}, {"wear_scale", 1}, {"interface", 1}};
+      {"zplane", 1}, {"side", 1},     {"file", 3},  {"archard", 1}, {"reshape", 1}, {"vel", 2},     {"vz", 1},
+      {"load", 1},     {"pressure", 1}, {"servo", 2}, {"restick", 1}, {"transfer", 1}, {"normal", 1},
+      {"friction_model", 1}, {"wear_scale", 1}, {"interface", 1}, {"coeff", 0}};
   const std::string style = "fix runin/wall";
-  // a RunIn kernel call whose exception becomes one ERROR "fix runin/wall: <what>"
-  auto kernel = [&](auto &&body) -> decltype(body()) {
-    std::string message;
-    try {
-      return body();
-    } catch (const std::exception &e) {
-      message = style + ": " + e.what();
-    }
-    fail(hooks, message);
-  };
+  auto kernel = [&](auto &&body) -> decltype(body()) { return runin_coeff::kernel(hooks, style, body); };
   auto parse_setting = [&](Setting &s, const char *text, const char *keyword) {
     if (std::strncmp(text, "v_", 2) == 0) {
       s.variable = text + 2;
     } else {
-      s.value = hooks.number(std::string(keyword) + " (a number or v_name)", text);
+      s.value = runin_coeff::number(hooks, style, std::string(keyword) + " (a number or v_name)", text);
       s.variable.clear();
     }
   };
 
   Config c;
   tribo::ContactParameters &parameters = c.parameters;
+  std::vector<std::pair<std::string, double>> named;    // the value groups' values, applied after the file's
   bool yield_given = false;
   int interface_state = -1;    // keyword interface: tau_s or f from the coefficient file's line for this state
-  std::string friction_model_name;    // keyword friction_model; else 'strength' with keyword strength
-  double yield_strength = 0.0, yield_poisson = 0.3;
+  std::string friction_model_name;    // keyword friction_model; else the model a value group selects
   double wear_scale = 1.0;    // keyword wear_scale: wear acceleration, a factor on Archard k of both bodies
-  bool have_zplane = false, have_file = false, have_elastic = false, have_friction = false, have_wear = false;
+  bool have_zplane = false, have_file = false, have_block = false, have_elastic = false, have_friction = false,
+       have_wear = false;
+  std::string other_coefficients;    // a coefficient keyword besides the keyword block (refused with it)
+  tribo::ContactCoefficients block;
   int iarg = 3;
   while (iarg < narg) {
     const std::string keyword = arg[iarg];
     const auto known = kKeywordValues.find(keyword);
-    if (known == kKeywordValues.end())
-      fail(hooks, fmt::format("fix runin/wall: unknown keyword '{}' (expected zplane, side, file, elastic, friction, "
-                              "wear, archard, reshape, vel, vz, load, pressure, servo, strength, junction, restick, "
-                              "transfer, normal, yield, friction_model, wear_scale or interface)", keyword));
-    const int nvalues = known->second;
+    const ValueGroup *group = value_group(keyword);
+    if (known == kKeywordValues.end() && !group)
+      fail(hooks, fmt::format("fix runin/wall: unknown keyword '{}' (expected zplane, side, coeff, file, elastic, "
+                              "friction, wear, archard, reshape, vel, vz, load, pressure, servo, strength, junction, "
+                              "restick, transfer, normal, yield, friction_model, wear_scale or interface)", keyword));
+    if (keyword == "coeff") {
+      // the keyword block of pair_coeff: all five kinds, then the wall's keywords go on
+      if (have_block) fail(hooks, "fix runin/wall: keyword 'coeff' is given twice");
+      iarg++;
+      block = runin_coeff::read_blocks(hooks, narg, arg, iarg, c.choice, false, true);
+      have_block = true;
+      continue;
+    }
+    const int nvalues = group ? group->count : known->second;
     if (iarg + nvalues >= narg)
       fail(hooks, fmt::format("fix runin/wall: keyword '{}' needs {} value(s), got {}", keyword, nvalues,
                               narg - iarg - 1));
     char **values = &arg[iarg + 1];
-    auto number = [&](int k, const char *name) { return hooks.number(keyword + " " + name, values[k]); };
+    auto number = [&](int k, const char *name) { return runin_coeff::number(hooks, style, keyword + " " + name, values[k]); };
 
-    if (keyword == "zplane") {
+    if (group) {
+      for (int k = 0; k < group->count; k++) named.emplace_back(group->names[k], number(k, group->labels[k]));
+      if (group->friction)
+        c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
+            tribo::find_sub_model(tribo::SubModelKind::friction, group->friction);
+      have_elastic = have_elastic || keyword == "elastic";
+      have_friction = have_friction || keyword == "friction";
+      have_wear = have_wear || keyword == "wear";
+      yield_given = yield_given || keyword == "yield";
+      other_coefficients = keyword;
+    } else if (keyword == "zplane") {
       c.wall_z = number(0, "Z");
       have_zplane = true;
     } else if (keyword == "side") {
@@ -140,21 +169,7 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
     } else if (keyword == "file") {
       parameters = hooks.material(values[0], values[1], values[2]);
       have_file = true;
-    } else if (keyword == "elastic") {
-      parameters.effective_modulus = number(0, "E*");
-      parameters.effective_shear_modulus = number(1, "G*");
-      parameters.restitution = number(2, "e");
-      have_elastic = true;
-    } else if (keyword == "friction") {
-      parameters.mu_static = number(0, "mu_s");
-      parameters.mu_kinetic = number(1, "mu_k");
-      parameters.slip_weakening_distance = number(2, "d_c");
-      have_friction = true;
-    } else if (keyword == "wear") {
-      parameters.wear_coefficient = number(0, "k");
-      parameters.hardness_i = number(1, "H_asperity");
-      parameters.hardness_j = number(2, "H_wall");
-      have_wear = true;
+      other_coefficients = keyword;
     } else if (keyword == "archard") {
       if (std::strcmp(values[0], "plain") == 0)
         c.contact_settings.archard_form = tribo::ArchardForm::plain;
@@ -186,28 +201,17 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
       if (!(c.servo_gain > 0.0 && c.servo_gain <= 1.0))
         fail(hooks, fmt::format("fix runin/wall: servo gain must be in (0, 1], got {}", c.servo_gain));
       if (!(c.servo_vmax > 0.0)) fail(hooks, fmt::format("fix runin/wall: servo vmax must be > 0, got {}", c.servo_vmax));
-    } else if (keyword == "strength") {
-      parameters.shear_strength = number(0, "tau_s");
-      parameters.ploughing_factor = number(1, "plough");
-      c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
-          tribo::find_sub_model(tribo::SubModelKind::friction, tribo::StrengthFrictionModel::name);
-    } else if (keyword == "junction") {
-      parameters.interface_coefficient = number(0, "f");
-      parameters.junction_alpha = number(1, "alpha");
-      c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
-          tribo::find_sub_model(tribo::SubModelKind::friction, tribo::JunctionFrictionModel::name);
     } else if (keyword == "friction_model") {
       friction_model_name = values[0];
       kernel([&] { return tribo::find_sub_model(tribo::SubModelKind::friction, values[0]); });
+      other_coefficients = keyword;
     } else if (keyword == "normal") {
       c.choice.index[static_cast<int>(tribo::SubModelKind::normal)] =
           kernel([&] { return tribo::find_sub_model(tribo::SubModelKind::normal, values[0]); });
-    } else if (keyword == "yield") {
-      yield_given = true;
-      yield_strength = number(0, "S_y");
-      yield_poisson = number(1, "nu");
+      other_coefficients = keyword;
     } else if (keyword == "interface") {
       interface_state = kernel([&] { return tribo::find_interface_state(values[0]); });
+      other_coefficients = keyword;
     } else if (keyword == "wear_scale") {
       wear_scale = number(0, "factor");
       if (!(wear_scale > 0.0) || !std::isfinite(wear_scale))
@@ -228,50 +232,55 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
 
   if (!have_zplane) fail(hooks, "fix runin/wall: keyword 'zplane' is required");
   if (c.side_sign == 0.0) fail(hooks, "fix runin/wall: keyword 'side' (lo or hi) is required");
+  if (have_block && !other_coefficients.empty())
+    fail(hooks, fmt::format("fix runin/wall: give either 'coeff' (the keyword block, which names every sub-model) or "
+                            "'{}', not both", other_coefficients));
   if (have_file && (have_elastic || have_friction || have_wear))
     fail(hooks, "fix runin/wall: give either 'file' or 'elastic'/'friction'/'wear', not both");
-  if (!have_file && !(have_elastic && have_friction && have_wear))
-    fail(hooks, "fix runin/wall: coefficients missing: give 'file PATH ASPERITY WALL' or all of "
-                "'elastic', 'friction' and 'wear'");
+  if (!have_block && !have_file && !(have_elastic && have_friction && have_wear))
+    fail(hooks, "fix runin/wall: coefficients missing: give 'file PATH ASPERITY WALL', all of 'elastic', 'friction' "
+                "and 'wear', or 'coeff' and the keyword block");
   if (c.control != Control::displacement && c.servo_vmax < 0.0)
     fail(hooks, "fix runin/wall: load control needs 'servo GAIN VMAX'");
   if (c.control != Control::displacement && c.vz_given)
     fail(hooks, "fix runin/wall: 'vz' and 'load'/'pressure' exclude each other");
 
-  parameters.wear_coefficient *= wear_scale;
-  parameters.interface_state = interface_state;
   if (!friction_model_name.empty())
     c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
         tribo::find_sub_model(tribo::SubModelKind::friction, friction_model_name);
   // the film coverage is a per-summit state that only pair runin/asperity keeps
-  if (friction_model_name == tribo::JunctionFilmFrictionModel::name)
-    fail(hooks, "fix runin/wall: friction_model 'junction/film' is not supported on the wall (the film coverage "
-                "is kept by pair runin/asperity only); use 'junction'");
-  // S_y and nu of the yielding body: keyword 'yield', else the material file, else Tabor's H / 2.8
-  if (yield_given) {
-    parameters.yield_strength = yield_strength;
-    parameters.poisson_ratio = yield_poisson;
-    parameters.yield_from_hardness = false;
-  } else if (!have_file) {
-    parameters.yield_strength = std::min(parameters.hardness_i, parameters.hardness_j) / tribo::kTaborConstraintFactor;
-    parameters.yield_from_hardness = true;
-  }
-  const bool plastic =
-      c.choice.of(tribo::SubModelKind::normal) ==
-      tribo::find_sub_model(tribo::SubModelKind::normal, tribo::ElasticPlasticNormalModel::name);
-  if (plastic && parameters.yield_from_hardness)
-    hooks.warning(fmt::format("fix runin/wall: no yield strength given (keyword yield or material file): S_y = H / "
-                              "{} = {:.4g} Pa (Tabor), nu = {}", tribo::kTaborConstraintFactor,
-                              parameters.yield_strength, parameters.poisson_ratio));
+  if (c.choice.of(tribo::SubModelKind::friction) ==
+      tribo::find_sub_model(tribo::SubModelKind::friction, tribo::JunctionFilmFrictionModel::name))
+    fail(hooks, fmt::format("fix runin/wall: {} 'junction/film' is not supported on the wall (the film coverage is "
+                            "kept by pair runin/asperity only); use 'junction'", have_block ? "friction" : "friction_model"));
 
-  // the contact model validates its coefficients; the message names the offending one
-  kernel([&] {
-    if (!(parameters.hardness_i > 0.0))
-      throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", parameters.hardness_i));
-    if (!(parameters.hardness_j > 0.0))
-      throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", parameters.hardness_j));
-    c.model.emplace(c.choice, tribo::contact_coefficients(c.choice, parameters), c.contact_settings);
-  });
+  runin_coeff::Read read;
+  if (have_block) {
+    read.origin = "keywords";
+    read.values = block;
+    for (const char *k : {"k_i", "k_j"})
+      if (const int index = runin_coeff::named_index(c.choice, tribo::SubModelKind::wear, k); index >= 0)
+        read.values.of(tribo::SubModelKind::wear)[index] *= wear_scale;
+  } else {
+    for (const auto &[name, value] : named) runin_coeff::set_named(parameters, name, value);
+    // S_y and nu of the yielding body: keyword 'yield', else the material file, else Tabor's H / 2.8
+    if (!yield_given && !have_file) runin_coeff::yield_from_hardness(parameters);
+    parameters.wear_coefficient *= wear_scale;
+    parameters.interface_state = interface_state;
+    kernel([&] {
+      if (!(parameters.hardness_i > 0.0))
+        throw tribo::InvalidCoefficient(fmt::format("H_asperity: hardness must be > 0, got {}", parameters.hardness_i));
+      if (!(parameters.hardness_j > 0.0))
+        throw tribo::InvalidCoefficient(fmt::format("H_wall: hardness must be > 0, got {}", parameters.hardness_j));
+    });
+    read.parameters = parameters;
+  }
+  // the grammar's checks, once for every form; the contact model validates its coefficients and names the bad one
+  c.coefficients = runin_coeff::checked(hooks, read, c.choice, c.contact_settings, style, style, "keyword yield");
+  c.model.emplace(c.choice, c.coefficients, c.contact_settings);
+  for (const char *k : {"k_i", "k_j"})
+    if (const double *value = runin_coeff::named_coefficient(c.choice, c.coefficients, tribo::SubModelKind::wear, k))
+      c.wear = c.wear || *value > 0.0;
   return c;
 }
 
@@ -351,7 +360,7 @@ void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **hi
 {
   using ::MathExtra::cross3;
   sums = LAMMPS_NS::RuninContactSums();
-  const bool track_wear = advance && c.parameters.wear_coefficient > 0.0;
+  const bool track_wear = advance && c.wear;
   const tribo::ContactModel &model = *c.model;
   double **x = a.x, **v = a.v, **f = a.f, **omega = a.omega, **torque = a.torque;
   const double *radius = a.radius, *rmass = a.rmass;
@@ -498,7 +507,7 @@ inline std::vector<double> restart_record(const Config &c, const Motion &m)
 {
   std::vector<double> state = {kRestartFormatMark, m.wall_z,    m.wall_dx,           m.wall_dy,
                                m.wall_wear,        m.wall_gain, m.last_normal_force, m.last_stiffness};
-  const std::vector<double> record = tribo::serialize(c.choice, tribo::contact_coefficients(c.choice, c.parameters));
+  const std::vector<double> record = tribo::serialize(c.choice, c.coefficients);
   state.push_back(static_cast<double>(record.size()));
   state.insert(state.end(), record.begin(), record.end());
   return state;

@@ -41,21 +41,10 @@ FixRuninWall::FixRuninWall(LAMMPS *lmp, int narg, char **arg) :
   if (!runin_compat::sphere_atoms(atom)) error->all(FLERR, "fix runin/wall: requires atom_style sphere");
   runin_lammps::require_si_units(lmp, FLERR, "fix runin/wall");
 
-  runin_wall::Hooks hooks;
-  hooks.fail = [this](const std::string &message) { error->all(FLERR, message); };
-  hooks.number = [this](const std::string &name, const char *text) {
-    return runin_lammps::finite_number(this->lmp, FLERR, "fix runin/wall", name, text);
-  };
-  hooks.material = [this](const char *path, const char *a, const char *b) {
-    return contact_parameters(read_runin_material_pair(this->lmp, path, a, b, "fix runin/wall: file"));
-  };
-  hooks.warning = [this](const std::string &message) {
-    if (comm->me == 0) error->warning(FLERR, message);
-  };
-  cfg = runin_wall::parse(narg, arg, hooks);
+  cfg = runin_wall::parse(narg, arg, coefficient_host(lmp, "fix runin/wall", "fix runin/wall: file", false));
   motion.wall_z = cfg.wall_z;
   // here, before the first run's init prints LAMMPS's citation block
-  runin_lammps::cite(lmp, runin_lammps::model_citations(cfg.choice, cfg.parameters.wear_coefficient > 0.0, true));
+  runin_lammps::cite(lmp, runin_lammps::model_citations(cfg.choice, cfg.wear, true));
 
   vector_flag = 1;
   size_vector = NOUTPUT;

@@ -1,5 +1,5 @@
 #include "pair_runin_asperity.h"
-#include "pair_coefficients.h"
+#include "coefficient_grammar.h"
 #include "runin_errors.h"
 #include "runin_citations.h"
 
@@ -200,170 +200,24 @@ void PairRuninAsperity::attach_wear_state()
   if (!fix_wear) fix_wear = FixRuninWearState::find_or_create(modify);
 }
 
+// pair_coeff I J <keyword block | explicit values | file ...> [options]: the one grammar of the contact hosts
+// (plugins/common/coefficient_grammar.h), its checks and messages.
 void PairRuninAsperity::coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
   if (narg < 2) error->all(FLERR, "pair_coeff runin/asperity: expected type I and type J");
   runin_lammps::require_si_units(lmp, FLERR, "pair runin/asperity");
 
-  tribo::ContactCoefficients c;
-  const char *origin = "explicit";
-  if (narg >= 3 && tribo::registered_sub_models(SubModelKind::normal).size() > 0 && !utils::is_double(arg[2]) &&
-      strcmp(arg[2], "file") != 0) {
-    origin = "keywords";
-    c = read_keyword_coefficients(narg, arg);
-  } else {
-    tribo::ContactParameters p;
-    int optional_first = narg;
-    if (narg >= 6 && strcmp(arg[2], "file") == 0) {
-      p = read_coefficients_file(arg[3], arg[4], arg[5]);
-      origin = "file";
-      optional_first = 6;
-    } else if (narg == 10 || (narg > 10 && !utils::is_double(arg[10]))) {
-      double v[runin_pair::kExplicitValues];
-      for (int k = 0; k < runin_pair::kExplicitValues; k++)
-        v[k] = runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", runin_pair::kExplicitNames[k],
-                                           arg[2 + k]);
-      p = runin_pair::explicit_parameters(v);
-      optional_first = 10;
-    } else if (strcmp(arg[2], "file") == 0) {
-      error->all(FLERR,
-                 "pair_coeff runin/asperity: 'file' takes a path and two material names ('I J file <path> "
-                 "<material-I> <material-J>'), got {} value(s)",
-                 narg - 3);
-    } else {
-      // count the numbers the user gave after the type pair, and name the positional values they leave out
-      int given = 0;
-      while (2 + given < narg && utils::is_double(arg[2 + given])) given++;
-      error->all(FLERR,
-                 "pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values after the type "
-                 "pair), got {} value(s){}; or 'I J file <path> <material-I> <material-J>', then optional 'tau_s X' "
-                 "'plough X', or 'I J normal NAME values ... damping ... tangential ... friction ... wear ...'",
-                 given, runin_pair::explicit_count_problem(given));
-    }
-    read_optional_coefficients(p, narg, arg, optional_first);
-    // a parameter that the chosen sub-models need and the deck left out (friction junction: f, S_y) is refused
-    c = runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair_coeff runin/asperity ({})", origin), true,
-                                  [&] { return tribo::contact_coefficients(choice, p); });
-    if (p.yield_from_hardness && p.yield_strength > 0.0 && choice.of(SubModelKind::normal) ==
-                                     tribo::find_sub_model(SubModelKind::normal, tribo::ElasticPlasticNormalModel::name))
-      error->warning(FLERR,
-                     "pair_coeff runin/asperity {} {}: no yield strength given (S_y keyword or material file): "
-                     "S_y = H / {} = {:.4g} Pa (Tabor), nu = {}",
-                     arg[0], arg[1], tribo::kTaborConstraintFactor, p.yield_strength, p.poisson_ratio);
-  }
-  // validates every sub-model's coefficients
-  runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair_coeff runin/asperity ({})", origin), true,
-                            [&] { tribo::ContactModel(choice, c, contact_settings); });
-  // keyword form: an adhesion law's tau_s against the S_y of the elastic/plastic block (the other forms:
-  // contact_coefficients, against the materials' S_y)
-  if (strcmp(origin, "keywords") == 0 && plastic_normal()) {
-    const auto &friction = c.of(SubModelKind::friction);
-    const std::string name = tribo::registered_sub_models(SubModelKind::friction)[choice.of(SubModelKind::friction)].name;
-    const int tau_index = name == tribo::StrengthFrictionModel::name ? 3 : name == tribo::BrizmerFrictionModel::name ? 1 : -1;
-    if (tau_index >= 0)
-      runin_lammps::kernel_call(lmp, FLERR, "pair_coeff runin/asperity (keywords)", true, [&] {
-        tribo::check_interface_strength(friction[tau_index], c.of(SubModelKind::normal)[1]);
-      });
-  }
+  const runin_coeff::Host host = coefficient_host(lmp, "pair_coeff runin/asperity", "pair_coeff runin/asperity", true);
+  const tribo::ContactCoefficients c = runin_coeff::pair_coeff(host, narg, arg, choice, contact_settings);
 
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = std::max(jlo, i); j <= jhi; j++) {
-      coeff_of(i, j) = c;
-      coeff_of(j, i) = tribo::swap_bodies(choice, c);
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0) error->all(FLERR, "pair_coeff runin/asperity: no type pair in range {} {}", arg[0], arg[1]);
+  runin_coeff::store_type_pairs(host, arg, ilo, ihi, jlo, jhi, choice, c,
+                                [this](int i, int j) -> tribo::ContactCoefficients & { return coeff_of(i, j); }, setflag);
   // here, before the first run's init prints the citation block (and again at init_style, after a restart)
   runin_lammps::cite(lmp, runin_lammps::model_citations(choice, wear_on, false));
-}
-
-// GRANULAR-style blocks, one per kind: 'normal hertz E*' 'damping restitution e' 'tangential mindlin G*'
-// 'friction coulomb mu_s mu_k d_c' 'wear archard k H_I H_J'. Each block names the sub-model the pair_style
-// chose for its kind; its coefficient count comes from the registry.
-tribo::ContactCoefficients PairRuninAsperity::read_keyword_coefficients(int narg, char **arg)
-{
-  tribo::ContactCoefficients c;
-  std::array<bool, tribo::kSubModelKinds> given{};
-  int iarg = 2;
-  while (iarg < narg) {
-    int kind_index = -1;
-    for (int k = 0; k < tribo::kSubModelKinds; k++)
-      if (strcmp(arg[iarg], tribo::sub_model_kind_name(static_cast<SubModelKind>(k))) == 0) kind_index = k;
-    if (kind_index < 0)
-      error->all(FLERR,
-                 "pair_coeff runin/asperity: unknown keyword '{}' (expected normal, damping, tangential, friction "
-                 "or wear)",
-                 arg[iarg]);
-    const auto kind = static_cast<SubModelKind>(kind_index);
-    if (iarg + 1 >= narg) error->all(FLERR, "pair_coeff runin/asperity: {} needs a model name", arg[iarg]);
-    const int model = runin_lammps::kernel_call(lmp, FLERR, "pair_coeff runin/asperity", true,
-                                                [&] { return tribo::find_sub_model(kind, arg[iarg + 1]); });
-    if (model != choice.of(kind))
-      error->all(FLERR, "pair_coeff runin/asperity: {} model '{}' differs from pair_style's '{}'", arg[iarg],
-                 arg[iarg + 1], tribo::registered_sub_models(kind)[choice.of(kind)].name);
-    const tribo::SubModelInfo &info = tribo::registered_sub_models(kind)[model];
-    const int n = info.coefficient_count();
-    std::string names;
-    for (const char *name : info.coefficient_names) names += fmt::format("{}{}", names.empty() ? "" : " ", name);
-    int got = 0;
-    while (iarg + 2 + got < narg && utils::is_double(arg[iarg + 2 + got])) got++;
-    if (got != n)
-      error->all(FLERR, "pair_coeff runin/asperity: {} model '{}' takes {} coefficient(s) ({}), got {}", arg[iarg],
-                 info.name, n, names, got);
-    for (int k = 0; k < n; k++)
-      c.values[kind_index].push_back(runin_lammps::finite_number(
-          lmp, FLERR, fmt::format("pair_coeff runin/asperity: {} {}", arg[iarg], info.name), info.coefficient_names[k],
-          arg[iarg + 2 + k]));
-    given[kind_index] = true;
-    iarg += 2 + n;
-  }
-  for (int k = 0; k < tribo::kSubModelKinds; k++)
-    if (!given[k])
-      error->all(FLERR, "pair_coeff runin/asperity: the {} block is missing (e.g. '{} {} ...')",
-                 tribo::sub_model_kind_name(static_cast<SubModelKind>(k)),
-                 tribo::sub_model_kind_name(static_cast<SubModelKind>(k)),
-                 tribo::registered_sub_models(static_cast<SubModelKind>(k))[choice.index[k]].name);
-  return c;
-}
-
-void PairRuninAsperity::read_optional_coefficients(tribo::ContactParameters &p, int narg, char **arg, int first)
-{
-  for (int iarg = first; iarg < narg; iarg += 2) {
-    const std::string keyword = arg[iarg];
-    if (keyword == "interface") {
-      // the state's friction factor m comes from the coefficient file (contact_coefficients applies it)
-      if (iarg + 1 >= narg)
-        error->all(FLERR, "pair_coeff runin/asperity: interface needs a state ({})", tribo::interface_state_list());
-      p.interface_state = runin_lammps::kernel_call(lmp, FLERR, "pair_coeff runin/asperity", true,
-                                                    [&] { return tribo::find_interface_state(arg[iarg + 1]); });
-      continue;
-    }
-    if (!runin_pair::optional_keyword(keyword, true))
-      error->all(FLERR,
-                 "pair_coeff runin/asperity: unknown keyword '{}' (expected tau_s, plough, S_y, nu, f, alpha, interface, "
-                 "f_film, s_r or k_g)",
-                 keyword);
-    const double value =
-        runin_lammps::finite_number(lmp, FLERR, "pair_coeff runin/asperity", keyword,
-                                    iarg + 1 < narg ? arg[iarg + 1] : "");
-    runin_pair::set_optional(p, keyword, value);
-  }
-}
-
-// Coefficient file (potentials/*.runin); format and checks in runin_material_file.h.
-tribo::ContactParameters PairRuninAsperity::read_coefficients_file(const std::string &file,
-                                                                  const std::string &material_i,
-                                                                  const std::string &material_j)
-{
-  const RuninMaterialPair entry =
-      read_runin_material_pair(lmp, file, material_i, material_j, "pair_coeff runin/asperity");
-  return contact_parameters(entry);
 }
 
 void PairRuninAsperity::init_style()

@@ -118,10 +118,6 @@ class PairRuninAsperity : public Pair, public RuninContactSource, public runin_l
   runin_pair::Atoms<tagint> loop_atoms() const;
   runin_pair::Neighbours neighbours() const;
   runin::tribo::ContactCoefficients &coeff_of(int itype, int jtype);
-  runin::tribo::ContactParameters read_coefficients_file(const std::string &file, const std::string &material_i,
-                                                         const std::string &material_j);
-  runin::tribo::ContactCoefficients read_keyword_coefficients(int narg, char **arg);
-  void read_optional_coefficients(runin::tribo::ContactParameters &p, int narg, char **arg, int first);
   void set_sub_model(runin::tribo::SubModelKind kind, const std::string &name);
   bool plastic_normal() const;    // the normal sub-model is elastic/plastic (summits flatten)
 };

@@ -45,3 +45,20 @@ RuninMaterialPair LAMMPS_NS::read_runin_material_pair(LAMMPS *lmp, const std::st
   MPI_Bcast(&entry, sizeof(entry), MPI_BYTE, 0, lmp->world);    // trivially copyable doubles
   return entry;
 }
+
+runin_coeff::Host LAMMPS_NS::coefficient_host(LAMMPS *lmp, const std::string &style, const std::string &material_style,
+                                              bool film)
+{
+  runin_coeff::Host host;
+  host.style = style;
+  host.film = film;
+  host.fail = [lmp](const std::string &message) { lmp->error->all(FLERR, message); };
+  host.warning = [lmp](const std::string &message) {
+    if (lmp->comm->me == 0) lmp->error->warning(FLERR, message);
+  };
+  host.is_number = [](const char *text) { return text && utils::is_double(text); };
+  host.material = [lmp, material_style](const char *path, const char *a, const char *b) {
+    return runin_coeff::parameters_of(read_runin_material_pair(lmp, path, a, b, material_style));
+  };
+  return host;
+}

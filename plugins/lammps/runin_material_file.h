@@ -8,6 +8,7 @@
 #include "tribo/contact.h"
 #include "tribo/contact_model.h"
 #include "tribo/material_file.h"
+#include "coefficient_grammar.h"
 
 #include <string>
 
@@ -22,14 +23,9 @@ using RuninMaterialPair = runin::tribo::MaterialPairEntry;
 RuninMaterialPair read_runin_material_pair(LAMMPS *lmp, const std::string &file, const std::string &material_a,
                                            const std::string &material_b, const std::string &style);
 
-// The contact parameters of that pair (E*, G* from the two materials, their hardnesses, the pair entry and its
-// interface lines).
-inline runin::tribo::ContactParameters contact_parameters(const RuninMaterialPair &entry)
-{
-  auto p = runin::tribo::contact_parameters(entry.a, entry.b, entry.restitution, entry.mu_static, entry.mu_kinetic,
-                                            entry.slip_weakening_distance, entry.wear_coefficient);
-  p.interface_factors = entry.interface_factor;
-  return p;
-}
+// The coefficient grammar's host adaptor (plugins/common/coefficient_grammar.h) for `style`: ERRORs and WARNINGs
+// through LAMMPS's Error, numbers as utils::is_double reads them, coefficient files through read_runin_material_pair
+// with `material_style` before its messages; `film`: the host keeps the per-summit film coverage.
+runin_coeff::Host coefficient_host(LAMMPS *lmp, const std::string &style, const std::string &material_style, bool film);
 
 }    // namespace LAMMPS_NS

@@ -35,19 +35,7 @@ FixRuninWallLiggghts::FixRuninWallLiggghts(LAMMPS *lmp, int narg, char **arg) :
     runin_liggghts::all(lmp, FLERR, "fix runin/wall: requires atom attributes radius, rmass, omega and torque "
                                     "(atom_style granular or sphere)");
   runin_liggghts::require_si_units(lmp, FLERR, "fix runin/wall");
-  runin_wall::Hooks hooks;
-  hooks.fail = [this](const std::string &message) { runin_liggghts::all(this->lmp, FLERR, message); };
-  hooks.number = [this](const std::string &name, const char *text) {
-    return runin_liggghts::finite_number(this->lmp, FLERR, "fix runin/wall", name, text);
-  };
-  hooks.material = [this](const char *path, const char *a, const char *b) {
-    return runin_liggghts::contact_parameters(
-        runin_liggghts::read_material_pair(this->lmp, path, a, b, "fix runin/wall: file"));
-  };
-  hooks.warning = [this](const std::string &message) {
-    if (comm->me == 0) error->warning(FLERR, message.c_str());
-  };
-  cfg = runin_wall::parse(narg, arg, hooks);
+  cfg = runin_wall::parse(narg, arg, runin_liggghts::coefficient_host(lmp, "fix runin/wall", "fix runin/wall: file", false));
   motion.wall_z = cfg.wall_z;
 
   vector_flag = 1;

@@ -1,5 +1,5 @@
 #include "pair_runin_asperity_liggghts.h"
-#include "pair_coefficients.h"
+#include "coefficient_grammar.h"
 
 #include "fix_runin_wear_state_liggghts.h"
 #include "runin_liggghts_errors.h"
@@ -169,81 +169,24 @@ void PairRuninAsperityLiggghts::settings(int narg, char **arg)
   if ((wear_on || plastic_normal()) && domain->box_exist) attach_wear_state();
 }
 
-// pair_coeff I J E* G* e mu_s mu_k d_c k H [tau_s X] [plough X] [S_y X] [nu X]
-// pair_coeff I J file <path> <material-I> <material-J> [the same optional keywords]
+// pair_coeff I J <keyword block | explicit values | file ...> [options]: the grammar, checks and messages of the
+// LAMMPS pair (plugins/common/coefficient_grammar.h)
 void PairRuninAsperityLiggghts::coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
   if (narg < 2) runin_liggghts::all(lmp, FLERR, "pair_coeff runin/asperity: expected type I and type J");
-  const char *where = "pair_coeff runin/asperity";
   runin_liggghts::require_si_units(lmp, FLERR, "pair runin/asperity");
 
-  tribo::ContactParameters p;
-  int optional_first = narg;
-  const char *origin = "explicit";
-  if (narg >= 6 && strcmp(arg[2], "file") == 0) {
-    p = runin_liggghts::contact_parameters(
-        runin_liggghts::read_material_pair(lmp, arg[3], arg[4], arg[5], where));
-    origin = "file";
-    optional_first = 6;
-  } else if (narg == 10 || (narg > 10 && !runin_liggghts::is_double(arg[10]))) {
-    double v[runin_pair::kExplicitValues];
-    for (int k = 0; k < runin_pair::kExplicitValues; k++)
-      v[k] = runin_liggghts::finite_number(lmp, FLERR, where, runin_pair::kExplicitNames[k], arg[2 + k]);
-    p = runin_pair::explicit_parameters(v);
-    optional_first = 10;
-  } else {
-    // count the numbers given after the type pair and name the positional values left out
-    int given = 0;
-    while (2 + given < narg && runin_liggghts::is_double(arg[2 + given])) given++;
-    runin_liggghts::all(lmp, FLERR,
-                        fmt::format("pair_coeff runin/asperity: expected 'I J E* G* e mu_s mu_k d_c k H' (8 values "
-                                    "after the type pair), got {} value(s){}; or 'I J file <path> <material-I> "
-                                    "<material-J>', then optional 'tau_s X' 'plough X' 'S_y X' 'nu X' (the "
-                                    "keyword-block form is LAMMPS-only)",
-                                    given, runin_pair::explicit_count_problem(given)));
-  }
-  for (int iarg = optional_first; iarg < narg; iarg += 2) {
-    const std::string keyword = arg[iarg];
-    if (keyword == "interface") {
-      // the state's friction factor m comes from the coefficient file (contact_coefficients applies it)
-      if (iarg + 1 >= narg)
-        runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: interface needs a state ({})",
-                                                    tribo::interface_state_list()));
-      p.interface_state = runin_liggghts::kernel_call(lmp, FLERR, where, true,
-                                                      [&] { return tribo::find_interface_state(arg[iarg + 1]); });
-      continue;
-    }
-    if (!runin_pair::optional_keyword(keyword, false))
-      runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: unknown keyword '{}' (expected "
-                                                  "tau_s, plough, S_y, nu, f, alpha or interface)", keyword));
-    const double value = runin_liggghts::finite_number(lmp, FLERR, where, keyword, iarg + 1 < narg ? arg[iarg + 1] : "");
-    runin_pair::set_optional(p, keyword, value);
-  }
-  if (p.yield_from_hardness && plastic_normal() && comm->me == 0)
-    error->warning(FLERR, fmt::format("pair_coeff runin/asperity {} {}: no yield strength given (S_y keyword or "
-                                      "material file): S_y = H / {} = {:.4g} Pa (Tabor), nu = {}", arg[0], arg[1],
-                                      tribo::kTaborConstraintFactor, p.yield_strength, p.poisson_ratio).c_str());
-  tribo::ContactCoefficients c;
-  runin_liggghts::kernel_call(lmp, FLERR, fmt::format("pair_coeff runin/asperity ({})", origin), true, [&] {
-    c = tribo::contact_coefficients(choice, p);
-    tribo::ContactModel(choice, c, contact_settings);    // validates every sub-model's coefficients
-  });
+  // no film coverage on this host: the film keywords are unknown
+  const runin_coeff::Host host =
+      runin_liggghts::coefficient_host(lmp, "pair_coeff runin/asperity", "pair_coeff runin/asperity", false);
+  const tribo::ContactCoefficients c = runin_coeff::pair_coeff(host, narg, arg, choice, contact_settings);
 
   int ilo, ihi, jlo, jhi;
   force->bounds(arg[0], atom->ntypes, ilo, ihi);
   force->bounds(arg[1], atom->ntypes, jlo, jhi);
-  int count = 0;
-  for (int i = ilo; i <= ihi; i++)
-    for (int j = std::max(jlo, i); j <= jhi; j++) {
-      coeff_of(i, j) = c;
-      coeff_of(j, i) = tribo::swap_bodies(choice, c);
-      setflag[i][j] = 1;
-      count++;
-    }
-  if (count == 0)
-    runin_liggghts::all(lmp, FLERR, fmt::format("pair_coeff runin/asperity: no type pair in range {} {}", arg[0],
-                                                arg[1]));
+  runin_coeff::store_type_pairs(host, arg, ilo, ihi, jlo, jhi, choice, c,
+                                [this](int i, int j) -> tribo::ContactCoefficients & { return coeff_of(i, j); }, setflag);
 }
 
 void PairRuninAsperityLiggghts::init_style()

@@ -4,6 +4,7 @@
 #include "../lammps/runin_potential_path.h"
 
 #include "comm.h"
+#include "error.h"
 #include "lammps.h"
 
 #include <fstream>
@@ -39,4 +40,21 @@ runin_liggghts::MaterialPair runin_liggghts::read_material_pair(LAMMPS_NS::LAMMP
   if (length) all(lmp, FLERR, style + ": " + problem);
   MPI_Bcast(&entry, sizeof(entry), MPI_BYTE, 0, lmp->world);
   return entry;
+}
+
+runin_coeff::Host runin_liggghts::coefficient_host(LAMMPS_NS::LAMMPS *lmp, const std::string &style,
+                                                   const std::string &material_style, bool film)
+{
+  runin_coeff::Host host;
+  host.style = style;
+  host.film = film;
+  host.fail = [lmp](const std::string &message) { all(lmp, FLERR, message); };
+  host.warning = [lmp](const std::string &message) {
+    if (lmp->comm->me == 0) lmp->error->warning(FLERR, message.c_str());
+  };
+  host.is_number = [](const char *text) { return is_double(text); };
+  host.material = [lmp, material_style](const char *path, const char *a, const char *b) {
+    return runin_coeff::parameters_of(read_material_pair(lmp, path, a, b, material_style));
+  };
+  return host;
 }

@@ -8,6 +8,7 @@
 #include "tribo/contact.h"
 #include "tribo/contact_model.h"
 #include "tribo/material_file.h"
+#include "coefficient_grammar.h"
 
 #include <string>
 
@@ -22,12 +23,10 @@ using MaterialPair = runin::tribo::MaterialPairEntry;
 MaterialPair read_material_pair(LAMMPS_NS::LAMMPS *lmp, const std::string &file, const std::string &material_a,
                                 const std::string &material_b, const std::string &style);
 
-inline runin::tribo::ContactParameters contact_parameters(const MaterialPair &entry)
-{
-  auto p = runin::tribo::contact_parameters(entry.a, entry.b, entry.restitution, entry.mu_static, entry.mu_kinetic,
-                                            entry.slip_weakening_distance, entry.wear_coefficient);
-  p.interface_factors = entry.interface_factor;    // the file's 'interface' lines (keyword interface STATE)
-  return p;
-}
+// The coefficient grammar's host adaptor (plugins/common/coefficient_grammar.h) for `style`: ERRORs and WARNINGs
+// through LIGGGHTS's Error, numbers as runin_liggghts::is_double reads them, coefficient files through
+// read_material_pair with `material_style` before its messages; `film`: the host keeps a per-summit film coverage.
+runin_coeff::Host coefficient_host(LAMMPS_NS::LAMMPS *lmp, const std::string &style, const std::string &material_style,
+                                   bool film);
 
 }    // namespace runin_liggghts

@@ -289,7 +289,7 @@ ContactParameters contact_parameters(const Material &i, const Material &j, doubl
   p.hardness_j = j.hardness;
   // the softer body yields first: its S_y (Tabor's H / 2.8 where none is given) and nu
   auto yield_of = [](const Material &m) {
-    return m.yield_strength > 0.0 ? m.yield_strength : m.hardness / kTaborConstraintFactor;
+    return m.yield_strength > 0.0 ? m.yield_strength : tabor_yield_strength(m.hardness);
   };
   const Material &soft = yield_of(i) <= yield_of(j) ? i : j;
   p.yield_strength = yield_of(soft);

@@ -839,8 +839,10 @@ struct ContactParameters {
   double film_removal_distance = std::numeric_limits<double>::quiet_NaN();
   double film_growth_rate = std::numeric_limits<double>::quiet_NaN();
 };
-// Tabor's fallback S_y = H / 2.8 where a material gives no yield strength.
+// Tabor's fallback S_y = H / 2.8 where a material gives no yield strength: the one place it is computed (the hosts
+// say so in one WARNING, plugins/common/coefficient_grammar.h).
 constexpr double kTaborConstraintFactor = 2.8;
+constexpr double tabor_yield_strength(double hardness) { return hardness / kTaborConstraintFactor; }
 // E* and G* of two materials, the hardnesses and the pair's interface values.
 ContactParameters contact_parameters(const Material &i, const Material &j, double restitution, double mu_static,
                                      double mu_kinetic, double slip_weakening_distance, double wear_coefficient);
