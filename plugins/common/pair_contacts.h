@@ -172,8 +172,7 @@ template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG,
   const std::optional<tribo::ContactModel> *const model_table = s.models;
   constexpr int HISTORY = tribo::contact_history_size<NORMAL>;
   // plastic flattening lowers the summits: only with the worn geometry in the contact, and when advancing
-  constexpr bool PLASTIC_MODEL =
-      std::is_same_v<std::tuple_element_t<NORMAL, tribo::NormalModels>, tribo::ElasticPlasticNormalModel>;
+  constexpr bool PLASTIC_MODEL = tribo::FlattensSummits<std::tuple_element_t<NORMAL, tribo::NormalModels>>::value;
   const bool PLASTIC = PLASTIC_MODEL && RESHAPE && advance && s.increments;
   // a friction model with a surface film reads the summits' coverage and adds to their removal exposure
   constexpr bool FILM = tribo::HasFilm<std::tuple_element_t<FRICTION, tribo::FrictionModels>>::value && Host::has_film;
@@ -256,7 +255,7 @@ template <int NORMAL, int FRICTION, int WEAR, int RESHAPE, int SUMS, int EVFLAG,
     if (RESHAPE) g.summit_drop = std::max(wear_depth(i), 0.0) + std::max(wear_depth(j), 0.0);
     if constexpr (FILM) g.film_coverage = 0.5 * (coverage[i] + coverage[j]);
     // a new contact of flattened summits is a reload: the model restores the state that flattened them
-    if (PLASTIC_MODEL && RESHAPE && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
+    if (PLASTIC_MODEL && RESHAPE && g.summit_drop > 0.0 && !tribo::has_plastic_history(history))
       g.flattened_drop = flattened_drop<WearFix>(state, radius, i, j);
     const double smaller_radius = std::min(radi, radj);
     const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, WEAR>(g, history, step_dt, advance);
@@ -449,7 +448,7 @@ SingleContact single_contact(const Atoms<Tag> &a, const double *state, const tri
   const double r = std::sqrt(rsq);
   tribo::ContactGeometry g = pair_geometry(a, i, j, reach - r, 1.0 / r, del, flat);
   if (state) g.summit_drop = std::max(depth_i, 0.0) + std::max(depth_j, 0.0);
-  if (state && plastic && g.summit_drop > 0.0 && !(history[tribo::HISTORY_MAX_OVERLAP] > 0.0))
+  if (state && plastic && g.summit_drop > 0.0 && !tribo::has_plastic_history(history))
     g.flattened_drop = flattened_drop<WearFix>(state, a.radius, i, j);
   tribo::ContactResult contact;
   tribo::with_sub_models(choice, [&](auto normal, auto) {

@@ -249,10 +249,12 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
     c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
         tribo::find_sub_model(tribo::SubModelKind::friction, friction_model_name);
   // the film coverage is a per-summit state that only pair runin/asperity keeps
-  if (c.choice.of(tribo::SubModelKind::friction) ==
-      tribo::find_sub_model(tribo::SubModelKind::friction, tribo::JunctionFilmFrictionModel::name))
-    fail(hooks, fmt::format("fix runin/wall: {} 'junction/film' is not supported on the wall (the film coverage is "
-                            "kept by pair runin/asperity only); use 'junction'", have_block ? "friction" : "friction_model"));
+  const tribo::SubModelInfo &friction =
+      tribo::registered_sub_models(tribo::SubModelKind::friction)[c.choice.of(tribo::SubModelKind::friction)];
+  if (friction.has_film)
+    fail(hooks, fmt::format("fix runin/wall: {} '{}' is not supported on the wall (the film coverage is kept by pair "
+                            "runin/asperity only); use a friction model without a film",
+                            have_block ? "friction" : "friction_model", friction.name));
 
   runin_coeff::Read read;
   if (have_block) {
@@ -383,7 +385,7 @@ void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **hi
       // the spring and slip belong to one contact; the largest interference belongs to the asperity under
       // this flat and stays, so a reload retraces the elastic unloading curve up to it
       for (int k = 0; k < HISTORY_SIZE; k++)
-        if (!tribo::is_plastic_history(k)) history[i][k] = 0.0;
+        if (!tribo::is_normal_history(k)) history[i][k] = 0.0;
       continue;
     }
     if (overlap + std::max(summit_drop, 0.0) > r) {
@@ -398,7 +400,7 @@ void contacts(const Config &c, const Motion &m, const Atoms<Tag> &a, double **hi
     g.summit_drop = std::max(summit_drop, 0.0);
     // a flattened summit under a contact without plastic history is a reload: the model restores the state
     // that flattened it (the history kept below normally holds it already)
-    if (worn_geometry && summit_drop > 0.0 && !(history[i][tribo::HISTORY_MAX_OVERLAP] > 0.0))
+    if (worn_geometry && summit_drop > 0.0 && !tribo::has_plastic_history(history[i]))
       g.flattened_drop = tribo::flattened_part_of_drop(r, summit_drop, wear_state[i][WearFix::VOLUME_FLATTENED]);
 
     const tribo::ContactResult contact = model.evaluate<NORMAL, FRICTION, 1>(g, history[i], dt, advance);

@@ -184,14 +184,12 @@ void PairRuninAsperity::settings(int narg, char **arg)
 
 bool PairRuninAsperity::film_friction() const
 {
-  static const int index = tribo::find_sub_model(SubModelKind::friction, tribo::JunctionFilmFrictionModel::name);
-  return choice.of(SubModelKind::friction) == index;
+  return tribo::registered_sub_models(SubModelKind::friction)[choice.of(SubModelKind::friction)].has_film;
 }
 
 bool PairRuninAsperity::plastic_normal() const
 {
-  static const int index = tribo::find_sub_model(SubModelKind::normal, tribo::ElasticPlasticNormalModel::name);
-  return choice.of(SubModelKind::normal) == index;
+  return tribo::registered_sub_models(SubModelKind::normal)[choice.of(SubModelKind::normal)].flattens_summits;
 }
 
 // The per-atom wear state exists from pair_style on, so dumps and computes can name it before a run.

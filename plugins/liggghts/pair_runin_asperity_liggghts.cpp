@@ -104,15 +104,14 @@ void PairRuninAsperityLiggghts::set_sub_model(SubModelKind kind, const std::stri
   choice.index[static_cast<int>(kind)] = runin_liggghts::kernel_call(
       lmp, FLERR, "pair_style runin/asperity", true, [&] { return tribo::find_sub_model(kind, name); });
   // the film coverage is a per-summit state that only the LAMMPS pair keeps
-  if (kind == SubModelKind::friction && name == tribo::JunctionFilmFrictionModel::name)
-    error->all(FLERR, "pair_style runin/asperity: friction 'junction/film' is not supported in LIGGGHTS (the film "
-                      "coverage is kept by the LAMMPS pair only); use 'junction'");
+  if (kind == SubModelKind::friction && tribo::registered_sub_models(kind)[choice.of(kind)].has_film)
+    error->all(FLERR, ("pair_style runin/asperity: friction '" + name + "' is not supported in LIGGGHTS (the film "
+                       "coverage is kept by the LAMMPS pair only); use a friction model without a film").c_str());
 }
 
 bool PairRuninAsperityLiggghts::plastic_normal() const
 {
-  static const int index = tribo::find_sub_model(SubModelKind::normal, tribo::ElasticPlasticNormalModel::name);
-  return choice.of(SubModelKind::normal) == index;
+  return tribo::registered_sub_models(SubModelKind::normal)[choice.of(SubModelKind::normal)].flattens_summits;
 }
 
 void PairRuninAsperityLiggghts::attach_wear_state()

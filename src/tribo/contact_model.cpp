@@ -10,6 +10,13 @@ namespace runin::tribo {
 
 namespace {
 
+template <class Model, class = void> struct CitationsOf {
+  static std::vector<const char *> get() { return {}; }
+};
+template <class Model> struct CitationsOf<Model, std::void_t<decltype(Model::citations)>> {
+  static std::vector<const char *> get() { return {Model::citations.begin(), Model::citations.end()}; }
+};
+
 template <class Tuple, std::size_t... I>
 std::vector<SubModelInfo> infos_of(std::index_sequence<I...>)
 {
@@ -17,7 +24,9 @@ std::vector<SubModelInfo> infos_of(std::index_sequence<I...>)
   (out.push_back(SubModelInfo{
        std::tuple_element_t<I, Tuple>::name,
        std::vector<const char *>(std::tuple_element_t<I, Tuple>::coefficient_names.begin(),
-                                 std::tuple_element_t<I, Tuple>::coefficient_names.end())}),
+                                 std::tuple_element_t<I, Tuple>::coefficient_names.end()),
+       FlattensSummits<std::tuple_element_t<I, Tuple>>::value, HasFilm<std::tuple_element_t<I, Tuple>>::value,
+       InterfaceUseOf<std::tuple_element_t<I, Tuple>>::value, CitationsOf<std::tuple_element_t<I, Tuple>>::get()}),
    ...);
   return out;
 }
@@ -47,6 +56,24 @@ Coefficients mix_chosen(int index, const Coefficients &ii, const Coefficients &j
 template <class Tuple> Coefficients mix_chosen(int index, const Coefficients &ii, const Coefficients &jj)
 {
   return mix_chosen<Tuple>(index, ii, jj, std::make_index_sequence<std::tuple_size_v<Tuple>>{});
+}
+
+template <class Tuple, class P, std::size_t... I>
+Coefficients from_parameters_chosen(int index, const P &p, std::index_sequence<I...>)
+{
+  Coefficients out;
+  ((index == static_cast<int>(I) ? (void)(out = std::tuple_element_t<I, Tuple>::from_parameters(p)) : void()), ...);
+  return out;
+}
+template <class Tuple, class P> Coefficients from_parameters_chosen(int index, const P &p)
+{
+  return from_parameters_chosen<Tuple>(index, p, std::make_index_sequence<std::tuple_size_v<Tuple>>{});
+}
+
+// f(model) for the one set slot of a kind
+template <class Slots, class F> void with_set(const Slots &slots, F &&f)
+{
+  std::apply([&](const auto &...slot) { ((slot ? (void)f(*slot) : void()), ...); }, slots);
 }
 
 // Names are stored in restart records as their characters, one double each (exact for 0..255).
@@ -231,35 +258,16 @@ ContactModel::ContactModel(const ContactModelChoice &choice, const ContactCoeffi
   emplace_chosen<FrictionModels>(friction_, choice.of(K::friction), c.of(K::friction).data());
   if (!(settings.restick_speed >= 0.0) || !std::isfinite(settings.restick_speed))
     throw InvalidCoefficient("restick: speed must be >= 0 m/s and finite");
-  // a film at the interface cannot shear harder than the bulk under it
-  const auto &archard = std::get<std::optional<ArchardWearModel>>(wear_);
-  const double softer = std::min(archard->body_i().hardness(), archard->body_j().hardness());
-  const auto check_film = [softer](const auto &model) {
-    if (!model || model->shear_strength() <= softer) return;
-    char message[160];
-    std::snprintf(message, sizeof message,
-                  "tau_s: interfacial shear strength %.4g Pa exceeds the hardness of the softer body, %.4g Pa",
-                  model->shear_strength(), softer);
-    throw InvalidCoefficient(message);
-  };
-  check_film(std::get<std::optional<StrengthFrictionModel>>(friction_));
-  check_film(std::get<std::optional<BrizmerFrictionModel>>(friction_));
-  // junction growth needs the plastic history and mean pressure of the elastic-plastic model
-  if (std::get<std::optional<JunctionFrictionModel>>(friction_) &&
-      !std::get<std::optional<ElasticPlasticNormalModel>>(normal_))
-    throw InvalidCoefficient("friction model 'junction' needs the normal model 'elastic/plastic'");
-  if (std::get<std::optional<JunctionFilmFrictionModel>>(friction_) &&
-      !std::get<std::optional<ElasticPlasticNormalModel>>(normal_))
-    throw InvalidCoefficient("friction model 'junction/film' needs the normal model 'elastic/plastic'");
-  if (std::get<std::optional<BrizmerFrictionModel>>(friction_)) {
-    const auto &plastic = std::get<std::optional<ElasticPlasticNormalModel>>(normal_);
-    if (!plastic)
-      throw InvalidCoefficient("friction model 'brizmer' needs the normal model 'elastic/plastic'");
-    const double nu = plastic->unit_curve().coefficients().poisson_ratio;
-    if (!(nu >= 0.2 && nu < 0.5))
-      throw InvalidCoefficient("nu: friction model 'brizmer' is fitted for a Poisson ratio in [0.2, 0.5), got " +
-                               std::to_string(nu));
-  }
+  // the friction law's own checks against the chosen normal and wear laws (check_with)
+  with_set(friction_, [&](const auto &friction) {
+    using Friction = std::decay_t<decltype(friction)>;
+    with_set(normal_, [&](const auto &normal) {
+      with_set(wear_, [&](const auto &wear) {
+        if constexpr (HasCrossCheck<Friction, std::decay_t<decltype(normal)>, std::decay_t<decltype(wear)>>::value)
+          friction.check_with(normal, wear);
+      });
+    });
+  });
 }
 
 double ContactModel::effective_modulus() const
@@ -298,20 +306,42 @@ ContactParameters contact_parameters(const Material &i, const Material &j, doubl
   return p;
 }
 
-ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const ContactParameters &p)
+namespace {
+// "a" or "a or b": the friction laws with a film
+std::string film_models()
+{
+  std::string out;
+  for (const SubModelInfo &info : registered_sub_models(SubModelKind::friction))
+    if (info.has_film) out += (out.empty() ? "" : " or ") + std::string(info.name);
+  return out;
+}
+// "'a'", "'a' and 'b'", "'a', 'b' and 'c'": the friction laws an interface state sets `use` of
+std::string friction_models_using(InterfaceUse use)
+{
+  std::vector<std::string> names;
+  for (const SubModelInfo &info : registered_sub_models(SubModelKind::friction))
+    if (info.interface_use == use) names.push_back("'" + std::string(info.name) + "'");
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return out;
+}
+}    // namespace
+
+ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const ContactParameters &given)
 {
   using K = SubModelKind;
   ContactCoefficients c;
-  const std::string normal = registered_sub_models(K::normal)[choice.of(K::normal)].name;
-  if (normal == HertzNormalModel::name) c.of(K::normal) = {p.effective_modulus};
-  if (normal == ElasticPlasticNormalModel::name) c.of(K::normal) = {p.effective_modulus, p.yield_strength, p.poisson_ratio};
-  c.of(K::damping) = {p.restitution};
-  c.of(K::tangential) = {p.effective_shear_modulus};
-  const std::string friction = registered_sub_models(K::friction)[choice.of(K::friction)].name;
-  const bool adhesion_law = friction == StrengthFrictionModel::name || friction == BrizmerFrictionModel::name;
+  c.of(K::normal) = from_parameters_chosen<NormalModels>(choice.of(K::normal), given);
+  c.of(K::damping) = from_parameters_chosen<DampingModels>(choice.of(K::damping), given);
+  c.of(K::tangential) = from_parameters_chosen<TangentialModels>(choice.of(K::tangential), given);
+  const SubModelInfo &friction_info = registered_sub_models(K::friction)[choice.of(K::friction)];
+  const std::string friction = friction_info.name;
+  const bool adhesion_law = friction_info.interface_use == InterfaceUse::shear_strength;
   // S_y given (material file or keyword), not Tabor's H / 2.8 guess
-  const bool yield_known = !p.yield_from_hardness && p.yield_strength > 0.0;
-  double shear_strength = p.shear_strength, interface_coefficient = p.interface_coefficient;
+  const bool yield_known = !given.yield_from_hardness && given.yield_strength > 0.0;
+  // the interface state resolved into the value it sets (tau_s or f)
+  ContactParameters p = given;
   if (p.interface_state >= 0) {
     const std::string state = kInterfaceStateNames[p.interface_state];
     const double m = p.interface_factors[p.interface_state];
@@ -324,74 +354,68 @@ ContactCoefficients contact_coefficients(const ContactModelChoice &choice, const
       if (!yield_known)
         throw InvalidCoefficient("interface: tau_s = m S_y / sqrt(3) needs the yield strength of the softer body, not "
                                  "Tabor's H / 2.8 (the material's 6th value in the coefficient file)");
-      shear_strength = interface_shear_strength(m, p.yield_strength);
-    } else if (friction == JunctionFrictionModel::name) {
+      p.shear_strength = interface_shear_strength(m, p.yield_strength);
+    } else if (friction_info.interface_use == InterfaceUse::interface_coefficient) {
       if (!std::isnan(p.interface_coefficient))
         throw InvalidCoefficient("interface: give either f or interface " + state + ", not both");
-      interface_coefficient = m;
+      p.interface_coefficient = m;
     } else {
       throw InvalidCoefficient("interface: friction model '" + friction + "' has no interface strength (interface " +
-                               state + " sets tau_s of 'strength' and 'brizmer' or f of 'junction')");
+                               state + " sets tau_s of " + friction_models_using(InterfaceUse::shear_strength) +
+                               " or f of " + friction_models_using(InterfaceUse::interface_coefficient) + ")");
     }
   }
   // an interface stronger than the softer body's shear yield; above the hardness ContactModel says so first
-  if (adhesion_law && yield_known && shear_strength <= std::min(p.hardness_i, p.hardness_j))
-    check_interface_strength(shear_strength, p.yield_strength);
-  if (friction == CoulombFrictionModel::name)
-    c.of(K::friction) = {p.mu_static, p.mu_kinetic, p.slip_weakening_distance};
-  else if (friction == StrengthFrictionModel::name)
-    c.of(K::friction) = {p.mu_static, p.mu_kinetic, p.slip_weakening_distance, shear_strength,
-                         p.ploughing_factor};
-  else if (friction == BrizmerFrictionModel::name)
-    c.of(K::friction) = {p.slip_weakening_distance, shear_strength, p.ploughing_factor};
-  else if (friction == JunctionFrictionModel::name) {
-    // which contacts are plastic junctions follows from S_y: Tabor's H / 2.8 guess is not taken for it
-    if (p.yield_from_hardness)
-      throw InvalidCoefficient("S_y: friction model 'junction' needs the yield strength of the softer body, not "
-                               "Tabor's H / 2.8 (pair_coeff keyword 'S_y X', fix runin/wall keyword 'yield', or "
-                               "the material's 6th value in a coefficient file)");
-    if (std::isnan(interface_coefficient))
-      throw InvalidCoefficient("f: friction model 'junction' needs the interface coefficient f, 0 <= f < 1 "
-                               "(pair_coeff keyword 'f X', fix runin/wall keyword 'junction f alpha')");
-    c.of(K::friction) = {interface_coefficient, p.junction_alpha};
-  }
-  else if (friction == JunctionFilmFrictionModel::name) {
-    if (p.yield_from_hardness)
-      throw InvalidCoefficient("S_y: friction model 'junction/film' needs the yield strength of the softer body, "
-                               "not Tabor's H / 2.8 (pair_coeff keyword 'S_y X' or the material's 6th value in a "
-                               "coefficient file)");
-    if (std::isnan(p.interface_coefficient))
-      throw InvalidCoefficient("f: friction model 'junction/film' needs the clean interface coefficient f, "
-                               "0 <= f < 1 (pair_coeff keyword 'f X')");
-    if (std::isnan(p.film_interface_coefficient))
-      throw InvalidCoefficient("f_film: friction model 'junction/film' needs the film's interface coefficient, "
-                               "0 <= f_film < 1 (pair_coeff keyword 'f_film X')");
-    const auto off_unless_given = [](double v) { return std::isnan(v) ? 0.0 : v; };
-    c.of(K::friction) = {p.interface_coefficient, p.film_interface_coefficient, p.junction_alpha,
-                         off_unless_given(p.film_removal_distance), off_unless_given(p.film_growth_rate)};
-  }
+  if (adhesion_law && yield_known && p.shear_strength <= std::min(p.hardness_i, p.hardness_j))
+    check_interface_strength(p.shear_strength, p.yield_strength);
+  c.of(K::friction) = from_parameters_chosen<FrictionModels>(choice.of(K::friction), p);
   // a film's values on a pair whose friction model has none would be ignored: refused
-  if (friction != JunctionFilmFrictionModel::name) {
-    const char *given = !std::isnan(p.film_interface_coefficient) ? "f_film"
-                        : !std::isnan(p.film_removal_distance)    ? "s_r"
-                        : !std::isnan(p.film_growth_rate)         ? "k_g"
-                                                                  : nullptr;
-    if (given)
-      throw InvalidCoefficient(std::string(given) + ": friction model '" + friction +
-                               "' has no surface film (film keywords need friction junction/film)");
+  if (!friction_info.has_film) {
+    const char *film_value = !std::isnan(p.film_interface_coefficient) ? "f_film"
+                             : !std::isnan(p.film_removal_distance)    ? "s_r"
+                             : !std::isnan(p.film_growth_rate)         ? "k_g"
+                                                                       : nullptr;
+    if (film_value)
+      throw InvalidCoefficient(std::string(film_value) + ": friction model '" + friction +
+                               "' has no surface film (film keywords need friction " + film_models() + ")");
   }
-  c.of(K::wear) = {p.wear_coefficient, p.hardness_i, p.wear_coefficient, p.hardness_j};
+  c.of(K::wear) = from_parameters_chosen<WearModels>(choice.of(K::wear), p);
   check_coefficient_counts(choice, c);
   return c;
 }
 
+namespace {
+// A law with per-body coefficients says how they swap (static swap_bodies); the others' are the pair's.
+template <class Model, class = void> struct HasBodySwap : std::false_type {};
+template <class Model>
+struct HasBodySwap<Model, std::void_t<decltype(Model::swap_bodies(std::declval<const Coefficients &>()))>>
+    : std::true_type {};
+template <class Tuple, std::size_t... I>
+Coefficients swap_chosen(int index, const Coefficients &c, std::index_sequence<I...>)
+{
+  Coefficients out = c;
+  const auto swap = [&](auto *model) {
+    using Model = std::remove_pointer_t<decltype(model)>;
+    if constexpr (HasBodySwap<Model>::value) out = Model::swap_bodies(c);
+  };
+  ((index == static_cast<int>(I) ? swap(static_cast<std::tuple_element_t<I, Tuple> *>(nullptr)) : void()), ...);
+  return out;
+}
+template <class Tuple> Coefficients swap_chosen(int index, const Coefficients &c)
+{
+  return swap_chosen<Tuple>(index, c, std::make_index_sequence<std::tuple_size_v<Tuple>>{});
+}
+}    // namespace
+
 ContactCoefficients swap_bodies(const ContactModelChoice &choice, const ContactCoefficients &c)
 {
-  // only the wear law has per-body coefficients so far
-  static_assert(std::tuple_size_v<WearModels> == 1, "swap the per-body coefficients of every wear law");
-  ContactCoefficients out = c;
-  (void) choice;
-  out.of(SubModelKind::wear) = ArchardWearModel::swap_bodies(c.of(SubModelKind::wear));
+  using K = SubModelKind;
+  ContactCoefficients out;
+  out.of(K::normal) = swap_chosen<NormalModels>(choice.of(K::normal), c.of(K::normal));
+  out.of(K::damping) = swap_chosen<DampingModels>(choice.of(K::damping), c.of(K::damping));
+  out.of(K::tangential) = swap_chosen<TangentialModels>(choice.of(K::tangential), c.of(K::tangential));
+  out.of(K::friction) = swap_chosen<FrictionModels>(choice.of(K::friction), c.of(K::friction));
+  out.of(K::wear) = swap_chosen<WearModels>(choice.of(K::wear), c.of(K::wear));
   return out;
 }
 

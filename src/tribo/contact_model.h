@@ -14,6 +14,7 @@
 #include "tribo/contact.h"
 #include "tribo/elastic_plastic.h"
 #include "tribo/friction_strength.h"
+#include "tribo/model_citations.h"
 #include "tribo/surface_film.h"
 #include "tribo/wear.h"
 
@@ -114,28 +115,25 @@ inline ContactGeometry sphere_flat_geometry(double overlap, const double *normal
 }
 
 // Per-contact history stored by the host (zero for a new contact): the tangential slots, then the slots of
-// the normal model (NormalModel::history_slots); contact_history_size<NORMAL> values in all, at most
-// CONTACT_HISTORY_SIZE. Hertz keeps none, so its contacts carry 4 values (the neighbour-list history of a
-// pair style is copied for every neighbour: its size costs time).
+// the normal model (NormalModel::history_slots values from kNormalHistoryOffset on: the model sees its own from 0);
+// contact_history_size<NORMAL> values in all, at most CONTACT_HISTORY_SIZE (after the registry). Hertz keeps none,
+// so its contacts carry 4 values (the neighbour-list history of a pair style is copied for every neighbour: its
+// size costs time).
 enum ContactHistorySlot {
   HISTORY_SPRING_X = 0,
   HISTORY_SPRING_Y,
   HISTORY_SPRING_Z,
   HISTORY_SLIP,           // accumulated slip distance (static -> kinetic weakening)
-  TANGENTIAL_HISTORY_SIZE,
-  // elastic-plastic normal model: the largest interference omega_max of this contact [m], then the values
-  // of its unloading curve, kept so that a contact below omega_max costs one power (R* = 1 units)
-  HISTORY_MAX_OVERLAP = TANGENTIAL_HISTORY_SIZE,
-  HISTORY_RESIDUAL,       // omega_res / R
-  HISTORY_MAX_FORCE,      // P(omega_max) / R^2
-  HISTORY_MAX_RADIUS,     // a(omega_max) / R
-  HISTORY_EXPONENT,       // EKK unloading exponent n
-  HISTORY_GROOVE,         // ploughing force of the groove / R^2
-  CONTACT_HISTORY_SIZE
+  TANGENTIAL_HISTORY_SIZE
 };
-// The slots that belong to the surface of the asperity under a rigid flat rather than to one contact
+constexpr int kNormalHistoryOffset = TANGENTIAL_HISTORY_SIZE;
+// The normal model's slots belong to the surface of the asperity under a rigid flat rather than to one contact
 // (kept by fix runin/wall when the contact opens).
-constexpr bool is_plastic_history(int slot) { return slot >= HISTORY_MAX_OVERLAP; }
+constexpr bool is_normal_history(int slot) { return slot >= kNormalHistoryOffset; }
+// Whether a contact of a normal model that flattens the summits (FlattensSummits) has plastic history: such a model
+// keeps its largest interference, > 0 once loaded, in its first slot. Without it, a contact on flattened summits is
+// a reload (the host sets ContactGeometry::flattened_drop).
+inline bool has_plastic_history(const double *history) { return history[kNormalHistoryOffset] > 0.0; }
 
 // Output of a normal sub-model.
 struct NormalContact {
@@ -164,6 +162,43 @@ struct NormalContact {
 
 using Coefficients = std::vector<double>;
 
+// Capabilities a sub-model class declares and hosts query (through these traits at compile time, or through
+// SubModelInfo at run time), so no host names a concrete model.
+// What an interface state (friction_strength.h: a friction factor m per state) sets in a friction law: nothing, its
+// tau_s = m S_y / sqrt(3) (`shear_strength`) or its interface coefficient f = m (`interface_coefficient`).
+enum class InterfaceUse { none, shear_strength, interface_coefficient };
+template <class Model, class = void> struct InterfaceUseOf : std::integral_constant<InterfaceUse, InterfaceUse::none> {};
+template <class Model>
+struct InterfaceUseOf<Model, std::void_t<decltype(Model::interface_use)>>
+    : std::integral_constant<InterfaceUse, Model::interface_use> {};
+// A normal law whose plastic flattening lowers the summits (static constexpr bool flattens_summits = true): the hosts
+// keep the wear state for it and seed its reloads.
+template <class Model, class = void> struct FlattensSummits : std::false_type {};
+template <class Model>
+struct FlattensSummits<Model, std::void_t<decltype(Model::flattens_summits)>>
+    : std::bool_constant<Model::flattens_summits> {};
+// A friction law's cross-model check (`template <class Normal, class Wear> void check_with(const Normal &, const Wear &)
+// const`), which ContactModel runs with the chosen normal and wear models.
+template <class Model, class Normal, class Wear, class = void> struct HasCrossCheck : std::false_type {};
+template <class Model, class Normal, class Wear>
+struct HasCrossCheck<Model, Normal, Wear,
+                     std::void_t<decltype(std::declval<const Model &>().check_with(std::declval<const Normal &>(),
+                                                                                  std::declval<const Wear &>()))>>
+    : std::true_type {};
+// For a friction law's check_with: refuses a normal law that does not flatten the summits ("friction model '<name>'
+// needs the normal model '<the first registered one that does>'"). Defined after the registry.
+template <class Normal> void require_flattening_normal(const char *friction_name);
+// For a friction law's check_with: a film at the interface cannot shear harder than the bulk under it.
+inline void check_shear_strength_below_hardness(double shear_strength, double softer_hardness)
+{
+  if (shear_strength <= softer_hardness) return;
+  char message[160];
+  std::snprintf(message, sizeof message,
+                "tau_s: interfacial shear strength %.4g Pa exceeds the hardness of the softer body, %.4g Pa",
+                shear_strength, softer_hardness);
+  throw InvalidCoefficient(message);
+}
+
 // Harmonic mean of 1/X: exact for E* and G* of unlike materials from the like-pair values
 // (1/E*_ij = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j = (1/E*_ii + 1/E*_jj) / 2; the same for G*).
 inline double mix_compliance(double a, double b) { return 2.0 / (1.0 / a + 1.0 / b); }
@@ -174,8 +209,11 @@ inline double mix_geometric(double a, double b) { return std::sqrt(a * b); }
 class HertzNormalModel {
  public:
   static constexpr const char *name = "hertz";
+  static constexpr std::array<const char *, 1> citations{kCiteHertz};    // model_citations.h
   static constexpr std::array<const char *, 1> coefficient_names{"E*"};
   static constexpr int history_slots = 0;
+  // the coefficients from the named parameters of the explicit and file forms (ContactParameters)
+  template <class P> static Coefficients from_parameters(const P &p) { return {p.effective_modulus}; }
   explicit HertzNormalModel(const double *c) : e_eff_(c[0])
   {
     HertzNormal(c[0], 1.0);    // validates E*
@@ -209,7 +247,7 @@ class HertzNormalModel {
 
 // Normal: elastic-plastic sphere on a flat (elastic_plastic.h): Jackson & Green (2005) loading, Etsion,
 // Kligerman & Kadin (2005) unloading and elastic reloading up to the earlier maximum interference, kept per
-// contact in HISTORY_MAX_OVERLAP. Coefficients: E*, and S_y, nu of the yielding (softer) body. The curves
+// contact in its history slots. Coefficients: E*, and S_y, nu of the yielding (softer) body. The curves
 // are self-similar in R* (omega_c ~ R, P ~ R^2), so one unit-radius curve per type pair serves every size.
 // The interference is that of the intact spheres, omega = delta + summit drop. Where the residual
 // interference of omega_max lies below the summits' drop, the difference is returned (residual_increment):
@@ -223,8 +261,25 @@ class HertzNormalModel {
 class ElasticPlasticNormalModel {
  public:
   static constexpr const char *name = "elastic/plastic";
+  static constexpr std::array<const char *, 2> citations{kCiteJacksonGreen, kCiteEtsionKligermanKadin};
   static constexpr std::array<const char *, 3> coefficient_names{"E*", "S_y", "nu"};
-  static constexpr int history_slots = CONTACT_HISTORY_SIZE - HISTORY_MAX_OVERLAP;
+  // its history slots: the largest interference omega_max of this contact [m] (first: has_plastic_history), then
+  // the values of its unloading curve, kept so that a contact below omega_max costs one power (R* = 1 units)
+  enum Slot {
+    MAX_OVERLAP = 0,
+    RESIDUAL,      // omega_res / R
+    MAX_FORCE,     // P(omega_max) / R^2
+    MAX_RADIUS,    // a(omega_max) / R
+    EXPONENT,      // EKK unloading exponent n
+    GROOVE,        // ploughing force of the groove / R^2
+    SLOTS
+  };
+  static constexpr int history_slots = SLOTS;
+  static constexpr bool flattens_summits = true;
+  template <class P> static Coefficients from_parameters(const P &p)
+  {
+    return {p.effective_modulus, p.yield_strength, p.poisson_ratio};
+  }
   explicit ElasticPlasticNormalModel(const double *c)
       : e_eff_(c[0]), unit_(c[0], 1.0, c[1], c[2]), plastic_table_(unit_),
         inv_omega_c_(1.0 / unit_.critical_interference()),
@@ -249,16 +304,16 @@ class ElasticPlasticNormalModel {
     const double omega = (g.overlap + g.summit_drop) * inv_R;    // R = 1 units until the end
     // the plastic slots: this contact's, or, for a reload of flattened summits, the state that flattened them
     double seeded[history_slots];
-    const double *plastic = history + HISTORY_MAX_OVERLAP;
-    if (!(history[HISTORY_MAX_OVERLAP] > 0.0) && g.flattened_drop > 0.0) {
+    const double *plastic = history;
+    if (!(history[MAX_OVERLAP] > 0.0) && g.flattened_drop > 0.0) {
       seed_reload_history(g.flattened_drop, R, seeded);
       if (advance)
-        for (int k = 0; k < history_slots; ++k) history[HISTORY_MAX_OVERLAP + k] = seeded[k];
+        for (int k = 0; k < history_slots; ++k) history[k] = seeded[k];
       else
         plastic = seeded;
     }
     const double omega_max = plastic[0] * inv_R;
-    const double cached_residual = plastic[HISTORY_RESIDUAL - HISTORY_MAX_OVERLAP];
+    const double cached_residual = plastic[RESIDUAL];
     NormalContact out;
     out.plastic_model = true;
     out.stick_critical_load = stick_critical_load_ * R * R;
@@ -277,15 +332,15 @@ class ElasticPlasticNormalModel {
     } else {
       // EKK unloading / elastic reloading below omega_max, P = P_max s^n and a = a_max s^(n-1), from the
       // cached curve; 0 once the contact has opened (the groove stays)
-      out.groove_ploughing = plastic[HISTORY_GROOVE - HISTORY_MAX_OVERLAP];
+      out.groove_ploughing = plastic[GROOVE];
       if (omega > cached_residual) {
         const double gap = omega - cached_residual;
         const double s = gap / (omega_max - cached_residual);
-        const double n = plastic[HISTORY_EXPONENT - HISTORY_MAX_OVERLAP];
+        const double n = plastic[EXPONENT];
         const double s_n = std::exp(n * std::log(s));
-        out.force = plastic[HISTORY_MAX_FORCE - HISTORY_MAX_OVERLAP] * s_n;
+        out.force = plastic[MAX_FORCE] * s_n;
         out.stiffness = n * out.force / gap;
-        out.contact_radius = plastic[HISTORY_MAX_RADIUS - HISTORY_MAX_OVERLAP] * s_n / s;
+        out.contact_radius = plastic[MAX_RADIUS] * s_n / s;
       }
     }
     out.force *= R * R;
@@ -308,12 +363,12 @@ class ElasticPlasticNormalModel {
       }
     }
     if (advance && loading && omega > omega_max) {
-      history[HISTORY_MAX_OVERLAP] = omega * R;
-      history[HISTORY_RESIDUAL] = residual;
-      history[HISTORY_MAX_FORCE] = out.force * inv_R * inv_R;
-      history[HISTORY_MAX_RADIUS] = out.contact_radius * inv_R;
-      history[HISTORY_EXPONENT] = exponent;
-      history[HISTORY_GROOVE] = out.groove_ploughing * inv_R * inv_R;
+      history[MAX_OVERLAP] = omega * R;
+      history[RESIDUAL] = residual;
+      history[MAX_FORCE] = out.force * inv_R * inv_R;
+      history[MAX_RADIUS] = out.contact_radius * inv_R;
+      history[EXPONENT] = exponent;
+      history[GROOVE] = out.groove_ploughing * inv_R * inv_R;
       // the summits sink to the residual interference where it lies below them (a new contact on a summit
       // that is already flat or worn flattens it only beyond that)
       const double sink = residual * R - g.summit_drop;
@@ -321,7 +376,7 @@ class ElasticPlasticNormalModel {
     }
     return out;
   }
-  // The plastic history slots (HISTORY_MAX_OVERLAP on, history_slots values) that loading to the omega_max
+  // The plastic history slots (history_slots values) that loading to the omega_max
   // whose EKK residual interference is `flattened_drop` leaves, for R* = R: what a contact that had made that
   // flat would hold (the same loading evaluation). The residual is flattened_drop itself.
   void seed_reload_history(double flattened_drop, double R, double *slots) const
@@ -333,18 +388,18 @@ class ElasticPlasticNormalModel {
     double ignored_residual, exponent;
     load(omega_max, peak, ignored_residual, exponent);
     slots[0] = omega_max * R;
-    slots[HISTORY_RESIDUAL - HISTORY_MAX_OVERLAP] = residual;
-    slots[HISTORY_MAX_FORCE - HISTORY_MAX_OVERLAP] = peak.force;
-    slots[HISTORY_MAX_RADIUS - HISTORY_MAX_OVERLAP] = peak.contact_radius;
-    slots[HISTORY_EXPONENT - HISTORY_MAX_OVERLAP] = exponent;
-    slots[HISTORY_GROOVE - HISTORY_MAX_OVERLAP] = peak.groove_ploughing;
+    slots[RESIDUAL] = residual;
+    slots[MAX_FORCE] = peak.force;
+    slots[MAX_RADIUS] = peak.contact_radius;
+    slots[EXPONENT] = exponent;
+    slots[GROOVE] = peak.groove_ploughing;
   }
   double elastic_energy(const ContactGeometry &g, const double *history) const
   {
     // the energy an unloading would give back: the integral of the current (un)loading curve from its zero
     const double R = g.effective_radius;
     const double omega = (g.overlap + g.summit_drop) / R;
-    double stored = history[HISTORY_MAX_OVERLAP];
+    double stored = history[MAX_OVERLAP];
     if (!(stored > 0.0) && g.flattened_drop > 0.0) {    // a reload, as evaluate() sees it
       double seeded[history_slots];
       seed_reload_history(g.flattened_drop, R, seeded);
@@ -360,6 +415,7 @@ class ElasticPlasticNormalModel {
            R * R * R;
   }
   double effective_modulus() const { return e_eff_; }
+  double poisson_ratio() const { return unit_.coefficients().poisson_ratio; }
   const JacksonGreen &unit_curve() const { return unit_; }
   // Real area of a worn flat pressed elastically with force F over the contact radius a. Sneddon's solution
   // assumes the flat and its counter-surface conform over pi a^2 at any load; a real wear scar carries the
@@ -420,6 +476,7 @@ class RestitutionDampingModel {
  public:
   static constexpr const char *name = "restitution";
   static constexpr std::array<const char *, 1> coefficient_names{"e"};
+  template <class P> static Coefficients from_parameters(const P &p) { return {p.restitution}; }
   explicit RestitutionDampingModel(const double *c) : damping_(c[0]) {}
   Coefficients values() const { return {damping_.restitution()}; }
   static Coefficients mix(const Coefficients &ii, const Coefficients &jj) { return {mix_geometric(ii[0], jj[0])}; }
@@ -436,7 +493,9 @@ class RestitutionDampingModel {
 class MindlinTangentialModel {
  public:
   static constexpr const char *name = "mindlin";
+  static constexpr std::array<const char *, 1> citations{kCiteMindlin};
   static constexpr std::array<const char *, 1> coefficient_names{"G*"};
+  template <class P> static Coefficients from_parameters(const P &p) { return {p.effective_shear_modulus}; }
   explicit MindlinTangentialModel(const double *c) : g_eff_(c[0])
   {
     if (!(c[0] > 0.0) || !std::isfinite(c[0]))
@@ -459,6 +518,10 @@ class CoulombFrictionModel {
  public:
   static constexpr const char *name = "coulomb";
   static constexpr std::array<const char *, 3> coefficient_names{"mu_s", "mu_k", "d_c"};
+  template <class P> static Coefficients from_parameters(const P &p)
+  {
+    return {p.mu_static, p.mu_kinetic, p.slip_weakening_distance};
+  }
   explicit CoulombFrictionModel(const double *c) : friction_(c[0], c[1], c[2]) {}
   Coefficients values() const
   {
@@ -483,6 +546,11 @@ class StrengthFrictionModel {
  public:
   static constexpr const char *name = "strength";
   static constexpr std::array<const char *, 5> coefficient_names{"mu_s", "mu_k", "d_c", "tau_s", "plough"};
+  static constexpr InterfaceUse interface_use = InterfaceUse::shear_strength;
+  template <class P> static Coefficients from_parameters(const P &p)
+  {
+    return {p.mu_static, p.mu_kinetic, p.slip_weakening_distance, p.shear_strength, p.ploughing_factor};
+  }
   explicit StrengthFrictionModel(const double *c) : friction_(c[0], c[1], c[2]), strength_(c[3], c[4]) {}
   Coefficients values() const
   {
@@ -496,6 +564,10 @@ class StrengthFrictionModel {
     return out;
   }
   double shear_strength() const { return strength_.shear_strength(); }
+  template <class Normal, class Wear> void check_with(const Normal &, const Wear &wear) const
+  {
+    check_shear_strength_below_hardness(shear_strength(), wear.softer_hardness());
+  }
   double limit(double slip, double normal_force, const NormalContact &normal, double overlap,
                FrictionStrengthParts &parts) const
   {
@@ -522,13 +594,30 @@ class StrengthFrictionModel {
 class BrizmerFrictionModel {
  public:
   static constexpr const char *name = "brizmer";
+  static constexpr std::array<const char *, 1> citations{kCiteBrizmer};
   static constexpr std::array<const char *, 3> coefficient_names{"d_c", "tau_s", "plough"};
+  static constexpr InterfaceUse interface_use = InterfaceUse::shear_strength;
+  template <class P> static Coefficients from_parameters(const P &p)
+  {
+    return {p.slip_weakening_distance, p.shear_strength, p.ploughing_factor};
+  }
   explicit BrizmerFrictionModel(const double *c) : d_c_(c[0]), strength_(c[1], c[2])
   {
     if (!(c[0] >= 0.0) || !std::isfinite(c[0])) throw InvalidCoefficient("d_c: slip distance must be >= 0");
   }
   Coefficients values() const { return {d_c_, strength_.shear_strength(), strength_.ploughing_factor()}; }
   double shear_strength() const { return strength_.shear_strength(); }
+  template <class Normal, class Wear> void check_with(const Normal &normal, const Wear &wear) const
+  {
+    check_shear_strength_below_hardness(shear_strength(), wear.softer_hardness());
+    require_flattening_normal<Normal>(name);
+    if constexpr (FlattensSummits<Normal>::value) {
+      const double nu = normal.poisson_ratio();
+      if (!(nu >= 0.2 && nu < 0.5))
+        throw InvalidCoefficient("nu: friction model 'brizmer' is fitted for a Poisson ratio in [0.2, 0.5), got " +
+                                 std::to_string(nu));
+    }
+  }
   static Coefficients mix(const Coefficients &ii, const Coefficients &jj)
   {
     return {mix_geometric(ii[0], jj[0]), mix_geometric(ii[1], jj[1]), mix_geometric(ii[2], jj[2])};
@@ -565,9 +654,28 @@ class BrizmerFrictionModel {
 class JunctionFrictionModel {
  public:
   static constexpr const char *name = "junction";
+  static constexpr std::array<const char *, 1> citations{kCiteTabor};
   static constexpr std::array<const char *, 2> coefficient_names{"f", "alpha"};
   // alpha of the explicit and file forms when not given: McFarlane & Tabor's (1950) measured value
   static constexpr double kDefaultAlpha = 12.0;
+  static constexpr InterfaceUse interface_use = InterfaceUse::interface_coefficient;
+  template <class P> static Coefficients from_parameters(const P &p)
+  {
+    // which contacts are plastic junctions follows from S_y: Tabor's H / 2.8 guess is not taken for it
+    if (p.yield_from_hardness)
+      throw InvalidCoefficient("S_y: friction model 'junction' needs the yield strength of the softer body, not "
+                               "Tabor's H / 2.8 (pair_coeff keyword 'S_y X', fix runin/wall keyword 'yield', or "
+                               "the material's 6th value in a coefficient file)");
+    if (std::isnan(p.interface_coefficient))
+      throw InvalidCoefficient("f: friction model 'junction' needs the interface coefficient f, 0 <= f < 1 "
+                               "(pair_coeff keyword 'f X', fix runin/wall keyword 'junction f alpha')");
+    return {p.interface_coefficient, p.junction_alpha};
+  }
+  // junction growth needs the plastic history and mean pressure of a flattening normal model
+  template <class Normal, class Wear> void check_with(const Normal &, const Wear &) const
+  {
+    require_flattening_normal<Normal>(name);
+  }
   explicit JunctionFrictionModel(const double *c) : f_(c[0]), alpha_(c[1])
   {
     char got[32];
@@ -633,7 +741,28 @@ class JunctionFrictionModel {
 class JunctionFilmFrictionModel {
  public:
   static constexpr const char *name = "junction/film";
+  static constexpr std::array<const char *, 1> citations{kCiteTabor};
   static constexpr std::array<const char *, 5> coefficient_names{"f_clean", "f_film", "alpha", "s_r", "k_g"};
+  template <class P> static Coefficients from_parameters(const P &p)
+  {
+    if (p.yield_from_hardness)
+      throw InvalidCoefficient("S_y: friction model 'junction/film' needs the yield strength of the softer body, "
+                               "not Tabor's H / 2.8 (pair_coeff keyword 'S_y X' or the material's 6th value in a "
+                               "coefficient file)");
+    if (std::isnan(p.interface_coefficient))
+      throw InvalidCoefficient("f: friction model 'junction/film' needs the clean interface coefficient f, "
+                               "0 <= f < 1 (pair_coeff keyword 'f X')");
+    if (std::isnan(p.film_interface_coefficient))
+      throw InvalidCoefficient("f_film: friction model 'junction/film' needs the film's interface coefficient, "
+                               "0 <= f_film < 1 (pair_coeff keyword 'f_film X')");
+    const auto off_unless_given = [](double v) { return std::isnan(v) ? 0.0 : v; };
+    return {p.interface_coefficient, p.film_interface_coefficient, p.junction_alpha,
+            off_unless_given(p.film_removal_distance), off_unless_given(p.film_growth_rate)};
+  }
+  template <class Normal, class Wear> void check_with(const Normal &, const Wear &) const
+  {
+    require_flattening_normal<Normal>(name);
+  }
   explicit JunctionFilmFrictionModel(const double *c)
       : clean_(checked_junction(c[0], c[2], "f_clean")), film_(checked_junction(c[1], c[2], "f_film")),
         kinetics_(c[3], c[4]), f_clean_(c[0]), f_film_(c[1]), alpha_(c[2])
@@ -710,7 +839,12 @@ struct GrowsJunction<Model, std::void_t<decltype(&Model::junction_area)>> : std:
 class ArchardWearModel {
  public:
   static constexpr const char *name = "archard";
+  static constexpr std::array<const char *, 1> citations{kCiteArchard};
   static constexpr std::array<const char *, 4> coefficient_names{"k_i", "H_i", "k_j", "H_j"};
+  template <class P> static Coefficients from_parameters(const P &p)
+  {
+    return {p.wear_coefficient, p.hardness_i, p.wear_coefficient, p.hardness_j};
+  }
   ArchardWearModel(const double *c, ArchardForm form, double transfer)
       : body_i_(c[0], checked_hardness(c[1], "H_i"), form), body_j_(c[2], checked_hardness(c[3], "H_j"), form),
         transfer_(checked_transfer(transfer))
@@ -736,6 +870,7 @@ class ArchardWearModel {
   }
   const ArchardWear &body_i() const { return body_i_; }
   const ArchardWear &body_j() const { return body_j_; }
+  double softer_hardness() const { return std::min(body_i_.hardness(), body_j_.hardness()); }
 
  private:
   static double checked_hardness(double hardness, const char *name)
@@ -756,17 +891,52 @@ class ArchardWearModel {
 // ---------------------------------------------------------------------------------------------------
 // The registry: one tuple per kind. Add a law by adding its class here.
 // ---------------------------------------------------------------------------------------------------
+// A test build may register laws of its own (RUNIN_TEST_SUB_MODELS: a header defining RUNIN_TEST_FRICTION_MODELS,
+// the classes to append to FrictionModels with a leading comma); the shipped build has none.
+#ifdef RUNIN_TEST_SUB_MODELS
+#include RUNIN_TEST_SUB_MODELS
+#else
+#define RUNIN_TEST_FRICTION_MODELS
+#endif
 using NormalModels = std::tuple<HertzNormalModel, ElasticPlasticNormalModel>;
 // History values a contact keeps with the NORMAL-th normal model.
 template <int NORMAL>
-constexpr int contact_history_size = TANGENTIAL_HISTORY_SIZE + std::tuple_element_t<NORMAL, NormalModels>::history_slots;
+constexpr int contact_history_size = kNormalHistoryOffset + std::tuple_element_t<NORMAL, NormalModels>::history_slots;
 // The same for a choice made at run time.
 int contact_history_size_of(int normal_index);
 using DampingModels = std::tuple<RestitutionDampingModel>;
 using TangentialModels = std::tuple<MindlinTangentialModel>;
 using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel, BrizmerFrictionModel,
-                                  JunctionFrictionModel, JunctionFilmFrictionModel>;
+                                  JunctionFrictionModel, JunctionFilmFrictionModel RUNIN_TEST_FRICTION_MODELS>;
 using WearModels = std::tuple<ArchardWearModel>;
+// The most history values a contact keeps (the largest normal model's).
+namespace detail {
+template <std::size_t... I> constexpr int most_normal_history_slots(std::index_sequence<I...>)
+{
+  return std::max({0, std::tuple_element_t<I, NormalModels>::history_slots...});
+}
+}    // namespace detail
+constexpr int CONTACT_HISTORY_SIZE =
+    kNormalHistoryOffset + detail::most_normal_history_slots(std::make_index_sequence<std::tuple_size_v<NormalModels>>{});
+
+namespace detail {
+template <std::size_t... I> constexpr const char *first_flattening_normal(std::index_sequence<I...>)
+{
+  const char *out = nullptr;
+  ((out == nullptr && FlattensSummits<std::tuple_element_t<I, NormalModels>>::value
+        ? (void)(out = std::tuple_element_t<I, NormalModels>::name)
+        : void()),
+   ...);
+  return out;
+}
+}    // namespace detail
+template <class Normal> void require_flattening_normal(const char *friction_name)
+{
+  if constexpr (!FlattensSummits<Normal>::value)
+    throw InvalidCoefficient(
+        std::string("friction model '") + friction_name + "' needs the normal model '" +
+        detail::first_flattening_normal(std::make_index_sequence<std::tuple_size_v<NormalModels>>{}) + "'");
+}
 
 enum class SubModelKind { normal = 0, damping, tangential, friction, wear };
 constexpr int kSubModelKinds = 5;
@@ -776,6 +946,11 @@ const char *sub_model_kind_name(SubModelKind kind);
 struct SubModelInfo {
   const char *name;
   std::vector<const char *> coefficient_names;
+  // the capabilities the class declares (the traits above): hosts ask these, never a name
+  bool flattens_summits = false;    // normal: plastic flattening lowers the summits
+  bool has_film = false;            // friction: the summits carry a film the host keeps
+  InterfaceUse interface_use = InterfaceUse::none;    // friction: what an interface state sets
+  std::vector<const char *> citations;    // the papers the class lists (`citations`; none without)
   int coefficient_count() const { return static_cast<int>(coefficient_names.size()); }
 };
 // The registered sub-models of a kind, in registry order (the index is the compile-time dispatch index).
@@ -887,7 +1062,7 @@ class ContactModel {
   ContactResult evaluate(const ContactGeometry &g, double *history, double dt, bool advance) const
   {
     ContactResult out;
-    out.normal = std::get<NORMAL>(normal_)->evaluate(g, history, advance);
+    out.normal = std::get<NORMAL>(normal_)->evaluate(g, history + kNormalHistoryOffset, advance);
     double fn = out.normal.force + damping().force(out.normal.stiffness, g.effective_mass, g.normal_velocity);
     if (fn < 0.0) fn = 0.0;    // damping must not glue the bodies together
     out.normal_force = fn;
@@ -928,7 +1103,7 @@ class ContactModel {
     double copy[CONTACT_HISTORY_SIZE] = {0.0};
     for (int k = 0; k < contact_history_size<NORMAL>; ++k) copy[k] = history[k];
     ContactResult out;
-    out.normal = std::get<NORMAL>(normal_)->evaluate(g, copy, false);
+    out.normal = std::get<NORMAL>(normal_)->evaluate(g, copy + kNormalHistoryOffset, false);
     double fn = out.normal.force + damping().force(out.normal.stiffness, g.effective_mass, g.normal_velocity);
     out.normal_force = fn < 0.0 ? 0.0 : fn;
     const double kt = tangential().stiffness(out.normal.contact_radius);
@@ -939,7 +1114,7 @@ class ContactModel {
   // Elastic energy stored in the normal contact (eflag tallies).
   template <int NORMAL> double elastic_energy(const ContactGeometry &g, const double *history) const
   {
-    return std::get<NORMAL>(normal_)->elastic_energy(g, history);
+    return std::get<NORMAL>(normal_)->elastic_energy(g, history + kNormalHistoryOffset);
   }
 
   const ContactModelChoice &choice() const { return choice_; }

@@ -142,7 +142,7 @@ TEST(ContactModelElasticPlastic, CachedHistoryPathEqualsTheKernel)
       omega_max = want.omega_max;
       EXPECT_NEAR(got.normal.force, want.force, 1e-12 * curve.force(60.0 * omega_c)) << omega / omega_c;
       EXPECT_NEAR(got.normal.contact_radius, want.contact_radius, 1e-12 * R) << omega / omega_c;
-      EXPECT_NEAR(history[tribo::HISTORY_MAX_OVERLAP], omega_max, 1e-15 * omega_max);
+      EXPECT_NEAR(history[tribo::kNormalHistoryOffset + tribo::ElasticPlasticNormalModel::MAX_OVERLAP], omega_max, 1e-15 * omega_max);
       ++checked;
     }
   }
@@ -186,7 +186,7 @@ TEST(ContactModelElasticPlastic, ReloadOfAFlattenedSummitIsTheSameWithOrWithoutK
   }
   const double residual = tribo::ElasticPlasticUnloading::residual_ratio(95.0) * 95.0 * omega_c;
   ASSERT_NEAR(drop, residual, 1e-12 * residual);
-  ASSERT_NEAR(kept[tribo::HISTORY_MAX_OVERLAP], 95.0 * omega_c, 1e-12 * omega_c);
+  ASSERT_NEAR(kept[tribo::kNormalHistoryOffset + tribo::ElasticPlasticNormalModel::MAX_OVERLAP], 95.0 * omega_c, 1e-12 * omega_c);
   double fresh[tribo::CONTACT_HISTORY_SIZE] = {0.0};    // the pair: the summits separated, the history is gone
   const double scale = curve.force(95.0 * omega_c);
   int ekk = 0, plastic = 0;
@@ -194,10 +194,10 @@ TEST(ContactModelElasticPlastic, ReloadOfAFlattenedSummitIsTheSameWithOrWithoutK
     const double omega = drop + (120.0 * omega_c - drop) * k / 300.0;
     tribo::ContactGeometry wall = geometry(omega), pair = geometry(omega);
     wall.flattened_drop = 0.0;    // the wall's history explains the drop (a host sets it only without history)
-    if (!(fresh[tribo::HISTORY_MAX_OVERLAP] > 0.0)) pair.flattened_drop = drop;
+    if (!(fresh[tribo::kNormalHistoryOffset + tribo::ElasticPlasticNormalModel::MAX_OVERLAP] > 0.0)) pair.flattened_drop = drop;
     const tribo::ContactResult a = model.evaluate<1, 0, 0>(wall, kept, 1e-9, true);
     const tribo::ContactResult b = model.evaluate<1, 0, 0>(pair, fresh, 1e-9, true);
-    if (k == 1) EXPECT_NEAR(fresh[tribo::HISTORY_MAX_OVERLAP], 95.0 * omega_c, 1e-12 * 95.0 * omega_c);
+    if (k == 1) EXPECT_NEAR(fresh[tribo::kNormalHistoryOffset + tribo::ElasticPlasticNormalModel::MAX_OVERLAP], 95.0 * omega_c, 1e-12 * 95.0 * omega_c);
     EXPECT_NEAR(b.normal.force, a.normal.force, 1e-9 * std::max(a.normal.force, 1e-3 * scale)) << omega / omega_c;
     EXPECT_NEAR(b.normal.contact_radius, a.normal.contact_radius, 1e-9 * std::max(a.normal.contact_radius, 1e-3 * R))
         << omega / omega_c;
