@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""House rule: the contact hosts (plugins/) never name a concrete sub-model; they ask the registry's capabilities
+(SubModelInfo, FlattensSummits, HasFilm, ...; doc/architecture.md, "One contact model, and how to add a law").
+Reads the registered classes and their names from src/tribo/contact_model.h and reports, in plugins/**/*.{h,cpp}, any
+use of a sub-model class and any comparison with (or lookup of) a registered name as a literal. A synthetic host file
+that does both must be reported, so the check can fail. Allowed, with the reason: ALLOWED below."""
+import glob
+import os
+import re
+import sys
+import tempfile
+
+SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+REGISTRY = os.path.join(SOURCE, "src", "tribo", "contact_model.h")
+# (file suffix, line substring): a keyword of the host that shares a model's name
+ALLOWED = [
+    # pair_style / fix runin/wall keyword 'archard plain|thesis': the Archard form, a host setting (ContactSettings)
+    ("plugins/lammps/pair_runin_asperity.cpp", 'keyword == "archard"'),
+    ("plugins/liggghts/pair_runin_asperity_liggghts.cpp", 'keyword == "archard"'),
+    ("plugins/common/runin_wall_core.h", 'keyword == "archard"'),
+]
+
+
+def registered():
+    text = open(REGISTRY).read()
+    classes = dict(re.findall(r'class (\w+Model) \{\s*public:\s*static constexpr const char \*name = "([^"]+)"', text))
+    if len(classes) < 5:
+        sys.exit(f"FAIL: found only {len(classes)} sub-model classes in {REGISTRY}")
+    return classes
+
+
+def findings(path, classes):
+    out = []
+    names = "|".join(re.escape(n) for n in classes.values())
+    literal = re.compile(r'(==|!=)\s*"(%s)"|"(%s)"\s*(==|!=)|find_sub_model\([^;]*"(%s)"' % (names, names, names))
+    used_class = re.compile(r"\b(%s)\b" % "|".join(classes))
+    rel = os.path.relpath(path, SOURCE)
+    for number, line in enumerate(open(path, encoding="utf-8", errors="replace"), 1):
+        if any(rel.endswith(suffix) and snippet in line for suffix, snippet in ALLOWED):
+            continue
+        if used_class.search(line) or literal.search(line):
+            out.append(f"{rel}:{number}: {line.strip()}")
+    return out
+
+
+classes = registered()
+with tempfile.TemporaryDirectory() as tmp:
+    probe = os.path.join(tmp, "host.cpp")
+    with open(probe, "w") as f:
+        f.write('bool a(const std::string &name) { return name == "junction"; }\n'
+                "const char *b = tribo::JunctionFilmFrictionModel::name;\n"
+                "bool c() { return choice == tribo::find_sub_model(kind, \"elastic/plastic\"); }\n"
+                'const char *d = "junction: a message";\n')
+    found = findings(probe, classes)
+    if len(found) != 3 or "a message" in " ".join(found):
+        sys.exit("FAIL: the check does not report exactly the three namings of the probe:\n" + "\n".join(found))
+files = sorted(glob.glob(os.path.join(SOURCE, "plugins", "**", "*.h"), recursive=True) +
+               glob.glob(os.path.join(SOURCE, "plugins", "**", "*.cpp"), recursive=True))
+bad = [hit for path in files for hit in findings(path, classes)]
+if bad:
+    sys.exit("FAIL: a host names a concrete sub-model (ask the registry's capabilities instead):\n" + "\n".join(bad))
+print(f"{len(files)} host files, {len(classes)} registered sub-models: no host names one")
