@@ -124,8 +124,10 @@ LubricatedCase read_case(const LubricatedOptions &o) {
   read_law(reader, o, c);
 
   c.run.depth_step_fraction = reader.number("wear.step_fraction", 0.5);
-  if (!(c.run.depth_step_fraction > 0.0 && c.run.depth_step_fraction <= 1.0))
-    reader.fail("wear.step_fraction", "must be in (0, 1], got " + CaseReader::format(c.run.depth_step_fraction));
+  // below 0.01 the run takes 50x the shipped case's steps per unit wear (1e-9 ran for hours before too many steps)
+  if (!(c.run.depth_step_fraction >= 0.01 && c.run.depth_step_fraction <= 1.0))
+    reader.fail("wear.step_fraction", "must be in [0.01, 1] (the worn-depth increment per step over the law's depth "
+                                      "spacing), got " + CaseReader::format(c.run.depth_step_fraction));
   c.run.t_end = reader.positive("run.t_end");
   c.run.output_interval = reader.positive("run.output_interval", c.run.t_end / 200.0);
   if (c.run.t_end / c.run.output_interval > 1e6) reader.fail("run.output_interval", "gives more than 1e6 samples");
