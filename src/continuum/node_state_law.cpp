@@ -136,15 +136,17 @@ void NodeStateLaw::wear_nodes(const std::vector<double> &pressure, double ds, In
         break;
       }
       if (taken >= kCreepCheck) {
-        // a node creeping towards a depth where its rate vanishes: done once the rest of the slide at the larger
-        // of its rate and the rate at its cell's upper edge moves h by less than 1e-12 of the cell
+        // a node creeping towards a depth where its rate vanishes: done once the rest of the slide can move h by
+        // less than 1e-12 of the cell (or a few ulps of h): at most the gap to a zero-rate upper edge (which it
+        // cannot pass), else the rest at the larger of its rate and the edge's
         const auto upper = std::upper_bound(depth.begin(), depth.end(), h);
         const std::size_t j = std::min<std::size_t>(upper - depth.begin(), depth.size() - 1);
         double w_edge, c_edge;
         law_->wear_rates(slice, depth[j], nullptr, w_edge, c_edge);
-        if (left * std::max(w1, w_edge) <= 1e-12 * (depth[j] - depth[j - 1])) {
-          h += left * w1;
-          c += left * c1;
+        const double reach = w_edge > 0.0 ? left * std::max(w1, w_edge) : std::min(left * w1, depth[j] - h);
+        if (reach <= 1e-12 * (depth[j] - depth[j - 1]) + 4.0 * std::numeric_limits<double>::epsilon() * depth[j]) {
+          h += w_edge > 0.0 ? left * w1 : reach;
+          c += left * (w_edge > 0.0 ? c1 : c_edge);   // creeping: the node sits at the edge for the rest
           break;
         }
       }
