@@ -235,6 +235,17 @@ continuum::MixedRunReport bearing_run_in(const LubricatedCase &c, const continuu
     throw InputError(c.path + ": key 'bearing.load': the film and asperities cannot carry it before the gap closes "
                      "(eccentricity would reach 1): " + report.equilibrium_message +
                      "; lower the load or raise the speed or viscosity");
+  if (report.status == continuum::MixedRunStatus::EquilibriumFailed && samples.empty()) {
+    // no wear yet: the inputs alone put the bearing outside the solver's range (speed 1e300 m/s, W = 1e-300 N, ...)
+    const auto &p = c.parameters;
+    const double u = p.speed_time.empty() ? p.speed : p.speed_value.front();
+    const double sommerfeld = std::pow(p.radius / p.clearance, 2) * p.viscosity * (u / (2.0 * M_PI * p.radius)) /
+                              (p.load / (2.0 * p.radius * p.length));
+    throw InputError(fmt::format("{}: key 'bearing.load': no equilibrium of film and asperities at the start ({}); "
+                                 "Sommerfeld number {:.3g}: check bearing.load, bearing.clearance, bearing.youngs_modulus, "
+                                 "lubrication.viscosity and lubrication.speed", c.path, report.equilibrium_message.empty() ? report.message
+                                 : report.equilibrium_message, sommerfeld));
+  }
   throw std::runtime_error(std::string("lubricated journal bearing: ") + continuum::to_string(report.status) + ": " +
                            report.message);
 }
