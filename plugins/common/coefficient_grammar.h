@@ -27,6 +27,7 @@
 #include <functional>
 #include <iterator>
 #include <string>
+#include <strings.h>
 #include <vector>
 
 namespace runin_coeff {
@@ -178,6 +179,15 @@ inline void read_options(const Host &host, tribo::ContactParameters &p, int narg
 
 // ---- the keyword block ----
 
+// A word meant as a number that the host does not read as one ('nan', 'inf', '4.8e10x', '0x10'): it goes to number(),
+// which names it, instead of ending a block's values (which gave "takes 1 coefficient(s), got 0").
+inline bool number_like(const char *word)
+{
+  if (!word || word[0] == '\0') return false;
+  return std::strchr("+-.0123456789", word[0]) != nullptr || strncasecmp(word, "nan", 3) == 0 ||
+         strncasecmp(word, "inf", 3) == 0;
+}
+
 inline int kind_of(const char *word)
 {
   for (int k = 0; k < tribo::kSubModelKinds; k++)
@@ -217,10 +227,12 @@ inline tribo::ContactCoefficients read_blocks(const Host &host, int narg, char *
     const int n = info.coefficient_count();
     int got = 0;
     while (iarg + 2 + got < narg && host.is_number(arg[iarg + 2 + got])) got++;
+    const std::string where = fmt::format("{}: {} {}", host.style, arg[iarg], info.name);
+    if (got < n && iarg + 2 + got < narg && number_like(arg[iarg + 2 + got]))
+      number(host, where, info.coefficient_names[got], arg[iarg + 2 + got]);
     if (got != n)
       fail(host, fmt::format("{}: {} model '{}' takes {} coefficient(s) ({}), got {}", host.style, arg[iarg],
                              info.name, n, joined(info.coefficient_names.begin(), info.coefficient_names.end()), got));
-    const std::string where = fmt::format("{}: {} {}", host.style, arg[iarg], info.name);
     for (int k = 0; k < n; k++)
       c.values[kind_index].push_back(number(host, where, info.coefficient_names[k], arg[iarg + 2 + k]));
     given[kind_index] = true;
@@ -265,7 +277,7 @@ struct Read {
 inline Read read_pair_coeff(const Host &host, int narg, char **arg, tribo::ContactModelChoice &choice)
 {
   Read r;
-  if (narg >= 3 && !host.is_number(arg[2]) && std::strcmp(arg[2], "file") != 0) {
+  if (narg >= 3 && !host.is_number(arg[2]) && !number_like(arg[2]) && std::strcmp(arg[2], "file") != 0) {
     r.origin = "keywords";
     int iarg = 2;
     r.values = read_blocks(host, narg, arg, iarg, choice, true, false);

@@ -659,6 +659,10 @@ FeedbackCase read_feedback_case(const std::string &path) {
   auto &run = c.run;
   run.initial_roughness = reader.positive("run.R0");
   run.t_end = reader.positive("run.t_end");
+  if (run.t_end < kFeedbackMinTimeSpan)   // CVODE stopped with "tstop is behind current t" at 1e-197 s
+    reader.fail("run.t_end", "must be at least " + CaseReader::format(kFeedbackMinTimeSpan) +
+                                 " s (below, the integrator's step control underflows: take t in larger units), got " +
+                                 CaseReader::format(run.t_end));
   run.output_interval = reader.positive("run.output_interval", run.t_end / 1000.0);
   if (run.t_end / run.output_interval > 1e7) reader.fail("run.output_interval", "gives more than 1e7 samples");
   run.integrator = read_solver(reader, continuum::FeedbackRun::default_settings());

@@ -156,6 +156,8 @@ struct FeedbackCase {
 };
 
 FeedbackCase read_feedback_case(const std::string &path);
+// Shortest run.t_end `runin feedback` integrates (and data span `runin fit-feedback` fits), s.
+inline constexpr double kFeedbackMinTimeSpan = 1e-100;
 const std::set<std::string> &feedback_sweep_parameters();  // A, B, C1, C2, K1, K2, R0
 // Sets coefficient `name` in `c`, or `r0` for "R0".
 void set_feedback_parameter(tribo::FeedbackCoefficients &c, double &r0, const std::string &name, double value);

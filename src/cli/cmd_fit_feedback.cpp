@@ -341,6 +341,12 @@ int run(const Options &o, const PlotRunner &plot) {
   const std::vector<double> t_data = s.series.t;
   for (auto &t : s.series.t) t *= o.t_scale;
   for (auto &r : s.series.R) r *= o.r_scale;
+  // runin feedback refuses such a t_end (its integrator's step control underflows): say so before fitting
+  const double span = s.series.t.back() - s.series.t.front();
+  if (span < kFeedbackMinTimeSpan)
+    throw InputError(fmt::format("--t-scale: the data span {:g} s (column '{}' x --t-scale {:g}) is below {:g} s, which "
+                                 "runin feedback cannot integrate; give --t-scale to take t in larger units",
+                                 span, o.t_column, o.t_scale, kFeedbackMinTimeSpan));
 
   coupling::FeedbackFitOptions options;
   options.kind = o.kind == "dry" ? tribo::FeedbackKind::dry : tribo::FeedbackKind::lubricated;

@@ -106,9 +106,17 @@ std::vector<continuum::RingStribeckPoint> ring_stribeck(const LubricatedRingCase
   coupling::RangeUse stribeck_use;
   stribeck = continuum::stribeck_sweep(ring, c.stribeck->load, c.stribeck->speed_min, c.stribeck->speed_max,
                                        c.stribeck->points, &stribeck_use);
-  for (const auto &s : stribeck)
+  for (const auto &s : stribeck) {
+    // the balance searches h from 1e-3 sigma to 0.1 x ring.width: a load it cannot bracket is the inputs' (exit 2)
+    if (s.status == continuum::RingFilmStatus::LoadNotBracketed)
+      throw InputError(fmt::format("{}: key 'stribeck.load': load balance not bracketed at U = {:.6g} m/s: W' = {:g} N/m "
+                                   "is carried by no film between 1e-3 sigma and 0.1 x ring.width; check stribeck.load "
+                                   "(default ring.elastic_pressure x ring.width), lubrication.viscosity, "
+                                   "material.youngs_modulus and the stribeck speeds",
+                                   c.path, s.speed, c.stribeck->load));
     if (s.status != continuum::RingFilmStatus::Ok)
       throw std::runtime_error(fmt::format("stribeck: {} at U = {:.6g} m/s", continuum::to_string(s.status), s.speed));
+  }
   return stribeck;
 }
 

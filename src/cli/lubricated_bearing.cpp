@@ -124,8 +124,10 @@ LubricatedCase read_case(const LubricatedOptions &o) {
   read_law(reader, o, c);
 
   c.run.depth_step_fraction = reader.number("wear.step_fraction", 0.5);
-  if (!(c.run.depth_step_fraction > 0.0 && c.run.depth_step_fraction <= 1.0))
-    reader.fail("wear.step_fraction", "must be in (0, 1], got " + CaseReader::format(c.run.depth_step_fraction));
+  // below 0.01 the run takes 50x the shipped case's steps per unit wear (1e-9 ran for hours before too many steps)
+  if (!(c.run.depth_step_fraction >= 0.01 && c.run.depth_step_fraction <= 1.0))
+    reader.fail("wear.step_fraction", "must be in [0.01, 1] (the worn-depth increment per step over the law's depth "
+                                      "spacing), got " + CaseReader::format(c.run.depth_step_fraction));
   c.run.t_end = reader.positive("run.t_end");
   c.run.output_interval = reader.positive("run.output_interval", c.run.t_end / 200.0);
   if (c.run.t_end / c.run.output_interval > 1e6) reader.fail("run.output_interval", "gives more than 1e6 samples");
@@ -233,6 +235,17 @@ continuum::MixedRunReport bearing_run_in(const LubricatedCase &c, const continuu
     throw InputError(c.path + ": key 'bearing.load': the film and asperities cannot carry it before the gap closes "
                      "(eccentricity would reach 1): " + report.equilibrium_message +
                      "; lower the load or raise the speed or viscosity");
+  if (report.status == continuum::MixedRunStatus::EquilibriumFailed && samples.empty()) {
+    // no wear yet: the inputs alone put the bearing outside the solver's range (speed 1e300 m/s, W = 1e-300 N, ...)
+    const auto &p = c.parameters;
+    const double u = p.speed_time.empty() ? p.speed : p.speed_value.front();
+    const double sommerfeld = std::pow(p.radius / p.clearance, 2) * p.viscosity * (u / (2.0 * M_PI * p.radius)) /
+                              (p.load / (2.0 * p.radius * p.length));
+    throw InputError(fmt::format("{}: key 'bearing.load': no equilibrium of film and asperities at the start ({}); "
+                                 "Sommerfeld number {:.3g}: check bearing.load, bearing.clearance, bearing.youngs_modulus, "
+                                 "lubrication.viscosity and lubrication.speed", c.path, report.equilibrium_message.empty() ? report.message
+                                 : report.equilibrium_message, sommerfeld));
+  }
   throw std::runtime_error(std::string("lubricated journal bearing: ") + continuum::to_string(report.status) + ": " +
                            report.message);
 }

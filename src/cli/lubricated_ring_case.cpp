@@ -86,11 +86,16 @@ void read_ring_lubrication(const CaseReader &reader, LubricatedRingCase &c) {
   if (p.steps_per_cycle < 36) reader.fail("lubrication.steps_per_cycle", "must be at least 36");
   c.liner_roughness = reader.choice("lubrication.liner_roughness", {"law", "fixed"}, std::string("law"));
   p.liner = c.liner_roughness == "law" ? continuum::LinerRoughness::Law : continuum::LinerRoughness::Fixed;
-  if (p.liner == continuum::LinerRoughness::Fixed) p.liner_sigma = reader.positive("lubrication.liner_sigma");
+  if (p.liner == continuum::LinerRoughness::Fixed) p.liner_sigma = reader.positive_at_most("lubrication.liner_sigma", 1e-5);
   else if (reader.has("lubrication.liner_sigma"))
     reader.fail("lubrication.liner_sigma", "only used with lubrication.liner_roughness = \"fixed\"");
   c.run.jump_depth_fraction = reader.positive_at_most("lubrication.jump_depth_fraction", 1.0, 0.5);
   c.run.jump_sigma_fraction = reader.positive_at_most("lubrication.jump_sigma_fraction", 1.0, 0.05);
+  // below 1e-3 a mild run-in computes nearly every cycle (1e-300 ran 1e6 cycles one by one)
+  for (const char *key : {"lubrication.jump_depth_fraction", "lubrication.jump_sigma_fraction"}) {
+    const double f = reader.number(key, 0.5);
+    if (f < 1e-3) reader.fail(key, "must be at least 1e-3 (smaller computes nearly every cycle), got " + CaseReader::format(f));
+  }
 }
 
 LubricatedRingCase::Stribeck read_ring_stribeck(const CaseReader &reader, const continuum::MixedRingParameters &p) {

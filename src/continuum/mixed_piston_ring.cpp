@@ -459,6 +459,7 @@ void RunInSettings::validate() const {
   if (!(growth >= 1.0)) throw std::invalid_argument("growth must be >= 1");
   if (!(max_cycle_wear_fraction > 0.0)) throw std::invalid_argument("max_cycle_wear_fraction must be positive");
   if (frame_every < 0) throw std::invalid_argument("frame_every must be >= 0");
+  if (max_computed_cycles < 1) throw std::invalid_argument("max_computed_cycles must be >= 1");
 }
 
 namespace {
@@ -527,6 +528,14 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
   }
   long done = 0, previous_jump = 1;
   while (done < settings.cycles) {
+    if (report.computed_cycles >= settings.max_computed_cycles) {
+      report.status = RunInStatus::TooManyCycles;
+      report.message = "more than " + std::to_string(settings.max_computed_cycles) + " computed cycles after " +
+                       std::to_string(done) + " of " + std::to_string(settings.cycles) +
+                       " (each cycle wears near the jump limit: raise the jump fractions or run fewer cycles)";
+      report.cycles = done;
+      return report;
+    }
     CycleResult r = system.cycle(state, true, settings.frame_every);
     ++report.computed_cycles;
     if (!r.ok()) {

@@ -191,6 +191,8 @@ struct RunInSettings {
   // a cycle that wears a node by more than this fraction of its sigma is not a gradual run-in at fixed geometry:
   // the run stops (WearPerCycleTooLarge)
   double max_cycle_wear_fraction = 0.5;
+  // more computed cycles than this stops the run (TooManyCycles): jumping that barely jumps is hours of cycles
+  long max_computed_cycles = 10000;
   int frame_every = 0;                 // crank steps between VTK frames of the first and last cycle (0: none)
   void validate() const;
 };
@@ -208,7 +210,7 @@ struct CycleSample {
 };
 using CycleObserver = std::function<void(const CycleSample &)>;
 
-enum class RunInStatus { Completed, CycleFailed, WearPerCycleTooLarge };
+enum class RunInStatus { Completed, CycleFailed, WearPerCycleTooLarge, TooManyCycles };
 struct RunInReport {
   RunInStatus status = RunInStatus::Completed;
   std::string message;

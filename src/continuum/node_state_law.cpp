@@ -109,7 +109,9 @@ NodeStateLaw::Increment NodeStateLaw::advance(const std::vector<double> &pressur
 void NodeStateLaw::wear_nodes(const std::vector<double> &pressure, double ds, Increment &inc,
                               std::vector<double> &phi) {
   constexpr long max_substeps = 100000000;
-  const double last_depth = law_->worn_depth().back();
+  constexpr long kCreepCheck = 1000;   // a node's sub-steps in one call before its creep is checked
+  const auto &depth = law_->worn_depth();
+  const double last_depth = depth.back();
   inc.substeps = 0;
   for (std::size_t i = 0; i < h_.size(); ++i) {
     const double p = pressure[i];
@@ -126,6 +128,27 @@ void NodeStateLaw::wear_nodes(const std::vector<double> &pressure, double ds, In
         h += left * w1;
         c += left * c1;
         break;
+      }
+      if (!(w1 > 0.0)) {
+        // rates are >= 0, so a zero rate is a fixed point: h stays, the counterface wears at its rate there (it
+        // stepped through the whole slide at the law's stiffness bound before: 1e8 sub-steps for 1 km)
+        c += left * c1;
+        break;
+      }
+      if (taken >= kCreepCheck) {
+        // a node creeping towards a depth where its rate vanishes: done once the rest of the slide can move h by
+        // less than 1e-12 of the cell (or a few ulps of h): at most the gap to a zero-rate upper edge (which it
+        // cannot pass), else the rest at the larger of its rate and the edge's
+        const auto upper = std::upper_bound(depth.begin(), depth.end(), h);
+        const std::size_t j = std::min<std::size_t>(upper - depth.begin(), depth.size() - 1);
+        double w_edge, c_edge;
+        law_->wear_rates(slice, depth[j], nullptr, w_edge, c_edge);
+        const double reach = w_edge > 0.0 ? left * std::max(w1, w_edge) : std::min(left * w1, depth[j] - h);
+        if (reach <= 1e-12 * (depth[j] - depth[j - 1]) + 4.0 * std::numeric_limits<double>::epsilon() * depth[j]) {
+          h += w_edge > 0.0 ? left * w1 : reach;
+          c += left * (w_edge > 0.0 ? c1 : c_edge);   // creeping: the node sits at the edge for the rest
+          break;
+        }
       }
       // Classic RK4 on dh/ds = w(p, h) over a sub-step inside the node's own h-cell; the counterface depth is the
       // same quadrature of its rate.

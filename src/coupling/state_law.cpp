@@ -92,6 +92,13 @@ StateLaw::StateLaw(std::vector<double> pressure, std::vector<double> worn_depth,
       metadata_(std::move(metadata)) {
   check_grid(pressure_, "pressure", false);
   check_grid(depth_, "worn_depth", true);
+  // a cell far narrower than the axis makes the wear-rate slope (the continuum sub-step bound) near-infinite: a
+  // depth repeated to 1e-15 stalled the tribometer in 1e8 sub-steps per call
+  for (std::size_t j = 0; j + 1 < depth_.size(); ++j)
+    if (depth_[j + 1] - depth_[j] < 1e-9 * depth_.back())
+      throw std::invalid_argument("worn_depth: the cell from " + format_number(depth_[j]) + " to " +
+                                  format_number(depth_[j + 1]) + " m is narrower than 1e-9 of the last depth (" +
+                                  format_number(depth_.back()) + " m): merge the two depths");
   const std::size_t np = pressure_.size(), nh = depth_.size();
   for (std::size_t f = 0; f < state_field_count; ++f) {
     const auto field = static_cast<StateField>(f);

@@ -361,4 +361,22 @@ TEST(MixedPistonRing, CycleJumpingMatchesEveryCycleComputed) {
   EXPECT_LT(std::abs(dmu), 1e-3);
 }
 
+// A run whose jumps stay at one cycle (here: jumping off) stops at the cap on computed cycles with a status naming
+// the jump fractions, instead of computing every one of millions of cycles (the CLI's 1e-300 jump fraction did).
+TEST(MixedPistonRing, RunInStopsAtTheCapOnComputedCycles) {
+  const auto law = severe_law();
+  MixedPistonRing ring(run_in_parameters(*law), law);
+  continuum::RunInSettings rs;
+  rs.cycles = 1000000;
+  rs.jumping = false;
+  rs.max_computed_cycles = 3;
+  long observed = 0;
+  const auto report = continuum::run_in(ring, rs, [&](const continuum::CycleSample &) { ++observed; });
+  EXPECT_EQ(report.status, continuum::RunInStatus::TooManyCycles);
+  EXPECT_EQ(report.computed_cycles, 3);
+  EXPECT_EQ(report.cycles, 3);
+  EXPECT_EQ(observed, 3);
+  EXPECT_NE(report.message.find("jump fractions"), std::string::npos) << report.message;
+}
+
 }  // namespace

@@ -23,7 +23,8 @@ double c_of(double p) { return kC * std::pow(p / 1e7, 0.5); }
 
 // The depth grid: 10 equal cells, or (log_spaced) 0 and 16 depths log-spaced from 1e-5 h0 to h0, as the
 // shipped laws to the settled depth are.
-std::shared_ptr<const StateLaw> make_law(bool log_spaced = false) {
+// zero_low_rates: no wear (body or counterface) at the lowest pressure, 1e6 Pa.
+std::shared_ptr<const StateLaw> make_law(bool log_spaced = false, bool zero_low_rates = false) {
   const std::vector<double> p = {1e6, 1e7, 1e8};
   std::vector<double> h;
   if (log_spaced) {
@@ -38,7 +39,7 @@ std::shared_ptr<const StateLaw> make_law(bool log_spaced = false) {
     t.assign(p.size(), std::vector<double>(h.size(), 0.0));
     for (std::size_t i = 0; i < p.size(); ++i)
       for (std::size_t j = 0; j < h.size(); ++j) {
-        const double w = c_of(p[i]) * (kH0 - h[j]);
+        const double w = zero_low_rates && i == 0 ? 0.0 : c_of(p[i]) * (kH0 - h[j]);
         switch (static_cast<StateField>(f)) {
           case StateField::MuBody: t[i][j] = mu_exact(p[i], h[j]); break;
           case StateField::Rq: t[i][j] = 1e-7; break;
@@ -123,6 +124,31 @@ TEST(NodeStateLaw, SubStepsFollowTheNodesOwnDepthCell) {
   const double global = 1e-5 * kH0 / (c_of(1e8) * kH0);   // finest cell over the law's fastest rate
   EXPECT_GT(ds / global, 1e5);
   EXPECT_LT(inc.substeps, 100);
+}
+
+// A slide of 2e6 e-foldings in one call: the node saturates at the depth where its rate vanishes (the law's last
+// worn depth, h0, which it never reaches) in a bounded number of sub-steps; at the law's stiffness bound the slide
+// was 1.3e8 sub-steps and threw "needs more than 1e8 sub-steps".
+TEST(NodeStateLaw, AHugeSlideTowardsAVanishingRateEndsInFewSubSteps) {
+  NodeStateLaw nodes(make_law(), OutOfRange::Error, 1);
+  const double ds = 1e3;
+  ASSERT_GT(ds / nodes.substep_bound(), 1e8);
+  const auto inc = nodes.advance({1e7}, ds);
+  EXPECT_LT(inc.substeps, 100000);
+  EXPECT_NEAR(nodes.state()[0], kH0, 1e-9 * kH0);
+  EXPECT_LE(nodes.state()[0], kH0);
+  EXPECT_NEAR(nodes.counterface()[0], kQ * kH0, 1e-9 * kH0);
+}
+
+// A node whose rate is zero (a law row without wear) stays put in one sub-step however far it slides.
+TEST(NodeStateLaw, ANodeWithoutWearTakesOneSubStep) {
+  NodeStateLaw nodes(make_law(false, true), OutOfRange::Error, 2);
+  nodes.reset_state({3e-7, 0.0});
+  const auto inc = nodes.advance({1e6, 1e7}, 1e3);
+  EXPECT_EQ(nodes.state()[0], 3e-7);
+  EXPECT_EQ(nodes.counterface()[0], 0.0);
+  EXPECT_NEAR(nodes.state()[1], kH0, 1e-9 * kH0);
+  EXPECT_LT(inc.substeps, 100000);
 }
 
 TEST(NodeStateLaw, PressureOutsideTheLawIsAnErrorNamingPAndTheRange) {
