@@ -1,21 +1,17 @@
 #include "continuum/node_film.h"
 
 #include "tribo/contact_model.h"
+#include "tribo/number_format.h"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 namespace runin::continuum {
 namespace {
-std::string g(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", x);
-  return text;
-}
+using tribo::format_g;
 void require(bool ok, const std::string &key, const std::string &what, double got) {
-  if (!ok) throw std::invalid_argument(key + ": " + what + ", got " + g(got));
+  if (!ok) throw std::invalid_argument(key + ": " + what + ", got " + format_g(got));
 }
 }  // namespace
 

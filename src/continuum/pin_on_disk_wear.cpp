@@ -1,20 +1,13 @@
 #include "continuum/pin_on_disk_wear.h"
 
+#include "tribo/number_format.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace runin::continuum {
-namespace {
-std::string at_time(double t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", t);
-  return text;
-}
-}  // namespace
-
 PinWearError::PinWearError(double t, const std::string &message)
-    : std::runtime_error("pin wear at t = " + at_time(t) + " s: " + message), time(t) {}
+    : std::runtime_error("pin wear at t = " + tribo::format_g(t) + " s: " + message), time(t) {}
 
 DiskTrackSummary summarise(const DiskTrackWear &disk, double pin_depth) {
   DiskTrackSummary track;

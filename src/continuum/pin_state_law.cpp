@@ -1,21 +1,16 @@
 #include "continuum/pin_state_law.h"
 
+#include "tribo/number_format.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace runin::continuum {
-namespace {
-std::string g(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", x);
-  return text;
-}
-}  // namespace
+using tribo::format_g;
 
 PinStateLaw::PinStateLaw(const PinStateLawSettings &settings, StateLawFriction &held)
     : s_(settings), held_(held), nodes_(held.law, held.policy, 0), disk_(tribo::ArchardWear(0.0, 1.0), settings.track_radius) {
@@ -80,7 +75,7 @@ void PinStateLaw::wear(double ds, double dt) {
     double step = remaining;
     if (pin_) {
       if (wear_steps_ >= s_.tip.max_steps)
-        throw SlowStepError(SplitStatus::TooManySlowSteps, "pin wear at t = " + g(t_now_) + " s: more than " +
+        throw SlowStepError(SplitStatus::TooManySlowSteps, "pin wear at t = " + format_g(t_now_) + " s: more than " +
                                                                std::to_string(s_.tip.max_steps) + " wear updates");
       step = std::min(remaining, nodes_.stable_contact_step(pressure(), pin_->contact_stiffness(), s_.tip.step_safety));
       if (remaining - step < 1e-9 * ds) step = remaining;
@@ -91,7 +86,7 @@ void PinStateLaw::wear(double ds, double dt) {
     for (int i = 0; i < n; ++i) volume += inc.counterface[i] * area_[i];
     disk_.slide_volume(volume, step, width);
     if (pin_ && !pin_->apply(inc.body, step))
-      throw SlowStepError(SplitStatus::SlowFailure, "pin wear at t = " + g(t_now_) + " s: " + pin_->message());
+      throw SlowStepError(SplitStatus::SlowFailure, "pin wear at t = " + format_g(t_now_) + " s: " + pin_->message());
     ++wear_steps_;
     remaining -= step;
   }
@@ -142,9 +137,9 @@ double PinStateLaw::profile_height(int ring) const {
 
 void WearSteps::validate() const {
   if (!(std::isfinite(tolerance) && tolerance > 0.0 && tolerance <= 0.1))
-    throw std::invalid_argument("wear steps: tolerance must be in (0, 0.1], got " + g(tolerance));
+    throw std::invalid_argument("wear steps: tolerance must be in (0, 0.1], got " + format_g(tolerance));
   if (!(std::isfinite(max_fraction) && max_fraction > 0.0 && max_fraction <= 1.0))
-    throw std::invalid_argument("wear steps: max_fraction must be in (0, 1], got " + g(max_fraction));
+    throw std::invalid_argument("wear steps: max_fraction must be in (0, 1], got " + format_g(max_fraction));
   if (max_steps <= 0) throw std::invalid_argument("wear steps: max_steps must be positive");
   if (dynamics_chunk <= 0) throw std::invalid_argument("wear steps: dynamics_chunk must be positive");
 }
@@ -191,7 +186,7 @@ double grow_factor(double err) { return err > 0.0 ? std::clamp(0.9 / err, 0.2, 2
 bool within_step_budget(SplitReport &report, long &tries, long max_steps, double t) {
   if (++tries <= max_steps) return true;
   report.status = SplitStatus::TooManySlowSteps;
-  report.message = "adaptive wear steps at t = " + g(t) + " s: more than " + std::to_string(max_steps) + " steps";
+  report.message = "adaptive wear steps at t = " + format_g(t) + " s: more than " + std::to_string(max_steps) + " steps";
   report.time = t;
   return false;
 }
@@ -251,8 +246,8 @@ SplitReport run_speed_adaptive(const PinOnDiskSystem &system, const PinOnDiskRun
       pin.restore(before);
       if (s1 - s <= smallest) {
         report.status = SplitStatus::SlowFailure;
-        report.message = "adaptive wear steps at t = " + g(t1) + " s: the change of mu_eff or of the node states "
-                         "exceeds the tolerance over a step of " + g(s1 - s) + " m (a jump in the law?)";
+        report.message = "adaptive wear steps at t = " + format_g(t1) + " s: the change of mu_eff or of the node states "
+                         "exceeds the tolerance over a step of " + format_g(s1 - s) + " m (a jump in the law?)";
         report.time = t1;
         return report;
       }

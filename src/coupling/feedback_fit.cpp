@@ -1,9 +1,10 @@
 #include "coupling/feedback_fit.h"
 
+#include "tribo/number_format.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include <Eigen/Dense>
 #include <unsupported/Eigen/NonLinearOptimization>
@@ -29,12 +30,7 @@ const char *to_string(FeedbackFitStatus status) {
 
 namespace {
 
-std::string g(double x) {
-  std::ostringstream out;
-  out.precision(6);
-  out << x;
-  return out.str();
-}
+using tribo::format_g;
 
 // Relative residuals of R^2: r_i = w_i (v_inf + (v_0 - v_inf) E_i) - 1 with E_i = exp(-2 b x_i),
 // x_i = (t_i - t_0) / span in [0, 1], w_i = scale / R_i^2, u = scale v. p = (v_inf, v_0, ln b): b > 0.
@@ -108,25 +104,25 @@ FeedbackFitResult fit_feedback(const FeedbackSeries &d, const FeedbackFitOptions
     for (const auto &[name, value] : values)
       if (!std::isfinite(value))
         return fail(r, FeedbackFitStatus::NonFinite,
-                    "column '" + *name + "', row " + std::to_string(i + 1) + ": non-finite value " + g(value));
+                    "column '" + *name + "', row " + std::to_string(i + 1) + ": non-finite value " + format_g(value));
     if (i > 0 && !(d.t[i] > d.t[i - 1]))
       return fail(r, FeedbackFitStatus::TimeNotIncreasing,
-                  "column '" + d.t_name + "', row " + std::to_string(i + 1) + ": " + g(d.t[i]) +
-                      " does not increase (previous " + g(d.t[i - 1]) + ")");
+                  "column '" + d.t_name + "', row " + std::to_string(i + 1) + ": " + format_g(d.t[i]) +
+                      " does not increase (previous " + format_g(d.t[i - 1]) + ")");
     if (!(d.R[i] > 0.0))
       return fail(r, FeedbackFitStatus::NonPositive,
-                  "column '" + d.R_name + "', row " + std::to_string(i + 1) + ": roughness " + g(d.R[i]) +
+                  "column '" + d.R_name + "', row " + std::to_string(i + 1) + ": roughness " + format_g(d.R[i]) +
                       " must be > 0");
     if (!(d.mu[i] > 0.0))
       return fail(r, FeedbackFitStatus::NonPositive,
                   "column '" + d.mu_name + "', row " + std::to_string(i + 1) + ": friction coefficient " +
-                      g(d.mu[i]) + " must be > 0");
+                      format_g(d.mu[i]) + " must be > 0");
   }
   r.bad_row = FeedbackFitResult::kNoRow;
   const auto [r_min, r_max] = std::minmax_element(d.R.begin(), d.R.end());
   if (*r_max - *r_min <= 1e-9 * *r_max)
     return fail(r, FeedbackFitStatus::ConstantRoughness,
-                "column '" + d.R_name + "' is constant (" + g(*r_max) +
+                "column '" + d.R_name + "' is constant (" + format_g(*r_max) +
                     "): the run-in rate and C1, C2 apart are not determined");
 
   // R(t): scaled so that every parameter is O(1) whatever the units.
@@ -168,7 +164,7 @@ FeedbackFitResult fit_feedback(const FeedbackSeries &d, const FeedbackFitOptions
   const double b = std::exp(p[2]);
   const double u_inf = scale * p[0], u_0 = scale * p[1];
   if (!(u_0 > 0.0))
-    return fail(r, FeedbackFitStatus::NotConverged, "fitted R0^2 = " + g(u_0) + " is not positive");
+    return fail(r, FeedbackFitStatus::NotConverged, "fitted R0^2 = " + format_g(u_0) + " is not positive");
   r.rate = b / span;
   r.R0 = std::sqrt(u_0);
   r.R_star = u_inf > 0.0 ? std::sqrt(u_inf) : 0.0;
@@ -250,25 +246,25 @@ FeedbackFitResult fit_feedback(const FeedbackSeries &d, const FeedbackFitOptions
     const bool by_R = r.R_rms_rel_error > limit;
     return fail(r, FeedbackFitStatus::PoorFit,
                 std::string("the fitted model misses ") + (by_R ? d.R_name + "(t)" : d.mu_name + "(t)") +
-                    " by an RMS relative error of " + g(by_R ? r.R_rms_rel_error : r.mu_rms_rel_error) + " (> " +
-                    g(limit) + "; max " + g(by_R ? r.R_max_rel_error : r.mu_max_rel_error) +
+                    " by an RMS relative error of " + format_g(by_R ? r.R_rms_rel_error : r.mu_rms_rel_error) + " (> " +
+                    format_g(limit) + "; max " + format_g(by_R ? r.R_max_rel_error : r.mu_max_rel_error) +
                     "): the data do not follow the feedback model (R monotone towards R* > 0)");
   }
   // R* > 0 must be carried by the data: well above rounding and three standard errors from 0.
   if (!determined || !(u_inf > 1e-9 * scale) || !(u_inf > 3.0 * r.R_star_squared_error))
     return fail(r, FeedbackFitStatus::NoEquilibrium,
-                "R(t) runs towards no positive equilibrium roughness: fitted R*^2 = " + g(u_inf) +
-                    (determined ? " +- " + g(r.R_star_squared_error) : std::string(" (not determined)")) +
-                    ", rate A K1 = " + g(r.rate) + " per unit of " + d.t_name +
+                "R(t) runs towards no positive equilibrium roughness: fitted R*^2 = " + format_g(u_inf) +
+                    (determined ? " +- " + format_g(r.R_star_squared_error) : std::string(" (not determined)")) +
+                    ", rate A K1 = " + format_g(r.rate) + " per unit of " + d.t_name +
                     "; the model needs R to settle at an R* > 0 within the data");
   if (!(r.rate > 3.0 * r.rate_error))
     return fail(r, FeedbackFitStatus::NoRunIn,
-                "the run-in rate A K1 = " + g(r.rate) + " +- " + g(r.rate_error) + " per unit of " + d.t_name +
-                    " is not determined: " + d.R_name + " hardly changes over the data (R0 = " + g(r.R0) +
-                    ", R* = " + g(r.R_star) + ")");
+                "the run-in rate A K1 = " + format_g(r.rate) + " +- " + format_g(r.rate_error) + " per unit of " + d.t_name +
+                    " is not determined: " + d.R_name + " hardly changes over the data (R0 = " + format_g(r.R0) +
+                    ", R* = " + format_g(r.R_star) + ")");
   if (!(r.C1 > 3.0 * r.C1_error))
     return fail(r, FeedbackFitStatus::NoFrictionMinimum,
-                "fitted C1 = " + g(r.C1) + " +- " + g(r.C1_error) + " is not > 0: " + d.mu_name +
+                "fitted C1 = " + format_g(r.C1) + " +- " + format_g(r.C1_error) + " is not > 0: " + d.mu_name +
                     " does not grow with R as C1 R + C2/R needs for a friction minimum");
 
   tribo::FeedbackCoefficients k;
