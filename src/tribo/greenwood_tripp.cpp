@@ -15,19 +15,16 @@ namespace {
 const double kPi = std::acos(-1.0);
 
 
-// F_n(H) = int_0^T 2 t^(2n+1) phi(H + t^2) dt (s - H = t^2 makes the integrand smooth at the lower end),
-// composite 8-point Gauss-Legendre on 24 panels up to s = max(H, 0) + 12 (phi(12) / phi(0) < 1e-31).
-// Relative accuracy ~1e-13 against an independent exp-sinh quadrature for -3 <= H <= 8 (unit test); about
-// 8x cheaper than gaussian_tail_moment, which matters for a pressure evaluated at every grid node.
-double tail_moment(double n, double H)
+// int_H^T (s - H)^n phi(s) ds = int_0^sqrt(T - H) 2 t^(2n+1) phi(H + t^2) dt (s - H = t^2 makes the integrand
+// smooth at the lower end), composite 8-point Gauss-Legendre on 24 panels.
+double band_moment(double n, double H, double T)
 {
   static constexpr double nodes[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
                                       0.9602898564975363};
   static constexpr double weights[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
                                         0.1012285362903763};
   constexpr int panels = 24;
-  const double t_max = std::sqrt(std::max(H, 0.0) + 12.0 - H);
-  const double w = t_max / panels;
+  const double w = std::sqrt(T - H) / panels;
   double sum = 0.0;
   for (int p = 0; p < panels; ++p) {
     const double centre = (p + 0.5) * w;
@@ -41,7 +38,35 @@ double tail_moment(double n, double H)
   return 0.5 * w * sum / std::sqrt(2.0 * kPi);
 }
 
+// F_n(H): the band up to s = max(H, 0) + 12 (phi(12) / phi(0) < 1e-31). Relative accuracy ~1e-13 against an
+// independent exp-sinh quadrature for -3 <= H <= 8 (unit test); about 8x cheaper than gaussian_tail_moment,
+// which matters for a pressure evaluated at every grid node.
+double tail_moment(double n, double H) { return band_moment(n, H, std::max(H, 0.0) + 12.0); }
+
+double upper_tail(double x) { return 0.5 * std::erfc(x / std::sqrt(2.0)); }
+
 }    // namespace
+
+double greenwood_tripp_f_truncated(double n, double H, double T)
+{
+  if (!(n >= 0.0)) throw InvalidCoefficient("n: Greenwood-Tripp moment order must be >= 0");
+  if (!std::isfinite(H)) throw InvalidCoefficient("h/sigma: film parameter must be finite");
+  if (std::isnan(T)) throw InvalidCoefficient("top/sigma: the worn summits' top must not be NaN");
+  if (H >= T) return 0.0;
+  // beyond 12 sigma above both the cut changes nothing representable (phi(12) / phi(0) < 1e-31)
+  if (T >= std::max(H, 0.0) + 12.0) return greenwood_tripp_f(n, H);
+  return band_moment(n, H, T) + std::pow(T - H, n) * upper_tail(T);
+}
+
+double truncated_rms_ratio(double T)
+{
+  if (std::isnan(T)) throw InvalidCoefficient("top/sigma: the worn summits' top must not be NaN");
+  if (T >= 40.0) return 1.0;
+  const double phi = std::exp(-0.5 * T * T) / std::sqrt(2.0 * kPi), q = upper_tail(T), below = 1.0 - q;
+  const double mean = -phi + T * q;                     // E[min(x, T)]
+  const double second = below - T * phi + T * T * q;    // E[min(x, T)^2]
+  return std::sqrt(std::max(0.0, second - mean * mean));
+}
 
 double greenwood_tripp_f(double n, double H)
 {
@@ -77,6 +102,42 @@ double GreenwoodTripp::area_fraction(double h) const
 {
   const double ebs = eta_ * beta_ * sigma_;
   return kPi * kPi * ebs * ebs * greenwood_tripp_f(2.0, h / sigma_);
+}
+
+double GreenwoodTripp::pressure(double h, double top) const
+{
+  return k_ * e_eff_ * greenwood_tripp_f_truncated(2.5, h / sigma_, top / sigma_);
+}
+
+double GreenwoodTripp::area_fraction(double h, double top) const
+{
+  const double ebs = eta_ * beta_ * sigma_;
+  return kPi * kPi * ebs * ebs * greenwood_tripp_f_truncated(2.0, h / sigma_, top / sigma_);
+}
+
+double GreenwoodTripp::worn_volume(double top) const
+{
+  if (std::isnan(top)) throw InvalidCoefficient("top: the worn summits' top must not be NaN");
+  if (top == HUGE_VAL) return 0.0;
+  return kPi * eta_ * beta_ * sigma_ * sigma_ * greenwood_tripp_f(2.0, top / sigma_);
+}
+
+double GreenwoodTripp::top_after_wear(double worn) const
+{
+  if (!(worn >= 0.0) || !std::isfinite(worn))
+    throw InvalidCoefficient("worn volume: must be >= 0 and finite, got " + std::to_string(worn));
+  const double scale = kPi * eta_ * beta_ * sigma_ * sigma_;
+  const double target = worn / scale;   // F_2(t) = target, F_2 falls monotonically in t
+  constexpr double t_high = 12.0;
+  if (target <= greenwood_tripp_f(2.0, t_high)) return HUGE_VAL;
+  double t_low = -1.0;
+  while (greenwood_tripp_f(2.0, t_low) < target) t_low *= 2.0;   // F_2(t) ~ t^2 for t -> -inf
+  auto excess = [&](double t) { return greenwood_tripp_f(2.0, t) - target; };
+  std::uintmax_t iterations = 200;
+  const auto r = boost::math::tools::toms748_solve(
+      excess, t_low, t_high, [](double a, double b) { return std::abs(b - a) <= 1e-14 * std::max(1.0, std::abs(b)); },
+      iterations);
+  return sigma_ * 0.5 * (r.first + r.second);
 }
 
 const char *to_string(LoadShareStatus status)

@@ -16,6 +16,14 @@ namespace runin::tribo {
 // Standard Gaussian tail moment F_n(H) (n >= 0).
 double greenwood_tripp_f(double n, double H);
 
+// Worn summits (a run-in surface: the top of the height distribution cut off, Pawlus, Reizer & Wieczorowski 2022,
+// "Two-process random textures", Materials 15:268; ISO 13565-3). Every summit higher than the top T is flattened
+// to T: F_n(H; T) = int_H^T (s - H)^n phi(s) ds + (T - H)^n Q(T) for H < T, and 0 for H >= T, so no summit
+// touches a counterface farther than T. T = +inf: F_n(H).
+double greenwood_tripp_f_truncated(double n, double H, double T);
+// Summit heights after the cut, in units of sigma: sqrt(var(min(x, T))) for x ~ N(0, 1).
+double truncated_rms_ratio(double T);
+
 class GreenwoodTripp {
  public:
   // eta: summits per m^2; beta: summit radius (m); sigma: combined rms roughness (m); E*: Pa.
@@ -23,6 +31,14 @@ class GreenwoodTripp {
 
   double pressure(double h) const;        // Pa, nominal asperity pressure at gap h (mean planes)
   double area_fraction(double h) const;   // -, real contact area over nominal area
+  // The same with the summits cut at `top` (m above the summits' original mean plane; +inf: uncut).
+  double pressure(double h, double top) const;
+  double area_fraction(double h, double top) const;
+  // Worn summits: the volume per nominal area (m) that cutting every summit at `top` removes, pi eta beta sigma^2
+  // F_2(top / sigma) (spherical caps of depth d hold pi beta d^2, the Hertz/GW small-cap geometry), and its
+  // inverse: the top after a worn volume w (m; 0: +inf).
+  double worn_volume(double top) const;
+  double top_after_wear(double worn_volume) const;
   double load(double h, double nominal_area) const { return pressure(h) * nominal_area; }   // N
   double coefficient() const { return k_; }   // K (-), p_a = K E* F_5/2
 

@@ -4,6 +4,7 @@
 #include "tribo/greenwood_tripp.h"
 
 #include <boost/math/quadrature/exp_sinh.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,6 +21,16 @@ double reference_f(double n, double H)
   boost::math::quadrature::exp_sinh<double> integrator;
   auto f = [&](double t) { return std::pow(t, n) * std::exp(-0.5 * (H + t) * (H + t)); };
   return integrator.integrate(f, 0.0, std::numeric_limits<double>::infinity()) / std::sqrt(2.0 * kPi);
+}
+
+// Worn summits cut at T: int_H^T (s - H)^n phi ds (tanh-sinh on the untransformed band) + (T - H)^n Q(T).
+double reference_truncated(double n, double H, double T)
+{
+  if (H >= T) return 0.0;
+  boost::math::quadrature::tanh_sinh<double> integrator;
+  auto f = [&](double s) { return std::pow(s - H, n) * std::exp(-0.5 * s * s); };
+  const double band = integrator.integrate(f, H, T) / std::sqrt(2.0 * kPi);
+  return band + std::pow(T - H, n) * 0.5 * std::erfc(T / std::sqrt(2.0));
 }
 
 }    // namespace
@@ -110,4 +121,65 @@ TEST(GreenwoodTripp, LoadShareCarriesTheNominalLoad)
   const LoadShare light = solve_load_share(0.5 * film(20.0 * sigma), film, gt, area, 0.05 * sigma, 20.0 * sigma);
   EXPECT_EQ(light.status, LoadShareStatus::FilmCarriesAll);
   EXPECT_THROW(solve_load_share(-1.0, film, gt, area, 0.05 * sigma, 20.0 * sigma), InvalidCoefficient);
+}
+
+// A run-in surface: summits above the top T flattened to T (plateau). Checked against an independent quadrature
+// and the limits that define it: no contact beyond the top, the Gaussian F_n when the top is far, the count of
+// summits in contact (F_0) unchanged below the top.
+TEST(GreenwoodTripp, WornSummitMomentsMatchIndependentQuadrature)
+{
+  double worst = 0.0;
+  for (const double n : {1.5, 2.0, 2.5})
+    for (const double T : {-0.5, 0.5, 1.0, 2.0, 3.0})
+      for (double H = -2.0; H < T; H += 0.25) {
+        const double ref = reference_truncated(n, H, T), got = greenwood_tripp_f_truncated(n, H, T);
+        worst = std::max(worst, std::abs(got - ref) / ref);
+        EXPECT_NEAR(got, ref, 1e-10 * ref) << "n=" << n << " H=" << H << " T=" << T;
+      }
+  std::printf("worn-summit F_n worst relative error vs tanh-sinh quadrature: %.3e\n", worst);
+  for (const double H : {-1.0, 0.0, 1.5, 2.9}) {
+    EXPECT_EQ(greenwood_tripp_f_truncated(2.5, 3.0, 3.0), 0.0);
+    EXPECT_EQ(greenwood_tripp_f_truncated(2.5, H + 0.1, H), 0.0);
+    EXPECT_EQ(greenwood_tripp_f_truncated(2.5, H, HUGE_VAL), greenwood_tripp_f(2.5, H));
+    EXPECT_NEAR(greenwood_tripp_f_truncated(0.0, H, 3.0), greenwood_tripp_f(0.0, H), 1e-12);
+  }
+  // the cut only lowers the load, and the load falls to 0 continuously at the top
+  for (double H = 0.0; H < 2.0; H += 0.2)
+    EXPECT_LT(greenwood_tripp_f_truncated(2.5, H, 2.0), greenwood_tripp_f(2.5, H));
+  EXPECT_LT(greenwood_tripp_f_truncated(2.5, 2.0 - 1e-6, 2.0), 1e-14);
+}
+
+// The worn volume of a cut is pi eta beta sigma^2 F_2(T / sigma) (each summit of height z > T loses a cap of
+// pi beta (z - T)^2); the top after a volume inverts it; the RMS of min(x, T) against its moments by quadrature.
+TEST(GreenwoodTripp, WornVolumeAndRoughnessOfTheCut)
+{
+  const double eta = 2.5e9, beta = 1e-4, sigma = 2.83e-7, e_star = 1.15e11;
+  const GreenwoodTripp gt(eta, beta, sigma, e_star);
+  for (const double t : {-2.0, -0.5, 0.0, 1.0, 2.5, 4.0}) {
+    const double ref = kPi * eta * beta * sigma * sigma * reference_f(2.0, t);
+    EXPECT_NEAR(gt.worn_volume(t * sigma), ref, 1e-9 * ref) << "t=" << t;
+    EXPECT_NEAR(gt.top_after_wear(gt.worn_volume(t * sigma)), t * sigma, 1e-9 * sigma) << "t=" << t;
+  }
+  EXPECT_EQ(gt.worn_volume(HUGE_VAL), 0.0);
+  EXPECT_EQ(gt.top_after_wear(0.0), HUGE_VAL);
+  EXPECT_GT(gt.top_after_wear(1e-12), gt.top_after_wear(1e-10));   // more wear, lower top
+  // pressure and area with the top: the dimensionless moments times the uncut prefactors
+  const double H = 1.2, T = 2.0;
+  EXPECT_NEAR(gt.pressure(H * sigma, T * sigma) / gt.pressure(H * sigma),
+              reference_truncated(2.5, H, T) / reference_f(2.5, H), 1e-9);
+  EXPECT_NEAR(gt.area_fraction(H * sigma, T * sigma) / gt.area_fraction(H * sigma),
+              reference_truncated(2.0, H, T) / reference_f(2.0, H), 1e-9);
+  // RMS of min(x, T): closed form at T = 0 (sqrt(1/2 - 1/(2 pi))), quadrature elsewhere, 1 uncut
+  EXPECT_NEAR(truncated_rms_ratio(0.0), std::sqrt(0.5 - 0.5 / kPi), 1e-14);
+  EXPECT_EQ(truncated_rms_ratio(HUGE_VAL), 1.0);
+  boost::math::quadrature::tanh_sinh<double> integrator;
+  for (const double T : {-1.0, 0.7, 1.5, 3.0}) {
+    auto moment = [&](int k) {
+      auto f = [&](double x) { return std::pow(x, k) * std::exp(-0.5 * x * x); };
+      return integrator.integrate(f, -40.0, T) / std::sqrt(2.0 * kPi) +
+             std::pow(T, k) * 0.5 * std::erfc(T / std::sqrt(2.0));
+    };
+    const double m1 = moment(1), m2 = moment(2);
+    EXPECT_NEAR(truncated_rms_ratio(T), std::sqrt(m2 - m1 * m1), 1e-10) << "T=" << T;
+  }
 }
