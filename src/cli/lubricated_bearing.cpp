@@ -29,7 +29,7 @@ const Schema kSchema = {
     {"lubrication", {"viscosity", "supply_pressure", "groove_angle", "speed", "speed_time", "speed_value", "grid",
                      "flow_factors", "gamma", "counterface"}},
     {"friction", {"model", "law", "out_of_range"}},
-    {"wear", {"step_fraction"}},
+    {"wear", {"step_fraction", "worn_surface"}},
     {"run", {"t_end", "output_interval", "frame_times"}},
     {"stribeck", {"speed_min", "speed_max", "points"}},
 };
@@ -124,6 +124,9 @@ LubricatedCase read_case(const LubricatedOptions &o) {
   read_law(reader, o, c);
 
   c.run.depth_step_fraction = reader.number("wear.step_fraction", 0.5);
+  p.worn_surface = reader.choice("wear.worn_surface", {"law_rq", "truncated"}, std::string("law_rq")) == "truncated"
+                       ? continuum::WornSurface::TruncatedSummits
+                       : continuum::WornSurface::LawRq;
   // below 0.01 the run takes 50x the shipped case's steps per unit wear (1e-9 ran for hours before too many steps)
   if (!(c.run.depth_step_fraction >= 0.01 && c.run.depth_step_fraction <= 1.0))
     reader.fail("wear.step_fraction", "must be in [0.01, 1] (the worn-depth increment per step over the law's depth "

@@ -100,6 +100,15 @@ const char *to_string(MixedStatus status)
   return "?";
 }
 
+const char *to_string(WornSurface surface)
+{
+  switch (surface) {
+  case WornSurface::LawRq: return "law_rq";
+  case WornSurface::TruncatedSummits: return "truncated";
+  }
+  return "?";
+}
+
 const char *to_string(MixedRunStatus status)
 {
   switch (status) {
@@ -144,13 +153,38 @@ std::vector<double> MixedJournalBearingSystem::node_sigma(const MixedWearState &
     // where a clamped or Archard lookup of a light contact takes its surface state anyway)
     const double pa = state.asperity_pressure.empty() ? 0.0 : state.asperity_pressure[i];
     const double p = pa > 0.0 ? pa : law.pressure().front();
-    const double body = law.value(coupling::StateField::Rq, p, state.bore[i], coupling::Band::Mean, p_.policy, use);
+    // cut summits keep the unworn spread below the cut: the law's rq at h = 0
+    const bool unworn = p_.worn_surface == WornSurface::TruncatedSummits;
+    const double body =
+        law.value(coupling::StateField::Rq, p, unworn ? 0.0 : state.bore[i], coupling::Band::Mean, p_.policy, use);
     const double journal =
-        p_.counterface_rough ? law.value(coupling::StateField::Rq, p, state.shaft, coupling::Band::Mean, p_.policy, use)
-                             : 0.0;
+        p_.counterface_rough
+            ? law.value(coupling::StateField::Rq, p, unworn ? 0.0 : state.shaft, coupling::Band::Mean, p_.policy, use)
+            : 0.0;
     sigma[i] = std::hypot(body, journal);
   }
   return sigma;
+}
+
+std::vector<double> MixedJournalBearingSystem::node_top(const MixedWearState &state,
+                                                        const std::vector<double> &sigma) const
+{
+  std::vector<double> top(sigma.size(), HUGE_VAL);
+  if (p_.worn_surface != WornSurface::TruncatedSummits) return top;
+  for (std::size_t i = 0; i < sigma.size(); ++i)
+    if (sigma[i] > 0.0)
+      top[i] = tribo::GreenwoodTripp(p_.summit_density, p_.summit_radius, sigma[i], p_.effective_modulus)
+                   .top_after_wear(state.bore[i] + state.shaft);
+  return top;
+}
+
+std::vector<double> MixedJournalBearingSystem::node_rms(const std::vector<double> &sigma,
+                                                        const std::vector<double> &top) const
+{
+  std::vector<double> rms(sigma.size());
+  for (std::size_t i = 0; i < sigma.size(); ++i)
+    rms[i] = top[i] == HUGE_VAL || !(sigma[i] > 0.0) ? sigma[i] : sigma[i] * tribo::truncated_rms_ratio(top[i] / sigma[i]);
+  return rms;
 }
 
 HydroJournalBearing MixedJournalBearingSystem::film_bearing(const MixedWearState &state, const std::vector<double> &sigma,
@@ -186,7 +220,9 @@ MixedEquilibrium MixedJournalBearingSystem::evaluate(const MixedWearState &state
   MixedEquilibrium e;
   e.eccentricity = eccentricity;
   e.attitude = attitude;
-  e.sigma = node_sigma(state);
+  const std::vector<double> sigma = node_sigma(state);
+  e.top = node_top(state, sigma);
+  e.sigma = node_rms(sigma, e.top);
   const HydroJournalBearing b = film_bearing(state, e.sigma, speed, eccentricity, attitude);
   e.film = solve_journal_bearing(b, nullptr, ReynoldsSolver(), initial);
   e.film_solves = 1;
@@ -215,10 +251,12 @@ MixedEquilibrium MixedJournalBearingSystem::evaluate(const MixedWearState &state
     const double g = b.clearance * (1.0 + eccentricity * std::cos(a - b.line_of_centres)) + b.gap_addition[i];
     e.gap[i] = g;
     if (g < e.h_min) e.h_min = g, i_min = i;
-    const double pa =
-        e.sigma[i] > 0.0
-            ? tribo::GreenwoodTripp(p_.summit_density, p_.summit_radius, e.sigma[i], p_.effective_modulus).pressure(g)
-            : 0.0;
+    double pa = 0.0;
+    if (sigma[i] > 0.0) {
+      const tribo::GreenwoodTripp summits(p_.summit_density, p_.summit_radius, sigma[i], p_.effective_modulus);
+      // cut summits stand on the unworn mean plane, which the worn volume has not moved
+      pa = e.top[i] == HUGE_VAL ? summits.pressure(g) : summits.pressure(g - b.gap_addition[i], e.top[i]);
+    }
     e.asperity_pressure[i] = pa;
     if (pa > 0.0) {
       ax += pa * ca * area;

@@ -28,6 +28,9 @@
 
 namespace runin::continuum {
 
+enum class WornSurface { LawRq, TruncatedSummits };
+const char *to_string(WornSurface surface);
+
 struct MixedJournalBearingParameters {
   double radius = 0.0;           // m, R
   double length = 0.0;           // m, L
@@ -50,6 +53,12 @@ struct MixedJournalBearingParameters {
   coupling::OutOfRange policy = coupling::OutOfRange::Archard;
   // Fixed roughness (m) instead of the law's rq (> 0: every node, both surfaces together; for checks).
   double sigma_override = 0.0;
+  // How wear changes the asperity contact (doc/lubricated_journal_bearing.md, "Worn summits"):
+  //   LawRq: Gaussian summits of the law's rq at the node's worn depth;
+  //   TruncatedSummits: the unworn law's summits (rq at h = 0) cut at the top that the node's worn volume sets
+  //     (GreenwoodTripp::top_after_wear of bore + journal depth): wear takes the highest summits first, and no
+  //     summit rises above the cut, so the contact ends once the film is thicker than the cut.
+  WornSurface worn_surface = WornSurface::LawRq;
 
   double speed_at(double t) const;
   double omega_at(double t) const { return speed_at(t) / radius; }
@@ -90,7 +99,8 @@ struct MixedEquilibrium {
   double sommerfeld = 0.0, hersey = 0.0;   // (R/c)^2 eta N / P, eta N / P (N rev/s)
   double cavitated_fraction = 0.0;
   int film_solves = 0;
-  std::vector<double> gap, sigma, asperity_pressure, mu_body;   // per circumferential node
+  std::vector<double> gap, sigma, asperity_pressure, mu_body;   // per circumferential node (sigma: R, after any cut)
+  std::vector<double> top;                                     // m, the worn summits' cut (+inf: none)
   HydroJournalResult film;   // the film at the equilibrium (pressure, fill on the n_theta x n_axial grid)
   // d(residual)/d(eps, attitude), row-major, residual = (S_along - W, S_across) / W: warm-starts the next solve
   double jacobian[4] = {0.0, 0.0, 0.0, 0.0};
@@ -125,8 +135,12 @@ class MixedJournalBearingSystem {
                             coupling::RangeUse *use = nullptr) const;
   // Eccentricity at which the smallest gap closes for a displacement toward `attitude`.
   double closing_eccentricity(const MixedWearState &state, double attitude) const;
-  // Combined roughness per node at the state (lagged asperity pressure).
+  // Combined roughness per node at the state (lagged asperity pressure): the summits' sigma before any cut.
   std::vector<double> node_sigma(const MixedWearState &state, coupling::RangeUse *use = nullptr) const;
+  // Worn summits: the cut per node (m above the summits' unworn mean plane; +inf: none, LawRq), and the RMS of
+  // the summits after it (R; sigma itself under LawRq).
+  std::vector<double> node_top(const MixedWearState &state, const std::vector<double> &sigma) const;
+  std::vector<double> node_rms(const std::vector<double> &sigma, const std::vector<double> &top) const;
 
  private:
   HydroJournalBearing film_bearing(const MixedWearState &state, const std::vector<double> &sigma, double speed,

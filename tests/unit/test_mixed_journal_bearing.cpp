@@ -151,6 +151,66 @@ TEST(MixedJournalBearing, RunInReachesFilmEquilibrium)
   EXPECT_LT(last.h_max, law.worn_depth().back());
 }
 
+// Worn summits (wear.worn_surface = "truncated"): wear cuts the highest summits, so the contact ends once the film
+// is thicker than the cut. Claim 1 with R constant: friction, the asperity share and R fall at every sample, settle
+// (the last half of the hour: friction within 1e-4, R within 2e-4), and the run-in stops where the cut meets the film at the node of the
+// smallest gap. The start is the Gaussian one (nothing worn yet).
+TEST(MixedJournalBearing, WornSummitsRunInEndsWhereTheFilmClearsTheCut)
+{
+  MixedJournalBearingParameters p = bearing();
+  p.worn_surface = WornSurface::TruncatedSummits;
+  const MixedJournalBearingSystem sys(p), gaussian(bearing());
+  MixedRunSettings rs;
+  rs.t_end = 3600.0;
+  rs.output_interval = 10.0;
+  std::vector<MixedSample> s;
+  const MixedRunReport rep = run_in(sys, rs, [&](const MixedSample &x) { s.push_back(x); });
+  ASSERT_TRUE(rep.ok()) << rep.message;
+  ASSERT_GT(s.size(), 360u);
+  const MixedSample &first = s.front(), &last = s.back();
+  const MixedEquilibrium g0 = gaussian.equilibrium(gaussian.initial_state(), p.speed);
+  EXPECT_EQ(first.mu, (g0.viscous_friction + g0.boundary_friction) / p.load);
+  EXPECT_EQ(first.asperity_share, g0.asperity_load / p.load);
+  for (std::size_t k = 1; k < s.size(); ++k) {
+    EXPECT_LE(s[k].mu, s[k - 1].mu * (1.0 + 1e-9)) << "t = " << s[k].t;
+    EXPECT_LE(s[k].asperity_share, s[k - 1].asperity_share) << "t = " << s[k].t;
+    EXPECT_LE(s[k].sigma_contact, s[k - 1].sigma_contact) << "t = " << s[k].t;
+  }
+  double mu_lo = HUGE_VAL, mu_hi = 0.0, r_lo = HUGE_VAL, r_hi = 0.0, t_settled = 0.0;
+  for (const auto &x : s) {
+    if (x.t >= 0.5 * rs.t_end) {
+      mu_lo = std::min(mu_lo, x.mu), mu_hi = std::max(mu_hi, x.mu);
+      r_lo = std::min(r_lo, x.sigma_contact), r_hi = std::max(r_hi, x.sigma_contact);
+    }
+    if (std::abs(x.mu / last.mu - 1.0) > 0.01) t_settled = x.t;
+  }
+  EXPECT_LT((mu_hi - mu_lo) / mu_lo, 1e-4);
+  // R: the last half moves it by less than 2e-4 relative (0.05 nm) and by less than 1 % of its run-in fall
+  EXPECT_LT((r_hi - r_lo) / r_lo, 2e-4);
+  EXPECT_LT(r_hi - r_lo, 0.01 * (first.sigma_contact - last.sigma_contact));
+  EXPECT_LT(last.mu, 0.5 * first.mu);
+  EXPECT_LT(last.asperity_share, 1e-6);
+  // the mechanism: at the smallest gap the cut has come down to the counterface (the film carries the load)
+  const MixedEquilibrium &end = rep.final;
+  std::size_t i_min = 0;
+  for (std::size_t i = 1; i < end.gap.size(); ++i)
+    if (end.gap[i] < end.gap[i_min]) i_min = i;
+  const double reach = end.gap[i_min] - rep.final_state.bore[i_min] - rep.final_state.shaft;   // from the unworn plane
+  const double sigma0 = sys.node_sigma(rep.final_state)[i_min];
+  EXPECT_GT(end.top[i_min], reach - 1e-3 * sigma0);
+  EXPECT_LT(end.top[i_min], reach + 2e-2 * sigma0);
+  // only the summit tops went: the worn depth is a small fraction of sigma, R fell by a few per cent
+  EXPECT_LT(last.h_max, 0.01 * sigma0);
+  EXPECT_LT(last.sigma_contact, first.sigma_contact);
+  EXPECT_GT(last.sigma_contact, 0.95 * first.sigma_contact);
+  std::printf("worn summits: mu %.5g -> %.5g (within 1 %% of the end from t = %.4g s; last half within %.3g); share "
+              "%.3g -> %.3g; R %.5g -> %.5g nm (last half within %.3g); cut - reach at the smallest gap %.3g sigma; "
+              "h_max %.4g nm; %ld steps\n",
+              first.mu, last.mu, t_settled, (mu_hi - mu_lo) / mu_lo, first.asperity_share, last.asperity_share,
+              1e9 * first.sigma_contact, 1e9 * last.sigma_contact, (r_hi - r_lo) / r_lo,
+              (end.top[i_min] - reach) / sigma0, 1e9 * last.h_max, rep.steps);
+}
+
 // Wear bookkeeping: the worn volume (sum of h_i A_i) equals the integral over nodes and time of wear_rate ds.
 TEST(MixedJournalBearing, WornVolumeIsTheIntegratedWearRate)
 {
