@@ -198,6 +198,8 @@ void print_ring_set_up(const LubricatedRingCase &c, const continuum::CycleSample
              p.liner == continuum::LinerRoughness::Law ? "sqrt(2) rq(p, h) (liner runs in like the ring)"
                                                        : fmt::format("sqrt(rq(p, h)^2 + {:g} nm^2)", 1e9 * p.liner_sigma),
              1e9 * first.sigma);
+  if (p.worn_surface == continuum::WornSurface::TruncatedSummits)
+    fmt::print("  worn summits      rq taken at h = 0 and the summits cut at the top the face's worn volume sets\n");
 }
 
 void print_ring_run_in(const LubricatedRingCase &c, const continuum::MixedPistonRing &ring,

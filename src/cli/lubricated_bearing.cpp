@@ -301,9 +301,13 @@ void print_bearing(const LubricatedCase &c, const std::vector<continuum::MixedSa
   fmt::print("  lubricant         viscosity {:g} Pa s, supply {:g} Pa at bore angle {:.4g} rad; speed {}\n", p.viscosity,
              p.supply_pressure, p.groove_angle,
              p.speed_time.empty() ? fmt::format("{:g} m/s", p.speed) : fmt::format("table of {} points", p.speed_time.size()));
-  fmt::print("  asperities        Greenwood-Tripp, eta = {:.4g} 1/m^2, beta = {:g} m, E* = {:.4g} GPa; sigma from the "
-             "law's rq ({} counterface)\n",
-             p.summit_density, p.summit_radius, 1e-9 * p.effective_modulus, p.counterface_rough ? "rough" : "smooth");
+  fmt::print("  asperities        Greenwood-Tripp, eta = {:.4g} 1/m^2, beta = {:g} m, E* = {:.4g} GPa; {} ({} "
+             "counterface)\n",
+             p.summit_density, p.summit_radius, 1e-9 * p.effective_modulus,
+             p.worn_surface == continuum::WornSurface::TruncatedSummits
+                 ? "worn summits: the unworn law's rq, cut at the top the worn volume sets"
+                 : "sigma from the law's rq at the worn depth",
+             p.counterface_rough ? "rough" : "smooth");
   fmt::print("  regime            initial lambda {:.4g} ({}), peak film pressure {:.4g} MPa, peak asperity pressure "
              "{:.4g} MPa\n",
              first.lambda, regime(first.lambda), 1e-6 * peak_film, 1e-6 * peak_asperity);

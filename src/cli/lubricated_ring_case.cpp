@@ -22,7 +22,7 @@ const Schema &schema() {
       {"friction", friction_keys()},
       {"lubrication", {"viscosity", "crank_speed_rpm", "cycles", "inlet", "oil_film_thickness", "nodes",
                        "steps_per_cycle", "liner_roughness", "liner_sigma", "jump_depth_fraction",
-                       "jump_sigma_fraction"}},
+                       "jump_sigma_fraction", "worn_surface"}},
       {"stribeck", {"load", "speed_min", "speed_max", "points"}},
       {"output", {"frames_per_cycle"}},
   };
@@ -89,6 +89,9 @@ void read_ring_lubrication(const CaseReader &reader, LubricatedRingCase &c) {
   if (p.liner == continuum::LinerRoughness::Fixed) p.liner_sigma = reader.positive_at_most("lubrication.liner_sigma", 1e-5);
   else if (reader.has("lubrication.liner_sigma"))
     reader.fail("lubrication.liner_sigma", "only used with lubrication.liner_roughness = \"fixed\"");
+  p.worn_surface = reader.choice("lubrication.worn_surface", {"law_rq", "truncated"}, std::string("law_rq")) == "truncated"
+                       ? continuum::WornSurface::TruncatedSummits
+                       : continuum::WornSurface::LawRq;
   c.run.jump_depth_fraction = reader.positive_at_most("lubrication.jump_depth_fraction", 1.0, 0.5);
   c.run.jump_sigma_fraction = reader.positive_at_most("lubrication.jump_sigma_fraction", 1.0, 0.05);
   // below 1e-3 a mild run-in computes nearly every cycle (1e-300 ran 1e6 cycles one by one)

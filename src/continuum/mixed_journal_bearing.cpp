@@ -100,15 +100,6 @@ const char *to_string(MixedStatus status)
   return "?";
 }
 
-const char *to_string(WornSurface surface)
-{
-  switch (surface) {
-  case WornSurface::LawRq: return "law_rq";
-  case WornSurface::TruncatedSummits: return "truncated";
-  }
-  return "?";
-}
-
 const char *to_string(MixedRunStatus status)
 {
   switch (status) {

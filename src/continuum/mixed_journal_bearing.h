@@ -24,12 +24,10 @@
 #include <vector>
 
 #include "continuum/average_reynolds.h"
+#include "continuum/worn_surface.h"
 #include "coupling/state_law.h"
 
 namespace runin::continuum {
-
-enum class WornSurface { LawRq, TruncatedSummits };
-const char *to_string(WornSurface surface);
 
 struct MixedJournalBearingParameters {
   double radius = 0.0;           // m, R
@@ -53,11 +51,7 @@ struct MixedJournalBearingParameters {
   coupling::OutOfRange policy = coupling::OutOfRange::Archard;
   // Fixed roughness (m) instead of the law's rq (> 0: every node, both surfaces together; for checks).
   double sigma_override = 0.0;
-  // How wear changes the asperity contact (doc/lubricated_journal_bearing.md, "Worn summits"):
-  //   LawRq: Gaussian summits of the law's rq at the node's worn depth;
-  //   TruncatedSummits: the unworn law's summits (rq at h = 0) cut at the top that the node's worn volume sets
-  //     (GreenwoodTripp::top_after_wear of bore + journal depth): wear takes the highest summits first, and no
-  //     summit rises above the cut, so the contact ends once the film is thicker than the cut.
+  // worn summits: the cut follows the bore's plus the journal's worn volume at the node (worn_surface.h)
   WornSurface worn_surface = WornSurface::LawRq;
 
   double speed_at(double t) const;

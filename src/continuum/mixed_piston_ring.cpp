@@ -149,16 +149,26 @@ void MixedPistonRing::update_roughness(const std::vector<double> &pressure) {
   rq_.resize(p_.nodes);
   sigma_.resize(p_.nodes);
   k_.resize(p_.nodes);
+  uncut_sigma_.resize(p_.nodes);
+  top_.assign(p_.nodes, HUGE_VAL);
+  const bool cut = p_.worn_surface == WornSurface::TruncatedSummits;
   const coupling::OutOfRange lookup = policy_ == coupling::OutOfRange::Error ? coupling::OutOfRange::Clamp : policy_;
   for (int i = 0; i < p_.nodes; ++i) {
     // rq at the node's sliding-mean asperity pressure (the lowest grid pressure without contact); its p
-    // dependence is weak (rq(p, 0) 184-199 nm over 1-20 MPa in the steel law)
+    // dependence is weak (rq(p, 0) 184-199 nm over 1-20 MPa in the steel law). Cut summits keep the unworn spread.
     const double p = pressure[i] > 0.0 ? pressure[i] : p_low;
-    rq_[i] = law_->value(coupling::StateField::Rq, p, worn_[i], coupling::Band::Mean, lookup);
+    rq_[i] = law_->value(coupling::StateField::Rq, p, cut ? 0.0 : worn_[i], coupling::Band::Mean, lookup);
     const double liner = p_.liner == LinerRoughness::Law ? rq_[i] : p_.liner_sigma;
     sigma_[i] = std::sqrt(rq_[i] * rq_[i] + liner * liner);
+    uncut_sigma_[i] = sigma_[i];
     const tribo::GreenwoodTripp gt(p_.summits.density, p_.summits.radius, sigma_[i], p_.effective_modulus);
     k_[i] = gt.coefficient() * p_.effective_modulus;
+    if (cut && sigma_[i] > 0.0) {
+      top_[i] = gt.top_after_wear(worn_[i]);
+      const double ratio = top_[i] == HUGE_VAL ? 1.0 : tribo::truncated_rms_ratio(top_[i] / sigma_[i]);
+      rq_[i] *= ratio;
+      sigma_[i] *= ratio;
+    }
   }
   film_rq_ = weighted_rq(pressure);
   film_liner_ = p_.liner == LinerRoughness::Law ? film_rq_ : p_.liner_sigma;
@@ -196,7 +206,23 @@ double MixedPistonRing::weighted_sigma(const std::vector<double> &w) const {
   return s / p_.nodes;
 }
 
-double MixedPistonRing::asperity_pressure(int i, double gap) const { return k_[i] * f52()(gap / sigma_[i]); }
+double MixedPistonRing::asperity_pressure(int i, double gap) const
+{
+  if (top_[i] == HUGE_VAL) return k_[i] * f52()(gap / sigma_[i]);
+  // cut summits stand on the unworn summit plane, worn_i nearer the liner than the face's mean plane
+  const double s = uncut_sigma_[i];
+  return k_[i] * tribo::greenwood_tripp_f_truncated(2.5, (gap - worn_[i]) / s, top_[i] / s);
+}
+
+double MixedPistonRing::wear_scale(int i) const
+{
+  if (top_[i] == HUGE_VAL && p_.worn_surface != WornSurface::TruncatedSummits) return sigma_[i];
+  // the cut moves by dT = dw / (2 pi eta beta sigma F_1(T / sigma)); an uncut start is taken at T = 4 sigma
+  const double s = uncut_sigma_[i];
+  const double t = std::min(top_[i] / s, 4.0);
+  const double scale = 2.0 * M_PI * p_.summits.density * p_.summits.radius * s * s * tribo::greenwood_tripp_f(1.0, t);
+  return std::min(sigma_[i], scale);
+}
 
 // The film at a given h_min. U < 0: solved mirrored (the inlet is always the leading edge x = 0 of RingFace).
 FaceSolution MixedPistonRing::solve(double h_min, double speed, double squeeze, const std::vector<double> *fill_prev,
@@ -564,7 +590,7 @@ RunInReport run_in(MixedPistonRing &system, const RunInSettings &settings, const
         if (report.computed_cycles == 1) report.first = r;
         return report;
       }
-      double limit = settings.jump_sigma_fraction * sigma[i];
+      double limit = settings.jump_sigma_fraction * system.wear_scale(i);
       const auto upper = std::upper_bound(depth.begin(), depth.end(), h[i]);
       if (upper != depth.end())
         limit = std::min(limit, settings.jump_depth_fraction * (*upper - *(upper - 1)));

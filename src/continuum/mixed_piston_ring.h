@@ -18,6 +18,7 @@
 
 #include "continuum/average_reynolds.h"
 #include "continuum/piston_ring.h"   // SliderCrank, GasPressureTable
+#include "continuum/worn_surface.h"
 #include "coupling/state_law.h"
 
 namespace runin::continuum {
@@ -56,6 +57,8 @@ struct MixedRingParameters {
   LinerRoughness liner = LinerRoughness::Law;
   double liner_sigma = 0.0;        // m (Fixed)
   double gamma = 1.0;              // Peklenik number of both surfaces
+  // worn summits: the cut follows the face's worn volume at the node (the liner's wear is spread over the stroke)
+  WornSurface worn_surface = WornSurface::LawRq;
 
   void validate() const;           // throws std::invalid_argument naming the field
   double cycle_angle() const;      // rad: 2 pi, or the gas table's cycle
@@ -150,6 +153,10 @@ class MixedPistonRing {
   double weighted_rq(const std::vector<double> &w) const;
   double weighted_sigma(const std::vector<double> &w) const;
   double film_sigma() const { return film_sigma_; }
+  // worn summits: the cut per node (m above the unworn summit plane; +inf: none), and the worn depth over which
+  // the node's contact changes by about one sigma (sigma; under a cut, the volume that moves it by sigma)
+  const std::vector<double> &summit_top() const { return top_; }
+  double wear_scale(int i) const;
 
   // One transient crank step from `prev` (implicit Euler in h_min, fill carried), at liner speed U and load W'.
   FaceSolution step(const FaceState &prev, double speed, double load, double dt, coupling::RangeUse *use) const;
@@ -174,7 +181,8 @@ class MixedPistonRing {
   MixedRingParameters p_;
   std::shared_ptr<const coupling::StateLaw> law_;
   coupling::OutOfRange policy_;
-  std::vector<double> worn_, profile_, rq_, sigma_, k_;   // k_ = K_i E*
+  std::vector<double> worn_, profile_, rq_, sigma_, k_;   // k_ = K_i E*; rq_, sigma_: after any cut
+  std::vector<double> uncut_sigma_, top_;                 // the summits' sigma before the cut, and the cut
   double film_sigma_ = 0.0, film_rq_ = 0.0, film_liner_ = 0.0;
 };
 

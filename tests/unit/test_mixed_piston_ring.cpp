@@ -284,6 +284,48 @@ TEST(MixedPistonRing, RunInFrictionAndAsperityShareFallUntilTheFilmTakesOver) {
   EXPECT_NEAR(report.booked_wear_volume / ring.worn_volume(), 1.0, 1e-12);
 }
 
+// Worn summits (lubrication.worn_surface = "truncated"): the dead centres' asperities cut the face's highest summits
+// until the film clears the cut. Claim 1 with R constant: share, R and mu fall at every computed cycle, the share
+// ends below 1e-5 of the load, R settles (the second half of the cycles moves it by less than 1e-3), and only
+// summit tops went (worn depth below 1 % of sigma). The first cycle is the Gaussian one.
+TEST(MixedPistonRing, WornSummitsRunInEndsWhereTheFilmClearsTheCut) {
+  const auto law = steel_law();
+  auto p = run_in_parameters(*law);
+  p.worn_surface = continuum::WornSurface::TruncatedSummits;
+  MixedPistonRing ring(p, law), gaussian(run_in_parameters(*law), law);
+  continuum::RunInSettings rs;
+  rs.cycles = 3000000;
+  std::vector<continuum::CycleSample> rows, gaussian_rows;
+  const auto report = continuum::run_in(ring, rs, [&](const continuum::CycleSample &s) { rows.push_back(s); });
+  ASSERT_TRUE(report.ok()) << report.message;
+  continuum::RunInSettings one;
+  one.cycles = 1;
+  continuum::run_in(gaussian, one, [&](const continuum::CycleSample &s) { gaussian_rows.push_back(s); });
+  ASSERT_GE(rows.size(), 5u);
+  EXPECT_EQ(rows.front().mu, gaussian_rows.front().mu);
+  EXPECT_EQ(rows.front().asperity_share, gaussian_rows.front().asperity_share);
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    EXPECT_LE(rows[k].asperity_share, rows[k - 1].asperity_share) << k;
+    EXPECT_LE(rows[k].rq, rows[k - 1].rq) << k;
+    EXPECT_LE(rows[k].mu, rows[k - 1].mu * (1.0 + 1e-9)) << k;
+  }
+  const auto &a = rows.front(), &b = rows.back();
+  double rq_at_half = a.rq;
+  for (const auto &r : rows)
+    if (r.cycle <= rs.cycles / 2) rq_at_half = r.rq;
+  double h_max = 0.0;
+  for (double h : ring.worn_depth()) h_max = std::max(h_max, h);
+  std::printf("worn summits: %ld cycles (%ld computed): mu %.5g -> %.5g, share %.4g -> %.4g, R %.5g -> %.5g nm "
+              "(%.5g at half the cycles), h_max %.4g nm\n",
+              report.cycles, report.computed_cycles, a.mu, b.mu, a.asperity_share, b.asperity_share, 1e9 * a.rq,
+              1e9 * b.rq, 1e9 * rq_at_half, 1e9 * h_max);
+  EXPECT_LT(b.mu, a.mu);
+  EXPECT_LT(b.asperity_share, 1e-5);
+  EXPECT_LT(rq_at_half - b.rq, 1e-3 * b.rq);
+  EXPECT_LT(h_max, 0.01 * a.sigma);
+  EXPECT_NEAR(report.booked_wear_volume / ring.worn_volume(), 1.0, 1e-12);
+}
+
 // A flat face (no wedge) rides on its asperities and wears 300 nm in its first cycle, more than half its sigma:
 // not a gradual run-in at fixed geometry, so the stepper stops with a status instead of jumping.
 TEST(MixedPistonRing, RunInStopsWhenOneCycleWearsMoreThanHalfSigma) {
