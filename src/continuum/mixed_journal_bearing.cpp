@@ -204,16 +204,32 @@ HydroJournalBearing MixedJournalBearingSystem::film_bearing(const MixedWearState
   return b;
 }
 
+MixedJournalBearingSystem::NodeSurface MixedJournalBearingSystem::node_surface(const MixedWearState &state) const
+{
+  NodeSurface s;
+  s.sigma = node_sigma(state);
+  s.top = node_top(state, s.sigma);
+  s.rms = node_rms(s.sigma, s.top);
+  return s;
+}
+
 MixedEquilibrium MixedJournalBearingSystem::evaluate(const MixedWearState &state, double speed, double eccentricity,
                                                      double attitude, const std::vector<double> *initial) const
+{
+  return evaluate(state, node_surface(state), speed, eccentricity, attitude, initial);
+}
+
+MixedEquilibrium MixedJournalBearingSystem::evaluate(const MixedWearState &state, const NodeSurface &surface,
+                                                     double speed, double eccentricity, double attitude,
+                                                     const std::vector<double> *initial) const
 {
   const int n = p_.n_theta;
   MixedEquilibrium e;
   e.eccentricity = eccentricity;
   e.attitude = attitude;
-  const std::vector<double> sigma = node_sigma(state);
-  e.top = node_top(state, sigma);
-  e.sigma = node_rms(sigma, e.top);
+  const std::vector<double> &sigma = surface.sigma;
+  e.top = surface.top;
+  e.sigma = surface.rms;
   const HydroJournalBearing b = film_bearing(state, e.sigma, speed, eccentricity, attitude);
   e.film = solve_journal_bearing(b, nullptr, ReynoldsSolver(), initial);
   e.film_solves = 1;
@@ -316,9 +332,10 @@ namespace {
 // counted; the first failure is kept (the solve stops with it).
 struct BalanceEvaluations {
   BalanceEvaluations(const MixedJournalBearingSystem &s, const MixedWearState &w, double u, std::vector<double> guess)
-      : sys(s), state(w), speed(u), initial(std::move(guess)) {}
+      : sys(s), state(w), surface(s.node_surface(w)), speed(u), initial(std::move(guess)) {}
   const MixedJournalBearingSystem &sys;
   const MixedWearState &state;
+  const MixedJournalBearingSystem::NodeSurface surface;   // one state: its roughness and cut once
   double speed;
   std::vector<double> initial;
   int solves = 0;
@@ -326,7 +343,7 @@ struct BalanceEvaluations {
   bool failed = false;
 
   MixedEquilibrium operator()(double eps, double att) {
-    MixedEquilibrium e = sys.evaluate(state, speed, eps, att, initial.empty() ? nullptr : &initial);
+    MixedEquilibrium e = sys.evaluate(state, surface, speed, eps, att, initial.empty() ? nullptr : &initial);
     ++solves;
     if (e.ok()) initial = pattern(e);
     else if (!failed) failed = true, failure = e;

@@ -122,9 +122,16 @@ class MixedJournalBearingSystem {
   // equilibrium (its eps, attitude and film pattern). rel_tol: on the force balance, relative to W.
   MixedEquilibrium equilibrium(const MixedWearState &state, double speed, const MixedEquilibrium *guess = nullptr,
                                double rel_tol = 1e-8) const;
-  // The film and asperity forces at a given (eps, attitude) (no balance), for checks.
+  // The film and asperity forces at a given (eps, attitude) (no balance), for checks. `surface`: the state's
+  // node_surface, when the caller evaluates one state many times (the balance solve).
   MixedEquilibrium evaluate(const MixedWearState &state, double speed, double eccentricity, double attitude,
                             const std::vector<double> *initial = nullptr) const;
+  struct NodeSurface {
+    std::vector<double> sigma, top, rms;   // before the cut, the cut, after the cut (see node_top, node_rms)
+  };
+  NodeSurface node_surface(const MixedWearState &state) const;
+  MixedEquilibrium evaluate(const MixedWearState &state, const NodeSurface &surface, double speed, double eccentricity,
+                            double attitude, const std::vector<double> *initial = nullptr) const;
   MixedWearRates wear_rates(const MixedWearState &state, const MixedEquilibrium &eq,
                             coupling::RangeUse *use = nullptr) const;
   // Eccentricity at which the smallest gap closes for a displacement toward `attitude`.
