@@ -955,8 +955,18 @@ struct SubModelInfo {
 };
 // The registered sub-models of a kind, in registry order (the index is the compile-time dispatch index).
 const std::vector<SubModelInfo> &registered_sub_models(SubModelKind kind);
+// The kind's registered names in registry order, as messages list them ("hertz, elastic/plastic").
+std::string registered_names(SubModelKind kind);
 // Index of `name` among the kind's sub-models; throws InvalidCoefficient listing the known names.
 int find_sub_model(SubModelKind kind, const std::string &name);
+// The friction laws whose interface strength an interface state sets (SubModelInfo::interface_use), in registry
+// order: the laws of a cell whose friction follows a material file's interface line (runin homogenise); the first
+// that takes it as a shear strength is such a cell's default.
+std::vector<std::string> interface_friction_models();
+std::string default_interface_friction_model();
+// The coefficients the explicit and file forms give friction law `index` (its from_parameters) from `p`.
+struct ContactParameters;
+Coefficients friction_coefficients_from(int index, const ContactParameters &p);
 
 // The sub-models chosen for a contact (indices into the registry) and their coefficient values.
 struct ContactModelChoice {

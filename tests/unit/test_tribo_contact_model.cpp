@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cfenv>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <string>
 
@@ -49,8 +51,38 @@ TEST(ContactModelRegistry, NamesAndUnknownModelsListTheKnownOnes)
     tribo::find_sub_model(SubModelKind::friction, "amontons");
     FAIL() << "an unknown friction model was accepted";
   } catch (const tribo::InvalidCoefficient &e) {
-    EXPECT_EQ(std::string(e.what()), "unknown friction model 'amontons' (known: coulomb, strength, brizmer, junction, junction/film)");
+    // the registry's names in its order (a new row needs no edit here)
+    const auto &friction = tribo::registered_sub_models(SubModelKind::friction);
+    std::string known;
+    for (const auto &info : friction) known += (known.empty() ? "" : ", ") + std::string(info.name);
+    EXPECT_EQ(tribo::registered_names(SubModelKind::friction), known);
+    EXPECT_EQ(std::string(e.what()), "unknown friction model 'amontons' (known: " + known + ")");
   }
+}
+
+// runin homogenise offers a cell the laws an interface state sets (its f or tau_s from the material file's line), by
+// their capability; its default is the first that takes the state as tau_s, which must be the cell deck's own default
+// (inputs/in.rve_rough, `variable friction index ...`): the CLI passes no friction to the deck for it.
+TEST(ContactModelRegistry, InterfaceFrictionModelsFollowTheirCapability)
+{
+  std::vector<std::string> expected;
+  for (const auto &info : tribo::registered_sub_models(SubModelKind::friction))
+    if (info.interface_use != tribo::InterfaceUse::none) expected.push_back(info.name);
+  EXPECT_EQ(tribo::interface_friction_models(), expected);
+  ASSERT_GE(expected.size(), 2u);
+  const std::string fallback = tribo::default_interface_friction_model();
+  EXPECT_EQ(tribo::registered_sub_models(SubModelKind::friction)[tribo::find_sub_model(SubModelKind::friction, fallback)]
+                .interface_use,
+            tribo::InterfaceUse::shear_strength);
+  std::ifstream deck(std::string(RUNIN_SOURCE_DIR) + "/inputs/in.rve_rough");
+  std::string line, deck_default;
+  while (std::getline(deck, line)) {
+    std::istringstream words(line);
+    std::string command, name, style;
+    if (words >> command >> name >> style >> deck_default && command == "variable" && name == "friction") break;
+    deck_default.clear();
+  }
+  EXPECT_EQ(fallback, deck_default) << "the cell deck's default friction differs from the registry's default";
 }
 
 TEST(ContactModelRegistry, WrongCoefficientCountNamesTheExpectedOnes)
