@@ -85,6 +85,45 @@ TEST(ContactModelRegistry, InterfaceFrictionModelsFollowTheirCapability)
   EXPECT_EQ(fallback, deck_default) << "the cell deck's default friction differs from the registry's default";
 }
 
+// The history layout is placed from the slots the models declare (the tangential model's, then the normal model's),
+// and the slots the registry says flip with the body order are what the hosts negate when they see a contact from
+// the other body (the pair's transfer_history, LIGGGHTS's contact history flags): the same contact from j, with its
+// history so transformed, gives the opposite tangential force and the same slip, every digit.
+TEST(ContactModelRegistry, HistoryLayoutFollowsTheDeclaredSlotsAndFlipsWithTheBodies)
+{
+  EXPECT_EQ(tribo::kNormalHistoryOffset, tribo::kTangentialHistoryOffset + tribo::TangentialHistory::history_slots);
+  constexpr int hertz_size = tribo::contact_history_size<0>;
+  using Hertz = std::tuple_element_t<0, tribo::NormalModels>;
+  EXPECT_EQ(hertz_size, tribo::kNormalHistoryOffset + Hertz::history_slots);
+  EXPECT_EQ(tribo::contact_history_size_of(1), tribo::contact_history_size<1>);
+  int flipping = 0;
+  for (int k = 0; k < tribo::CONTACT_HISTORY_SIZE; ++k) flipping += tribo::history_flips_with_bodies(k);
+  EXPECT_EQ(flipping, 3);    // one vector in the tangent plane
+  EXPECT_FALSE(tribo::history_flips_with_bodies(tribo::kSlipHistorySlot));
+
+  const auto choice = choice_of("elastic/plastic", "coulomb");
+  const tribo::ContactModel model(choice, tribo::contact_coefficients(choice, steel()), {});
+  auto geometry = [](double sign) {
+    tribo::ContactGeometry g;
+    g.overlap = 2e-8;
+    g.effective_radius = 2e-5;
+    g.effective_mass = 1e-9;
+    g.normal[2] = sign;
+    g.tangential_velocity[0] = sign * 0.3;
+    g.tangential_velocity[1] = sign * 0.1;
+    return g;
+  };
+  double hi[tribo::CONTACT_HISTORY_SIZE] = {0.0}, hj[tribo::CONTACT_HISTORY_SIZE] = {0.0};
+  for (int step = 0; step < 40; ++step) model.evaluate<1, 0, 0>(geometry(1.0), hi, 1e-9, true);
+  ASSERT_GT(hi[tribo::kSlipHistorySlot], 0.0) << "the contact never slipped";
+  for (int k = 0; k < tribo::CONTACT_HISTORY_SIZE; ++k) hj[k] = tribo::history_flips_with_bodies(k) ? -hi[k] : hi[k];
+  const auto from_i = model.evaluate<1, 0, 0>(geometry(1.0), hi, 1e-9, true);
+  const auto from_j = model.evaluate<1, 0, 0>(geometry(-1.0), hj, 1e-9, true);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(from_j.tangential.force[k], -from_i.tangential.force[k]) << k;
+  EXPECT_GT(from_i.tangential.force_magnitude, 0.0);
+  EXPECT_EQ(hj[tribo::kSlipHistorySlot], hi[tribo::kSlipHistorySlot]);
+}
+
 TEST(ContactModelRegistry, WrongCoefficientCountNamesTheExpectedOnes)
 {
   const auto choice = choice_of("elastic/plastic", "coulomb");
