@@ -931,6 +931,20 @@ template <std::size_t... I> constexpr int most_normal_history_slots(std::index_s
 }    // namespace detail
 constexpr int CONTACT_HISTORY_SIZE =
     kNormalHistoryOffset + detail::most_normal_history_slots(std::make_index_sequence<std::tuple_size_v<NormalModels>>{});
+// Only the tangential and normal kinds have their slots placed; a law of another kind that declared some would have
+// them silently ignored, so the registry refuses it until its kind gets a placement (an offset, the hosts' sizes,
+// the wall's rule for what a contact keeps when it opens: is_normal_history).
+namespace detail {
+template <class Model, class = void> struct DeclaresHistory : std::false_type {};
+template <class Model> struct DeclaresHistory<Model, std::void_t<decltype(Model::history_slots)>> : std::true_type {};
+template <class Tuple> struct NoneDeclaresHistory;
+template <class... Models>
+struct NoneDeclaresHistory<std::tuple<Models...>> : std::bool_constant<(!DeclaresHistory<Models>::value && ...)> {};
+}    // namespace detail
+static_assert(detail::NoneDeclaresHistory<DampingModels>::value && detail::NoneDeclaresHistory<FrictionModels>::value &&
+                  detail::NoneDeclaresHistory<WearModels>::value,
+              "the registry places no history slots for damping, friction or wear laws yet: give the kind a placement "
+              "(contact_model.h, after TangentialHistory) before a law of it declares history_slots");
 
 namespace detail {
 template <std::size_t... I> constexpr const char *first_flattening_normal(std::index_sequence<I...>)
