@@ -68,27 +68,42 @@ struct Config {
 };
 
 // The wall's coefficient keywords other than `file` and `coeff`: groups of the grammar's named values
-// (runin_coeff::set_named), the one place they map. `labels` name the values in messages; `friction`: the friction
-// model the group selects (else none).
+// (runin_coeff::set_named), the one place they map. `labels` name the values in messages; `selects_friction`: the
+// values are a friction law's own, so the group selects that law (group_friction: the registry's first that takes
+// them all).
 struct ValueGroup {
   const char *keyword;
   int count;
   std::array<const char *, 3> names, labels;
-  const char *friction;
+  bool selects_friction;
 };
 inline constexpr ValueGroup kValueGroups[] = {
-    {"elastic", 3, {"E*", "G*", "e"}, {"E*", "G*", "e"}, nullptr},
-    {"friction", 3, {"mu_s", "mu_k", "d_c"}, {"mu_s", "mu_k", "d_c"}, nullptr},
-    {"wear", 3, {"k", "H_i", "H_j"}, {"k", "H_asperity", "H_wall"}, nullptr},
-    {"strength", 2, {"tau_s", "plough"}, {"tau_s", "plough"}, "strength"},
-    {"junction", 2, {"f", "alpha"}, {"f", "alpha"}, "junction"},
-    {"yield", 2, {"S_y", "nu"}, {"S_y", "nu"}, nullptr}};
+    {"elastic", 3, {"E*", "G*", "e"}, {"E*", "G*", "e"}, false},
+    {"friction", 3, {"mu_s", "mu_k", "d_c"}, {"mu_s", "mu_k", "d_c"}, false},
+    {"wear", 3, {"k", "H_i", "H_j"}, {"k", "H_asperity", "H_wall"}, false},
+    {"strength", 2, {"tau_s", "plough"}, {"tau_s", "plough"}, true},
+    {"junction", 2, {"f", "alpha"}, {"f", "alpha"}, true},
+    {"yield", 2, {"S_y", "nu"}, {"S_y", "nu"}, false}};
 
 inline const ValueGroup *value_group(const std::string &keyword)
 {
   for (const ValueGroup &g : kValueGroups)
     if (keyword == g.keyword) return &g;
   return nullptr;
+}
+
+// The registry index of the first friction law whose coefficients include every value of group `g` (-1: none).
+inline int group_friction(const ValueGroup &g)
+{
+  const auto &laws = tribo::registered_sub_models(tribo::SubModelKind::friction);
+  for (std::size_t k = 0; k < laws.size(); ++k) {
+    const auto &names = laws[k].coefficient_names;
+    const auto takes = [&](const char *value) {
+      return std::any_of(names.begin(), names.end(), [&](const char *n) { return std::strcmp(n, value) == 0; });
+    };
+    if (std::all_of(g.names.begin(), g.names.begin() + g.count, takes)) return static_cast<int>(k);
+  }
+  return -1;
 }
 
 using runin_coeff::fail;
@@ -148,9 +163,13 @@ inline Config parse(int narg, char **arg, const Hooks &hooks)
 
     if (group) {
       for (int k = 0; k < group->count; k++) named.emplace_back(group->names[k], number(k, group->labels[k]));
-      if (group->friction)
-        c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
-            tribo::find_sub_model(tribo::SubModelKind::friction, group->friction);
+      if (group->selects_friction) {
+        const int law = group_friction(*group);
+        if (law < 0)    // a registry without the law (a reduced build): say which values found none
+          fail(hooks, fmt::format("fix runin/wall: keyword '{}': no registered friction model takes {} and {}", keyword,
+                                  group->names[0], group->names[1]));
+        c.choice.index[static_cast<int>(tribo::SubModelKind::friction)] = law;
+      }
       have_elastic = have_elastic || keyword == "elastic";
       have_friction = have_friction || keyword == "friction";
       have_wear = have_wear || keyword == "wear";

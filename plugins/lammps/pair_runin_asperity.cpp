@@ -473,15 +473,15 @@ void PairRuninAsperity::eval(int eflag)
   if (!std::isfinite(outcome.force_sum)) runin_lammps::stop_on_non_finite_force(lmp, "pair runin/asperity");
 }
 
-// The history as seen from j (reverse transfer of newton-on contacts): the spring turns, the rest is shared.
+// The history as seen from j (reverse transfer of newton-on contacts): the slots of a vector (the spring) turn, the
+// rest is shared.
 #ifdef RUNIN_TRANSFER_HISTORY_TYPES
 void PairRuninAsperity::transfer_history(double *source, double *target, int, int)
 #else
 void PairRuninAsperity::transfer_history(double *source, double *target)
 #endif
 {
-  for (int k = tribo::HISTORY_SPRING_X; k <= tribo::HISTORY_SPRING_Z; k++) target[k] = -source[k];
-  for (int k = tribo::HISTORY_SLIP; k < history_size; k++) target[k] = source[k];
+  for (int k = 0; k < history_size; k++) target[k] = tribo::history_flips_with_bodies(k) ? -source[k] : source[k];
 }
 
 // The force of the contact of i and j as the force loop computes it, without changing its history: for

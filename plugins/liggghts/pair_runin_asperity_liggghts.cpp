@@ -208,11 +208,11 @@ void PairRuninAsperityLiggghts::init_style()
                                                 "style anew (pair_style none first)", history_size, wanted_history));
   history_size = wanted_history;
   if (!fix_history) {
-    // LIGGGHTS's contact history: values 0-2 (the Mindlin spring) turn sign when the contact is seen from j
+    // LIGGGHTS's contact history: the slots of a vector (the Mindlin spring) turn sign when the contact is seen from j
     std::vector<std::string> words = {kHistoryId, "all", "contacthistory", std::to_string(history_size)};
     for (int k = 0; k < history_size; k++) {
       words.push_back(fmt::format("runin_h{}", k));
-      words.push_back(k <= tribo::HISTORY_SPRING_Z ? "1" : "0");
+      words.push_back(tribo::history_flips_with_bodies(k) ? "1" : "0");
     }
     std::vector<char *> args;
     for (auto &w : words) args.push_back(&w[0]);

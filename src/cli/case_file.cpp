@@ -1,5 +1,6 @@
 #include "cli/case_file.h"
 
+#include "tribo/contact_model.h"
 #include "tribo/material_file.h"
 #include "cli/case_reader.h"
 
@@ -153,9 +154,17 @@ void read_film(const CaseReader &reader, const continuum::SlidingFriction &frict
   const auto &law = *state->law;
   const auto samples = law.metadata().value("samples", nlohmann::json::object());
   const auto contact = samples.value("contact", nlohmann::json::object());
-  if (contact.value("friction", std::string()) != "junction")
-    reader.fail("film", "the state law " + state->path + " was not built with junction friction (samples.contact."
-                        "friction): the film scales the law's junctions by Tabor's closed form");
+  // the film scales a law that takes the interface state's m as its f (the registry's laws of that use)
+  std::string junction_laws;
+  bool junction_law = false;
+  for (const tribo::SubModelInfo &info : tribo::registered_sub_models(tribo::SubModelKind::friction))
+    if (info.interface_use == tribo::InterfaceUse::interface_coefficient) {
+      junction_laws += (junction_laws.empty() ? "" : " or ") + std::string(info.name);
+      junction_law = junction_law || contact.value("friction", std::string()) == info.name;
+    }
+  if (!junction_law)
+    reader.fail("film", "the state law " + state->path + " was not built with " + junction_laws + " friction (samples."
+                        "contact.friction): the film scales the law's junctions by Tabor's closed form");
   if (!contact.contains("f") || !contact["f"].is_number() || !contact.contains("alpha") ||
       !contact["alpha"].is_number() || !law.has(coupling::StateField::ContactFraction))
     reader.fail("film", "the state law " + state->path + " was built before surface films (no samples.contact.f, "

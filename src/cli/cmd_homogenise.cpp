@@ -620,9 +620,16 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
   };
   if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) metadata["samples"]["wear"] = wear;
   if (nlohmann::json contact = c.contact_json(); !contact.is_null()) {
-    // the junction's f and alpha (the deck's file form: alpha at its default), for an element's surface film
-    if (c.friction == "junction")
-      contact.update({{"f", c.interface_factor}, {"alpha", tribo::JunctionFrictionModel::kDefaultAlpha}});
+    // a law that takes the state's m as its f: its coefficients as the deck's file form gives them (f = m, the
+    // others at their defaults), for an element's surface film
+    const tribo::SubModelInfo &law = c.friction_info();
+    if (law.interface_use == tribo::InterfaceUse::interface_coefficient) {
+      tribo::ContactParameters p;
+      p.interface_coefficient = c.interface_factor;
+      const tribo::Coefficients values = tribo::friction_coefficients_from(
+          tribo::find_sub_model(tribo::SubModelKind::friction, c.friction), p);
+      for (std::size_t k = 0; k < values.size(); ++k) contact[law.coefficient_names[k]] = values[k];
+    }
     metadata["samples"]["contact"] = contact;
   }
   if (!c.heights_file.empty()) {

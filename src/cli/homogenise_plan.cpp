@@ -148,10 +148,13 @@ void read_acceleration(const CaseReader &reader, const toml::table &root, Homoge
 // (tau_s = m S_y / sqrt(3) for strength and brizmer, f = m for junction; doc/interface_strength.md). The state is
 // checked here against the file's pair (a missing line names the key); the deck's pair_coeff checks the rest.
 void read_contact(const CaseReader &reader, const tribo::MaterialFile &materials, HomogeniseCase &c) {
-  c.friction = reader.choice("contact.friction", {"strength", "brizmer", "junction"}, c.friction);
+  // the registry's laws that an interface state sets; one that takes it as its f has no other source of f here
+  const std::vector<std::string> laws = tribo::interface_friction_models();
+  c.friction = reader.choice("contact.friction", {laws.begin(), laws.end()}, c.friction);
   c.interface = reader.text("contact.interface", "");
-  if (c.friction == "junction" && c.interface.empty())
-    reader.fail("contact.friction", "junction needs contact.interface (its f is the state's friction factor m)");
+  if (c.friction_info().interface_use == tribo::InterfaceUse::interface_coefficient && c.interface.empty())
+    reader.fail("contact.friction",
+                c.friction + " needs contact.interface (its f is the state's friction factor m)");
   if (c.interface.empty()) return;
   try {
     const int state = tribo::find_interface_state(c.interface);
@@ -277,8 +280,13 @@ std::vector<std::string> expand_launcher(const std::vector<std::string> &words, 
   return out;
 }
 
+const tribo::SubModelInfo &HomogeniseCase::friction_info() const {
+  return tribo::registered_sub_models(
+      tribo::SubModelKind::friction)[tribo::find_sub_model(tribo::SubModelKind::friction, friction)];
+}
+
 nlohmann::json HomogeniseCase::contact_json() const {
-  if (friction == "strength" && interface.empty()) return nullptr;
+  if (friction == tribo::default_interface_friction_model() && interface.empty()) return nullptr;
   nlohmann::json out = {{"friction", friction}};
   if (!interface.empty()) out["interface"] = interface;
   return out;

@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tribo/contact_model.h"
+
 namespace runin::cli {
 
 struct HomogeniseCase {
@@ -39,7 +41,8 @@ struct HomogeniseCase {
   double depth_first = 0.0;           // > 0: the grid is 0, then geometric from depth_first to depth
   long nslide = 100000, nout = 100;
   // [contact]
-  std::string friction = "strength";  // the cell's friction sub-model (the deck's `friction` variable)
+  // the cell's friction sub-model (the deck's `friction` variable; default: the registry's, its default for a cell)
+  std::string friction = tribo::default_interface_friction_model();
   std::string interface;              // interface state of the material file (clean, oxidised, boundary); empty: none
   double interface_factor = 0.0;      // its friction factor m (junction: f = m); 0 without a state
   // [wear]
@@ -61,6 +64,8 @@ struct HomogeniseCase {
   std::vector<std::string> launcher;  // run.launcher's words ({np} kept, a relative program resolved); empty: none
   // the contact table as the law's metadata and the samples' key record it (null at the defaults)
   nlohmann::json contact_json() const;
+  // the registry's entry of `friction` (its capabilities)
+  const tribo::SubModelInfo &friction_info() const;
   // the wear table as the law's metadata and the samples' key record it (null when the case has none)
   nlohmann::json wear_json() const;
 };

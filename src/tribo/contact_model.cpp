@@ -110,16 +110,41 @@ const std::vector<SubModelInfo> &registered_sub_models(SubModelKind kind)
   return table[static_cast<int>(kind)];
 }
 
+std::string registered_names(SubModelKind kind)
+{
+  const auto &models = registered_sub_models(kind);
+  std::string out;
+  for (std::size_t k = 0; k < models.size(); ++k) out += (k ? ", " : "") + std::string(models[k].name);
+  return out;
+}
+
 int find_sub_model(SubModelKind kind, const std::string &name)
 {
   const auto &models = registered_sub_models(kind);
-  std::string known;
-  for (std::size_t k = 0; k < models.size(); ++k) {
+  for (std::size_t k = 0; k < models.size(); ++k)
     if (name == models[k].name) return static_cast<int>(k);
-    known += (k ? ", " : "") + std::string(models[k].name);
-  }
   throw InvalidCoefficient(std::string("unknown ") + sub_model_kind_name(kind) + " model '" + name +
-                           "' (known: " + known + ")");
+                           "' (known: " + registered_names(kind) + ")");
+}
+
+std::vector<std::string> interface_friction_models()
+{
+  std::vector<std::string> out;
+  for (const SubModelInfo &info : registered_sub_models(SubModelKind::friction))
+    if (info.interface_use != InterfaceUse::none) out.push_back(info.name);
+  return out;
+}
+
+std::string default_interface_friction_model()
+{
+  for (const SubModelInfo &info : registered_sub_models(SubModelKind::friction))
+    if (info.interface_use == InterfaceUse::shear_strength) return info.name;
+  return {};
+}
+
+Coefficients friction_coefficients_from(int index, const ContactParameters &p)
+{
+  return from_parameters_chosen<FrictionModels>(index, p);
 }
 
 void check_coefficient_counts(const ContactModelChoice &choice, const ContactCoefficients &coefficients)

@@ -114,26 +114,8 @@ inline ContactGeometry sphere_flat_geometry(double overlap, const double *normal
   return g;
 }
 
-// Per-contact history stored by the host (zero for a new contact): the tangential slots, then the slots of
-// the normal model (NormalModel::history_slots values from kNormalHistoryOffset on: the model sees its own from 0);
-// contact_history_size<NORMAL> values in all, at most CONTACT_HISTORY_SIZE (after the registry). Hertz keeps none,
-// so its contacts carry 4 values (the neighbour-list history of a pair style is copied for every neighbour: its
-// size costs time).
-enum ContactHistorySlot {
-  HISTORY_SPRING_X = 0,
-  HISTORY_SPRING_Y,
-  HISTORY_SPRING_Z,
-  HISTORY_SLIP,           // accumulated slip distance (static -> kinetic weakening)
-  TANGENTIAL_HISTORY_SIZE
-};
-constexpr int kNormalHistoryOffset = TANGENTIAL_HISTORY_SIZE;
-// The normal model's slots belong to the surface of the asperity under a rigid flat rather than to one contact
-// (kept by fix runin/wall when the contact opens).
-constexpr bool is_normal_history(int slot) { return slot >= kNormalHistoryOffset; }
-// Whether a contact of a normal model that flattens the summits (FlattensSummits) has plastic history: such a model
-// keeps its largest interference, > 0 once loaded, in its first slot. Without it, a contact on flattened summits is
-// a reload (the host sets ContactGeometry::flattened_drop).
-inline bool has_plastic_history(const double *history) { return history[kNormalHistoryOffset] > 0.0; }
+// Per-contact history: each model that keeps some declares its slots (`history_slots`, indexed from 0 by the model);
+// the registry places them (the layout after the registry: kTangentialHistoryOffset, kNormalHistoryOffset).
 
 // Output of a normal sub-model.
 struct NormalContact {
@@ -495,6 +477,12 @@ class MindlinTangentialModel {
   static constexpr const char *name = "mindlin";
   static constexpr std::array<const char *, 1> citations{kCiteMindlin};
   static constexpr std::array<const char *, 1> coefficient_names{"G*"};
+  // its history slots: the spring (a vector in the tangent plane, so seen from the other body it changes sign:
+  // `history_vector`, its first slot) and the slip distance accumulated since the contact last stuck, which the
+  // friction laws' static -> kinetic weakening reads (limit(slip, ...)); ContactModel clears it on re-stick
+  enum Slot { SPRING_X = 0, SPRING_Y, SPRING_Z, SLIP, SLOTS };
+  static constexpr int history_slots = SLOTS;
+  static constexpr int history_vector = SPRING_X;
   template <class P> static Coefficients from_parameters(const P &p) { return {p.effective_shear_modulus}; }
   explicit MindlinTangentialModel(const double *c) : g_eff_(c[0])
   {
@@ -899,16 +887,41 @@ class ArchardWearModel {
 #define RUNIN_TEST_FRICTION_MODELS
 #endif
 using NormalModels = std::tuple<HertzNormalModel, ElasticPlasticNormalModel>;
-// History values a contact keeps with the NORMAL-th normal model.
-template <int NORMAL>
-constexpr int contact_history_size = kNormalHistoryOffset + std::tuple_element_t<NORMAL, NormalModels>::history_slots;
-// The same for a choice made at run time.
-int contact_history_size_of(int normal_index);
 using DampingModels = std::tuple<RestitutionDampingModel>;
 using TangentialModels = std::tuple<MindlinTangentialModel>;
 using FrictionModels = std::tuple<CoulombFrictionModel, StrengthFrictionModel, BrizmerFrictionModel,
                                   JunctionFrictionModel, JunctionFilmFrictionModel RUNIN_TEST_FRICTION_MODELS>;
 using WearModels = std::tuple<ArchardWearModel>;
+
+// The per-contact history the host stores (zero for a new contact), placed from the slots the models declare: the
+// tangential model's (one law, not dispatched), then the chosen normal model's; each model sees its own from 0.
+// contact_history_size<NORMAL> values in all, at most CONTACT_HISTORY_SIZE. Hertz keeps none, so its contacts carry
+// the tangential 4 (the neighbour-list history of a pair style is copied for every neighbour: its size costs time).
+using TangentialHistory = std::tuple_element_t<0, TangentialModels>;
+constexpr int kTangentialHistoryOffset = 0;
+constexpr int TANGENTIAL_HISTORY_SIZE = TangentialHistory::history_slots;
+constexpr int kNormalHistoryOffset = kTangentialHistoryOffset + TANGENTIAL_HISTORY_SIZE;
+// The slip distance the friction laws weaken over (the tangential model's slot).
+constexpr int kSlipHistorySlot = kTangentialHistoryOffset + TangentialHistory::SLIP;
+// Whether a slot holds a component of a vector that changes sign with the order of the two bodies (the tangential
+// model's `history_vector`): a host that swaps a contact's bodies negates it and copies the others.
+constexpr bool history_flips_with_bodies(int slot)
+{
+  return slot >= kTangentialHistoryOffset + TangentialHistory::history_vector &&
+         slot < kTangentialHistoryOffset + TangentialHistory::history_vector + 3;
+}
+// The normal model's slots belong to the surface of the asperity under a rigid flat rather than to one contact
+// (kept by fix runin/wall when the contact opens).
+constexpr bool is_normal_history(int slot) { return slot >= kNormalHistoryOffset; }
+// Whether a contact of a normal model that flattens the summits (FlattensSummits) has plastic history: such a model
+// keeps its largest interference, > 0 once loaded, in its first slot. Without it, a contact on flattened summits is
+// a reload (the host sets ContactGeometry::flattened_drop).
+inline bool has_plastic_history(const double *history) { return history[kNormalHistoryOffset] > 0.0; }
+// History values a contact keeps with the NORMAL-th normal model.
+template <int NORMAL>
+constexpr int contact_history_size = kNormalHistoryOffset + std::tuple_element_t<NORMAL, NormalModels>::history_slots;
+// The same for a choice made at run time.
+int contact_history_size_of(int normal_index);
 // The most history values a contact keeps (the largest normal model's).
 namespace detail {
 template <std::size_t... I> constexpr int most_normal_history_slots(std::index_sequence<I...>)
@@ -918,6 +931,20 @@ template <std::size_t... I> constexpr int most_normal_history_slots(std::index_s
 }    // namespace detail
 constexpr int CONTACT_HISTORY_SIZE =
     kNormalHistoryOffset + detail::most_normal_history_slots(std::make_index_sequence<std::tuple_size_v<NormalModels>>{});
+// Only the tangential and normal kinds have their slots placed; a law of another kind that declared some would have
+// them silently ignored, so the registry refuses it until its kind gets a placement (an offset, the hosts' sizes,
+// the wall's rule for what a contact keeps when it opens: is_normal_history).
+namespace detail {
+template <class Model, class = void> struct DeclaresHistory : std::false_type {};
+template <class Model> struct DeclaresHistory<Model, std::void_t<decltype(Model::history_slots)>> : std::true_type {};
+template <class Tuple> struct NoneDeclaresHistory;
+template <class... Models>
+struct NoneDeclaresHistory<std::tuple<Models...>> : std::bool_constant<(!DeclaresHistory<Models>::value && ...)> {};
+}    // namespace detail
+static_assert(detail::NoneDeclaresHistory<DampingModels>::value && detail::NoneDeclaresHistory<FrictionModels>::value &&
+                  detail::NoneDeclaresHistory<WearModels>::value,
+              "the registry places no history slots for damping, friction or wear laws yet: give the kind a placement "
+              "(contact_model.h, after TangentialHistory) before a law of it declares history_slots");
 
 namespace detail {
 template <std::size_t... I> constexpr const char *first_flattening_normal(std::index_sequence<I...>)
@@ -955,8 +982,18 @@ struct SubModelInfo {
 };
 // The registered sub-models of a kind, in registry order (the index is the compile-time dispatch index).
 const std::vector<SubModelInfo> &registered_sub_models(SubModelKind kind);
+// The kind's registered names in registry order, as messages list them ("hertz, elastic/plastic").
+std::string registered_names(SubModelKind kind);
 // Index of `name` among the kind's sub-models; throws InvalidCoefficient listing the known names.
 int find_sub_model(SubModelKind kind, const std::string &name);
+// The friction laws whose interface strength an interface state sets (SubModelInfo::interface_use), in registry
+// order: the laws of a cell whose friction follows a material file's interface line (runin homogenise); the first
+// that takes it as a shear strength is such a cell's default.
+std::vector<std::string> interface_friction_models();
+std::string default_interface_friction_model();
+// The coefficients the explicit and file forms give friction law `index` (its from_parameters) from `p`.
+struct ContactParameters;
+Coefficients friction_coefficients_from(int index, const ContactParameters &p);
 
 // The sub-models chosen for a contact (indices into the registry) and their coefficient values.
 struct ContactModelChoice {
@@ -1068,7 +1105,7 @@ class ContactModel {
     out.normal_force = fn;
 
     const double kt = tangential().stiffness(out.normal.contact_radius);
-    double &slip = history[HISTORY_SLIP];
+    double &slip = history[kSlipHistorySlot];
     using Friction = std::tuple_element_t<FRICTION, FrictionModels>;
     const double limit = [&] {
       if constexpr (HasFilm<Friction>::value)
@@ -1079,8 +1116,8 @@ class ContactModel {
       else
         return std::get<FRICTION>(friction_)->limit(slip, fn, out.normal, g.overlap, out.strength);
     }();
-    out.tangential = mindlin_spring(kt, limit, g.normal, g.tangential_velocity, dt, &history[HISTORY_SPRING_X],
-                                    slip, advance);
+    out.tangential = mindlin_spring(kt, limit, g.normal, g.tangential_velocity, dt,
+                                    &history[kTangentialHistoryOffset + TangentialHistory::SPRING_X], slip, advance);
     if (advance) {
       const double *vt = g.tangential_velocity;
       if (resticks_squared(out.tangential, vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2], restick_speed_))
@@ -1107,8 +1144,9 @@ class ContactModel {
     double fn = out.normal.force + damping().force(out.normal.stiffness, g.effective_mass, g.normal_velocity);
     out.normal_force = fn < 0.0 ? 0.0 : fn;
     const double kt = tangential().stiffness(out.normal.contact_radius);
-    out.tangential = mindlin_spring(kt, HUGE_VAL, g.normal, g.tangential_velocity, 0.0, &copy[HISTORY_SPRING_X],
-                                    copy[HISTORY_SLIP], false);
+    out.tangential = mindlin_spring(kt, HUGE_VAL, g.normal, g.tangential_velocity, 0.0,
+                                    &copy[kTangentialHistoryOffset + TangentialHistory::SPRING_X],
+                                    copy[kSlipHistorySlot], false);
     return out;
   }
   // Elastic energy stored in the normal contact (eflag tallies).

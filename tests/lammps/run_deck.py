@@ -6,8 +6,8 @@
   run_deck.py compare DIR_A DIR_B
   run_deck.py hosts --reference FILE --this FILE [--limit 1e-12]
   run_deck.py roughness --lmp LMP --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
-  run_deck.py expect-error --lmp LMP --deck DECK --workdir DIR --pattern REGEX
-  run_deck.py expect-warning --lmp LMP --deck DECK --workdir DIR --pattern REGEX
+  run_deck.py expect-error --lmp LMP --deck DECK --workdir DIR --pattern REGEX [--registry HELPER]
+  run_deck.py expect-warning --lmp LMP --deck DECK --workdir DIR --pattern REGEX [--registry HELPER]
   run_deck.py materials --lmp LMP --deck DECK --workdir DIR FILE:MAT_A:MAT_B ...
 """
 import argparse
@@ -357,6 +357,27 @@ def roughness(args):
                 fail(f"atom {int(atom['id'])}: c_{name}[2] (wear depth) = {atom[f'c_{name}[2]']!r}, want 0")
             checked += 1
     print(f"ok: {checked} values on {args.np} rank(s) match the closed form, worst global relative error {worst:.3e}")
+
+
+REGISTRY_NAMES = re.compile(r"\{registry:(\w+)\}")
+
+
+def with_registry_names(pattern, registry):
+    """`pattern` with each {registry:KIND} replaced by the registry's names of that kind as the messages list them
+    ("NAME, NAME, ..."), printed by `registry` (the helper runin_registry_names): the expected messages follow
+    the registry, so adding a row needs no test edit."""
+    if not REGISTRY_NAMES.search(pattern):
+        return pattern
+    if not registry:
+        fail(f"the pattern {pattern!r} names the registry but no --registry helper was given")
+    printed = subprocess.run([registry], capture_output=True, text=True, check=True).stdout
+    names = dict(line.split(": ", 1) for line in printed.splitlines())
+
+    def listed(match):
+        if match.group(1) not in names:
+            fail(f"{{registry:{match.group(1)}}}: no such kind (the registry's: {', '.join(names)})")
+        return re.escape(names[match.group(1)])
+    return REGISTRY_NAMES.sub(listed, pattern)
 
 
 def single_error(result, pattern, refused="the deck was accepted"):
@@ -767,6 +788,7 @@ def main():
         p.add_argument("--var", nargs=2, action="append", metavar=("NAME", "VALUE"), help="-var NAME VALUE")
         p.add_argument("--np", type=int, default=1)
         p.add_argument("--mpiexec", default="mpiexec")
+        p.add_argument("--registry", help="runin_registry_names, for {registry:KIND} in the pattern")
         if kind == "expect-error":
             p.add_argument("--host-limitation", choices=sorted(KNOWN_HOST_LIMITATIONS),
                            help="also accept this host's own known failure (KNOWN_HOST_LIMITATIONS) instead")
@@ -801,6 +823,8 @@ def main():
     p.add_argument("--this", required=True, help="the same file written on this host")
     p.add_argument("--limit", type=float, default=1e-12)
     args = parser.parse_args()
+    if getattr(args, "pattern", None):
+        args.pattern = with_registry_names(args.pattern, args.registry)
     {"hosts": compare_hosts, "slider": run_slider, "archard": archard_budget, "compare": compare, "roughness": roughness,
      "expect-error": expect_error, "expect-warning": expect_warning, "materials": materials,
      "gw": run_gw, "gw-servo": run_gw_servo, "wall-bounce": run_wall_bounce, "wall-worn": run_wall_worn, "compare-gw": compare_gw}[args.command](args)

@@ -2,7 +2,7 @@
 """Cross-host tests of the LIGGGHTS host (ctest labels liggghts, lammps; standard library only).
 
   compare_hosts.py scene   --liggghts LG --lmp LMP --mpiexec MPIEXEC --np N --scene NAME --workdir DIR [--set V=X]
-  compare_hosts.py bad     --liggghts LG --workdir DIR --pattern REGEX -- <deck lines>
+  compare_hosts.py bad     --liggghts LG --workdir DIR --pattern REGEX [--registry HELPER] -- <deck lines>
   compare_hosts.py restart --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
   compare_hosts.py warning --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR --pattern REGEX
                            [--count K] [--set V=X]
@@ -13,7 +13,8 @@ with liggghts_runin, both at N ranks with the same variables, and compares every
 row by row: relative difference <= 1e-10 (absolute below 1e-300 for zeros).
 The scene single_pair also checks the pair's single() (compute group/group) against its force loop (compute
 runin/friction [1]) in every row, loading and unloading.
-bad: one deck with a wrong style argument must stop with exit 1 and one ERROR line matching REGEX, no crash.
+bad: one deck with a wrong style argument must stop with exit 1 and one ERROR line matching REGEX, no crash
+({registry:KIND} in REGEX: the registry's names of that kind, printed by HELPER, run_deck.with_registry_names).
 warning: a LIGGGHTS deck runs to the end and prints exactly K (default 1) WARNING lines matching REGEX.
 restart: a LIGGGHTS restart deck (tests/liggghts/decks/in.restart_*) run as mode 0 (N/2 + N/2 steps), mode 1
 (N/2 steps, write_restart) and mode 2 (read_restart, N/2 steps): the final per-atom dumps of modes 0 and 2 and
@@ -29,7 +30,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lammps"))
-from run_deck import mpi_env  # noqa: E402  (the LAMMPS tier's MPI environment: run as root, oversubscribe)
+from run_deck import mpi_env, with_registry_names  # noqa: E402  (the LAMMPS tier's MPI environment; registry names)
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from runin_common import fail  # noqa: E402
 
@@ -288,6 +289,7 @@ def main():
     p.add_argument("--liggghts", required=True)
     p.add_argument("--workdir", required=True)
     p.add_argument("--pattern", required=True)
+    p.add_argument("--registry", help="runin_registry_names, for {registry:KIND} in the pattern")
     p.add_argument("lines", nargs="+")
     for mode in ("restart", "warning"):    # a LIGGGHTS deck at N ranks
         p = sub.add_parser(mode)
@@ -301,6 +303,8 @@ def main():
     p.add_argument("--set", action="append", metavar="NAME=VALUE", help="a deck variable")
     args = parser.parse_args()
     args.liggghts = os.path.abspath(args.liggghts)
+    if args.mode == "bad":
+        args.pattern = with_registry_names(args.pattern, args.registry)
     if getattr(args, "lmp", None):
         args.lmp = os.path.abspath(args.lmp)
     {"scene": scene, "bad": bad, "restart": restart, "warning": warning}[args.mode](args)

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cfenv>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <string>
 
@@ -49,8 +51,77 @@ TEST(ContactModelRegistry, NamesAndUnknownModelsListTheKnownOnes)
     tribo::find_sub_model(SubModelKind::friction, "amontons");
     FAIL() << "an unknown friction model was accepted";
   } catch (const tribo::InvalidCoefficient &e) {
-    EXPECT_EQ(std::string(e.what()), "unknown friction model 'amontons' (known: coulomb, strength, brizmer, junction, junction/film)");
+    // the registry's names in its order (a new row needs no edit here)
+    const auto &friction = tribo::registered_sub_models(SubModelKind::friction);
+    std::string known;
+    for (const auto &info : friction) known += (known.empty() ? "" : ", ") + std::string(info.name);
+    EXPECT_EQ(tribo::registered_names(SubModelKind::friction), known);
+    EXPECT_EQ(std::string(e.what()), "unknown friction model 'amontons' (known: " + known + ")");
   }
+}
+
+// runin homogenise offers a cell the laws an interface state sets (its f or tau_s from the material file's line), by
+// their capability; its default is the first that takes the state as tau_s, which must be the cell deck's own default
+// (inputs/in.rve_rough, `variable friction index ...`): the CLI passes no friction to the deck for it.
+TEST(ContactModelRegistry, InterfaceFrictionModelsFollowTheirCapability)
+{
+  std::vector<std::string> expected;
+  for (const auto &info : tribo::registered_sub_models(SubModelKind::friction))
+    if (info.interface_use != tribo::InterfaceUse::none) expected.push_back(info.name);
+  EXPECT_EQ(tribo::interface_friction_models(), expected);
+  ASSERT_GE(expected.size(), 2u);
+  const std::string fallback = tribo::default_interface_friction_model();
+  EXPECT_EQ(tribo::registered_sub_models(SubModelKind::friction)[tribo::find_sub_model(SubModelKind::friction, fallback)]
+                .interface_use,
+            tribo::InterfaceUse::shear_strength);
+  std::ifstream deck(std::string(RUNIN_SOURCE_DIR) + "/inputs/in.rve_rough");
+  std::string line, deck_default;
+  while (std::getline(deck, line)) {
+    std::istringstream words(line);
+    std::string command, name, style;
+    if (words >> command >> name >> style >> deck_default && command == "variable" && name == "friction") break;
+    deck_default.clear();
+  }
+  EXPECT_EQ(fallback, deck_default) << "the cell deck's default friction differs from the registry's default";
+}
+
+// The history layout is placed from the slots the models declare (the tangential model's, then the normal model's),
+// and the slots the registry says flip with the body order are what the hosts negate when they see a contact from
+// the other body (the pair's transfer_history, LIGGGHTS's contact history flags): the same contact from j, with its
+// history so transformed, gives the opposite tangential force and the same slip, every digit.
+TEST(ContactModelRegistry, HistoryLayoutFollowsTheDeclaredSlotsAndFlipsWithTheBodies)
+{
+  EXPECT_EQ(tribo::kNormalHistoryOffset, tribo::kTangentialHistoryOffset + tribo::TangentialHistory::history_slots);
+  constexpr int hertz_size = tribo::contact_history_size<0>;
+  using Hertz = std::tuple_element_t<0, tribo::NormalModels>;
+  EXPECT_EQ(hertz_size, tribo::kNormalHistoryOffset + Hertz::history_slots);
+  EXPECT_EQ(tribo::contact_history_size_of(1), tribo::contact_history_size<1>);
+  int flipping = 0;
+  for (int k = 0; k < tribo::CONTACT_HISTORY_SIZE; ++k) flipping += tribo::history_flips_with_bodies(k);
+  EXPECT_EQ(flipping, 3);    // one vector in the tangent plane
+  EXPECT_FALSE(tribo::history_flips_with_bodies(tribo::kSlipHistorySlot));
+
+  const auto choice = choice_of("elastic/plastic", "coulomb");
+  const tribo::ContactModel model(choice, tribo::contact_coefficients(choice, steel()), {});
+  auto geometry = [](double sign) {
+    tribo::ContactGeometry g;
+    g.overlap = 2e-8;
+    g.effective_radius = 2e-5;
+    g.effective_mass = 1e-9;
+    g.normal[2] = sign;
+    g.tangential_velocity[0] = sign * 0.3;
+    g.tangential_velocity[1] = sign * 0.1;
+    return g;
+  };
+  double hi[tribo::CONTACT_HISTORY_SIZE] = {0.0}, hj[tribo::CONTACT_HISTORY_SIZE] = {0.0};
+  for (int step = 0; step < 40; ++step) model.evaluate<1, 0, 0>(geometry(1.0), hi, 1e-9, true);
+  ASSERT_GT(hi[tribo::kSlipHistorySlot], 0.0) << "the contact never slipped";
+  for (int k = 0; k < tribo::CONTACT_HISTORY_SIZE; ++k) hj[k] = tribo::history_flips_with_bodies(k) ? -hi[k] : hi[k];
+  const auto from_i = model.evaluate<1, 0, 0>(geometry(1.0), hi, 1e-9, true);
+  const auto from_j = model.evaluate<1, 0, 0>(geometry(-1.0), hj, 1e-9, true);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(from_j.tangential.force[k], -from_i.tangential.force[k]) << k;
+  EXPECT_GT(from_i.tangential.force_magnitude, 0.0);
+  EXPECT_EQ(hj[tribo::kSlipHistorySlot], hi[tribo::kSlipHistorySlot]);
 }
 
 TEST(ContactModelRegistry, WrongCoefficientCountNamesTheExpectedOnes)
