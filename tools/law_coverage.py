@@ -60,7 +60,12 @@ def main():
     if not law_path:
         import tomllib
         with open(a.case, "rb") as f:
-            law_path = tomllib.load(f)["friction"]["law"]
+            named = tomllib.load(f)["friction"]["law"]
+        source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+        tried = [os.path.join(os.path.dirname(a.case), named), named, os.path.join(source, named)]  # as runin
+        law_path = next((p for p in tried if os.path.isfile(p)), None)
+        if not law_path:
+            sys.exit(f"law_coverage: the case's friction.law {named} is not found (tried {', '.join(tried)})")
     with open(law_path) as f:
         law = json.load(f)
     os.makedirs(a.workdir, exist_ok=True)

@@ -52,7 +52,18 @@ def main():
     k = cells["samples"]["wear"]["k"]
     hardness = material_hardness(law_material_file(cells), cells["material"]["rough"])
     problems = []
+    for sample in cells["samples"]["list"]:  # is the direct cell a valid one: how many contacts, ever none?
+        lines = open(os.path.join(cache, sample["key"], "out.dat")).read().splitlines()
+        header = next(line for line in lines if line.startswith("# TimeStep")).split()[1:]
+        if "v_contacts" not in header:
+            continue
+        column = header.index("v_contacts")
+        contacts = [float(line.split()[column]) for line in lines if not line.startswith("#")][1:]  # not the loaded row
+        print(f"p = {sample['pressure'] / 1e6:.3f} MPa, seed {sample['seed']}: contacts {sum(contacts) / len(contacts):.1f} "
+              f"on average, none in {sum(c == 0.0 for c in contacts)} of {len(contacts)} output rows")
     for i, p in enumerate(cells["pressure"]):
+        print(f"p = {p / 1e6:.3f} MPa: rq at h = 0 (no wear yet: the cells' own surfaces) {1e9 * cells['fields']['rq']['mean'][i][0]:.1f} "
+              f"nm, the law's {1e9 * law.value('rq', p_min, 0.0):.1f} nm")
         for field in ("mu_body", "rq"):
             errors = []
             for j, h in enumerate(cells["worn_depth"]):
