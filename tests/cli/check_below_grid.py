@@ -13,7 +13,9 @@ difference holds the two cell sizes, 0.48 and 0.96 mm, as well as the pressure),
 Archard's k p / H within 2 % (the part of the rule that is exact; over 0.15 nm the slope carries 1.4 % of noise). The numbers are printed for doc/rve_cell.md.
 --law and --case: another law and its direct cells below its grid (the shipped dry elements' laws:
 tests/data/state_law/steel_mild_deep_below_grid.toml for inputs/state_law_steel_mild_deep.json, the journal
-bearing's; cast_iron_below_grid.toml for inputs/state_law_cast_iron.json, the piston ring's), the same bounds.
+bearing's; cast_iron_below_grid.toml for inputs/state_law_cast_iron.json, the piston ring's); --rq-bound and --rate-bound
+widen the two bounds for such a case (say why where the test is declared). Each cell's contacts are printed: a
+cell that loses all contact in some output rows is no reference.
 """
 import argparse
 import json
@@ -40,7 +42,10 @@ def main():
     ap.add_argument("--cache-dir", default=None)
     ap.add_argument("--law", default=LAW)
     ap.add_argument("--case", default=CASE)
+    ap.add_argument("--rq-bound", type=float, default=BOUNDS["rq"])
+    ap.add_argument("--rate-bound", type=float, default=RATE_BOUND)
     a = ap.parse_args()
+    bounds = dict(BOUNDS, rq=a.rq_bound)
     os.makedirs(a.workdir, exist_ok=True)
     cells_path = os.path.join(a.workdir, "below_grid.json")
     cache = a.cache_dir or os.path.join(a.workdir, "cache")
@@ -77,13 +82,13 @@ def main():
             print(f"p = {p / 1e6:.3f} MPa, {field}: the law at {p_min / 1e6:g} MPa against the direct cells: RMS "
                   f"{100 * rms:.2f} %, largest {100 * worst:.2f} % over h = {cells['worn_depth'][1]:.3g}-"
                   f"{cells['worn_depth'][-1]:.3g} m")
-            if rms > BOUNDS[field]:
-                problems.append(f"{field} at {p:g} Pa: RMS {100 * rms:.2f} % > {100 * BOUNDS[field]:g} %")
+            if rms > bounds[field]:
+                problems.append(f"{field} at {p:g} Pa: RMS {100 * rms:.2f} % > {100 * bounds[field]:g} %")
         rates = [cells["fields"]["wear_rate"]["mean"][i][j] for j in range(len(cells["worn_depth"]))]
         archard = k * p / hardness
         worst = max(abs(r / archard - 1.0) for r in rates)
         print(f"p = {p / 1e6:.3f} MPa: wear rates within {100 * worst:.3f} % of k p / H")
-        if worst > RATE_BOUND:
+        if worst > a.rate_bound:
             problems.append(f"wear rate at {p:g} Pa off Archard's by {100 * worst:.2f} %")
     if problems:
         fail("; ".join(problems))
