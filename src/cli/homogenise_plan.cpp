@@ -1,5 +1,6 @@
 #include "cli/homogenise_plan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -29,8 +30,8 @@ const Schema &schema() {
       {"wear", {"k", "jump_max_depth", "jump_every", "jump_reference_pressure", "jump_max_change", "jump_rate"}},
       {"run", {"launcher"}},
       {"grid",
-       {"pressure_min", "pressure_max", "pressures", "seeds", "acceleration", "depth", "depth_points", "depth_first", "nslide",
-        "nout"}},
+       {"pressure_min", "pressure_max", "pressures", "extra_pressures", "seeds", "acceleration", "depth", "depth_points",
+        "depth_first", "nslide", "nout"}},
   };
   return s;
 }
@@ -340,6 +341,23 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
     const double t = static_cast<double>(i) / static_cast<double>(pressures - 1);
     c.pressures.push_back(i == pressures - 1 ? c.pressure_max
                                              : c.pressure_min * std::pow(c.pressure_max / c.pressure_min, t));
+  }
+  // Pressures added to the log grid (an element's low-pressure edges): a new pressure_min or count would move
+  // every grid pressure, and so miss every cached sample.
+  if (reader.has("grid.extra_pressures")) {
+    const std::vector<double> extra = reader.numbers("grid.extra_pressures");
+    for (std::size_t i = 0; i < extra.size(); ++i) {
+      if (!(extra[i] > 0.0))
+        reader.fail("grid.extra_pressures", fmt::format("element {}: must be a positive pressure [Pa], got {:g}", i,
+                                                        extra[i]));
+      for (double p : c.pressures)
+        if (std::abs(extra[i] / p - 1.0) < 1e-6)
+          reader.fail("grid.extra_pressures",
+                      fmt::format("element {}: {:.17g} Pa is already on the grid ({:.17g} Pa); remove it", i,
+                                  extra[i], p));
+      c.pressures.push_back(extra[i]);
+    }
+    std::sort(c.pressures.begin(), c.pressures.end());
   }
   const long seeds = reader.positive_integer("grid.seeds", 3, 100);
   for (long j = 0; j < seeds; ++j) c.seeds.push_back(derived_seed(j));

@@ -33,7 +33,7 @@ struct HomogeniseCase {
   double speed = 0.1;
   // [grid]
   double pressure_min = 0.0, pressure_max = 0.0;
-  std::vector<double> pressures;      // log-spaced, pressure_min .. pressure_max
+  std::vector<double> pressures;      // log-spaced, pressure_min .. pressure_max, with grid.extra_pressures, sorted
   std::vector<long> seeds;            // derived: seed_j = 4711 + 7919 j
   std::vector<double> acceleration;   // one per pressure (one number in the case: repeated)
   double depth = 0.0;                 // target mean worn depth of the rough body [m]

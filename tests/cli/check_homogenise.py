@@ -21,6 +21,9 @@ MODE launcher: --launcher names a wrapper script (written in the work directory)
 MODE launcher_alone: the same wrapper named by the case's [run] launcher = "./launch.sh ..." (beside the case
              file, runin started elsewhere) with a deck that fails at one (pressure, seed): the 2-partition run and,
              after it, the sample run alone go through the wrapper (-np 2, then -np 1).
+MODE extra:  grid.extra_pressures = [5e5] added below the cached 2-pressure grid: the rerun takes the 4 grid
+             samples from the cache and runs only the 2 new ones; the law spans 5e5 .. 4e6 Pa, its grid rows equal
+             the first law's to the bit and its new row is the seed mean of the new samples.
 MODE interrupt: SIGTERM to runin homogenise after its first finished sample (shipped cell, 4 samples of 576
              summits, several seconds each): it stops its mpirun (no lmp_runin or mpirun left with the work
              directory in its command line), exits 1 with one line naming the signal, keeps the finished samples;
@@ -153,6 +156,35 @@ def mode_build(args):
     if again["fields"] != doc["fields"] or again["pressure"] != doc["pressure"]:
         fail("the cached rerun wrote different tables")
     print(f"check_homogenise: cold {cold:.2f} s, cached rerun {warm:.3f} s (4 samples of 36 summits)")
+
+
+def mode_extra(args):
+    work, case = setup(args, "extra")
+    law, cache = os.path.join(work, "law.json"), os.path.join(work, "cache")
+    homogenise(args, case, law, cache, args.deck, 0)
+    with open(law) as f:
+        grid_law = json.load(f)
+    with open(case) as f:
+        text = f.read()
+    with open(case, "w") as f:
+        f.write(text.replace("pressures = 2\n", "pressures = 2\nextra_pressures = [5.0e5]\n")
+                .replace("acceleration = [2000.0, 1000.0]", "acceleration = [2000.0, 2000.0, 1000.0]"))
+    extended, _ = homogenise(args, case, law, cache, args.deck, 0)
+    if "6 samples of 36 summits; 4 cached" not in extended.stdout or "2 samples to run" not in extended.stdout:
+        fail("the extended grid did not reuse the 4 cached grid samples and run only the 2 new ones")
+    read = read_law(args, law)
+    with open(law) as f:
+        doc = json.load(f)
+    if read["pressure"] != [5.0e5] + grid_law["pressure"]:
+        fail(f"pressures {read['pressure']}, expected 5e5 then {grid_law['pressure']}")
+    for name, field in grid_law["fields"].items():
+        for band, rows in field.items():
+            if doc["fields"][name][band][1:] != rows:
+                fail(f"{name}.{band}: the grid rows changed with the extra pressure")
+    new = [s for s in doc["samples"]["list"] if s["pressure"] == 5.0e5]
+    if len(new) != 2 or any(s["status"] != "ok" for s in new):
+        fail(f"the extra pressure's samples: {new}")
+    print("check_homogenise: extra pressure 5e5 Pa below the grid, 4 grid samples cached, grid rows unchanged")
 
 
 def failing_deck(args, work, condition):
@@ -324,7 +356,7 @@ def main():
     for option in ("--runin", "--lmp", "--reader", "--deck", "--workdir", "--material"):
         parser.add_argument(option, required=True)
     modes = {"build": mode_build, "fail": mode_fail, "interrupt": mode_interrupt, "launcher": mode_launcher,
-             "launcher_alone": mode_launcher_alone}
+             "launcher_alone": mode_launcher_alone, "extra": mode_extra}
     parser.add_argument("--mode", choices=list(modes), required=True)
     args = parser.parse_args()
     modes[args.mode](args)
