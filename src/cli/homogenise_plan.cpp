@@ -307,29 +307,9 @@ nlohmann::json HomogeniseCase::wear_json() const {
   return out;
 }
 
-HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
-  const toml::table root = parse_toml(path);
-  CaseReader reader(path, root, schema());
-  reader.reject_unknown_keys();
-  HomogeniseCase c;
-  c.path = path;
-  c.title = reader.text("title", "");
-
-  const tribo::MaterialFile materials = read_cell_materials(reader, c);
-
-  // [surface]
-  c.R = reader.positive("surface.R", c.R);
-  c.sigma = reader.positive("surface.sigma", c.sigma);
-  c.spacing = reader.positive("surface.spacing", c.spacing);
-  if (c.sigma >= c.R) reader.fail("surface.sigma", "must be below surface.R (summit heights are a small fraction of R)");
-  c.nside = reader.positive_integer("surface.nside", c.nside, 1000);
-  const std::string heights = reader.text("surface.heights", "");
-  if (!heights.empty()) check_summit_list(reader, find_case_file(reader, "surface.heights", heights), c);
-
-  // [sliding]
-  c.speed = reader.positive("sliding.speed", c.speed);
-
-  // [grid]
+namespace {
+// [grid] pressures: the log grid from pressure_min to pressure_max, plus grid.extra_pressures.
+void read_grid_pressures(const CaseReader &reader, HomogeniseCase &c) {
   c.pressure_min = reader.positive("grid.pressure_min");
   c.pressure_max = reader.positive("grid.pressure_max");
   if (!(c.pressure_max > c.pressure_min))
@@ -359,6 +339,32 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
     }
     std::sort(c.pressures.begin(), c.pressures.end());
   }
+}
+}  // namespace
+
+HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
+  const toml::table root = parse_toml(path);
+  CaseReader reader(path, root, schema());
+  reader.reject_unknown_keys();
+  HomogeniseCase c;
+  c.path = path;
+  c.title = reader.text("title", "");
+
+  const tribo::MaterialFile materials = read_cell_materials(reader, c);
+
+  // [surface]
+  c.R = reader.positive("surface.R", c.R);
+  c.sigma = reader.positive("surface.sigma", c.sigma);
+  c.spacing = reader.positive("surface.spacing", c.spacing);
+  if (c.sigma >= c.R) reader.fail("surface.sigma", "must be below surface.R (summit heights are a small fraction of R)");
+  c.nside = reader.positive_integer("surface.nside", c.nside, 1000);
+  const std::string heights = reader.text("surface.heights", "");
+  if (!heights.empty()) check_summit_list(reader, find_case_file(reader, "surface.heights", heights), c);
+
+  // [sliding]
+  c.speed = reader.positive("sliding.speed", c.speed);
+
+  read_grid_pressures(reader, c);
   const long seeds = reader.positive_integer("grid.seeds", 3, 100);
   for (long j = 0; j < seeds; ++j) c.seeds.push_back(derived_seed(j));
 
