@@ -22,32 +22,24 @@ constexpr int kGeometryColumns = 3;
 }
 
 FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), values(nullptr), changed_here(1), forwarded(0), source(nullptr), nmax_source(0),
+    PeratomColumns(lmp, narg, arg, NCOLUMNS, "runin/wear_state:values"), changed_here(1), forwarded(0), source(nullptr), nmax_source(0),
     send_indices(false), ghosts_wanted(false), exchange_pending(false), exchange_comm(MPI_COMM_NULL), next_swap(0),
     exchange_dirty(false), plan_known(false)
 {
   if (narg > 3)
     runin_liggghts::all(lmp, FLERR, "fix RUNIN/WEAR_STATE: takes no keywords in LIGGGHTS (a start from a given "
                                     "worn state is LAMMPS-only)");
-  create_attribute = 1;
   peratom_flag = 1;
   size_peratom_cols = NCOLUMNS;
   peratom_freq = 1;
   comm_forward = kGeometryColumns;
-  restart_peratom = 1;
-  grow_arrays(atom->nmax);
-  atom->add_callback(0);    // grow
-  atom->add_callback(1);    // restart
-  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+  attach();
 }
 
 FixRuninWearStateLiggghts::~FixRuninWearStateLiggghts()
 {
   if (exchange_pending) finish_exchange(false);
   if (exchange_comm != MPI_COMM_NULL) MPI_Comm_free(&exchange_comm);
-  atom->delete_callback(id, 0);
-  atom->delete_callback(id, 1);
-  memory->destroy(values);
   memory->destroy(source);
 }
 
@@ -264,59 +256,6 @@ void FixRuninWearStateLiggghts::post_run()
   forwarded = 0;
 }
 
-double FixRuninWearStateLiggghts::local_sum(Column column, int groupbit) const
-{
-  double sum = 0.0;
-  const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) sum += values[i][column];
-  return sum;
-}
-
-void FixRuninWearStateLiggghts::grow_arrays(int nmax)
-{
-  memory->grow(values, nmax, NCOLUMNS, "runin/wear_state:values");
-  array_atom = values;
-}
-
-void FixRuninWearStateLiggghts::copy_arrays(int i, int j, int)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[j][c] = values[i][c];
-}
-
-void FixRuninWearStateLiggghts::set_arrays(int i)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[i][c] = 0.0;
-}
-
-int FixRuninWearStateLiggghts::pack_exchange(int i, double *buf)
-{
-  for (int c = 0; c < NCOLUMNS; c++) buf[c] = values[i][c];
-  return NCOLUMNS;
-}
-
-int FixRuninWearStateLiggghts::unpack_exchange(int nlocal, double *buf)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = buf[c];
-  return NCOLUMNS;
-}
-
-int FixRuninWearStateLiggghts::pack_restart(int i, double *buf)
-{
-  buf[0] = NCOLUMNS + 1;    // LIGGGHTS skips per-fix blocks by this count
-  for (int c = 0; c < NCOLUMNS; c++) buf[c + 1] = values[i][c];
-  return NCOLUMNS + 1;
-}
-
-void FixRuninWearStateLiggghts::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = extra[nlocal][m++];
-}
-
 int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int *)
 {
   int m = 0;
@@ -347,9 +286,4 @@ void FixRuninWearStateLiggghts::unpack_comm(int n, int first, double *buf)
     values[i][FLAT_RADIUS] = buf[m++];
     values[i][VOLUME_FLATTENED] = buf[m++];
   }
-}
-
-double FixRuninWearStateLiggghts::memory_usage()
-{
-  return static_cast<double>(atom->nmax) * NCOLUMNS * sizeof(double);
 }
