@@ -159,7 +159,8 @@ class PairStyle : public Pair, public LAMMPS_NS::RuninContactSource {
       contact_settings.transfer_fraction = fraction;
     } else if (keyword == "restick") {
       const double speed = number("restick speed");
-      if (!(speed >= 0.0)) fail(fmt::format("pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value));
+      if (!(speed >= 0.0))
+        fail(fmt::format("pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value));
       contact_settings.restick_speed = speed;
     } else {
       return false;

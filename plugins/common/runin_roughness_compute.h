@@ -31,8 +31,7 @@ template <class Host, class Compute, class WearState> class RoughnessCompute : p
   void init() override
   {
     if (!this->atom->radius_flag)
-      runin_host::all(this->lmp, FLERR, std::string("compute runin/roughness: requires atom attribute radius (") + Host::atom_style +
-                             ")");
+      fail(std::string("compute runin/roughness: requires atom attribute radius (") + Host::atom_style + ")");
     // the wear state is created by pair runin/asperity or fix runin/wall, possibly after this compute
     fix_wear = WearState::find(this->modify);
   }
@@ -62,8 +61,10 @@ template <class Host, class Compute, class WearState> class RoughnessCompute : p
       seen_bearing = true;
       ++iarg;
       while (iarg < narg && runin_host::is_double(arg[iarg])) {
-        const double depth = runin_host::finite_number(this->lmp, FLERR, "compute runin/roughness", "bearing depth", arg[iarg]);
-        if (!(depth >= 0.0)) fail(fmt::format("compute runin/roughness: bearing depth must be >= 0, got {}", arg[iarg]));
+        const double depth =
+            runin_host::finite_number(this->lmp, FLERR, "compute runin/roughness", "bearing depth", arg[iarg]);
+        if (!(depth >= 0.0))
+          fail(fmt::format("compute runin/roughness: bearing depth must be >= 0, got {}", arg[iarg]));
         depths.push_back(depth);
         ++iarg;
       }

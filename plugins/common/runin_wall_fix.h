@@ -138,7 +138,6 @@ class WallFix : public runin_host::PeratomColumns<Fix>, public LAMMPS_NS::RuninC
   double dt = 0.0;
   double smallest_radius = 0.0;    // of the group's asperities (init): the wall may not slide further in one step
   long long past_centre_count = 0;    // asperity evaluations past the summit centre in this run (WARNING)
-  double **&history = this->columns;    // per atom: the contact history with the wall (the column store)
   double totals[NOUTPUT];    // reduced over ranks at every evaluation
   LAMMPS_NS::RuninContactSums sums;
   WearState *fix_wear = nullptr;
@@ -193,8 +192,9 @@ class WallFix : public runin_host::PeratomColumns<Fix>, public LAMMPS_NS::RuninC
     const Atoms<Tag> atoms{atom->x,      atom->v,     atom->f,    atom->omega, atom->torque,
                            atom->radius, atom->rmass, atom->mask, atom->tag,   atom->nlocal};
     StepLocal<Tag> step;
-    runin_wall::contacts<NORMAL, FRICTION>(cfg, motion, atoms, history, fix_wear, this->groupbit, body_groupbit, dt, advance,
-                               sums, step);
+    // this->columns: per atom, the contact history with the wall
+    runin_wall::contacts<NORMAL, FRICTION>(cfg, motion, atoms, this->columns, fix_wear, this->groupbit,
+                                           body_groupbit, dt, advance, sums, step);
     if (advance) host().note_range(this->update->ntimestep, step);
 
     double global[NLOCAL];

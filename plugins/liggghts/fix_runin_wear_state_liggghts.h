@@ -32,10 +32,10 @@ class FixRuninWearStateLiggghts : public runin_host::PeratomColumns<Fix> {
   void post_run() override;
   void pre_exchange() override;
 
-  double **state() { return values; }
+  double **state() { return columns; }
   void refresh_geometry(int i, double radius)
   {
-    if (runin_host::refresh_worn_row<FixRuninWearStateLiggghts>(values[i], radius)) note_change(i);
+    if (runin_host::refresh_worn_row<FixRuninWearStateLiggghts>(columns[i], radius)) note_change(i);
   }
   static double flattened_volume(double radius, double drop, double depth)
   {
@@ -58,7 +58,6 @@ class FixRuninWearStateLiggghts : public runin_host::PeratomColumns<Fix> {
   void unpack_comm(int, int, double *) override;
 
  private:
-  double **&values = columns;    // the column store
   int changed_here;          // an owned summit's geometry changed since the last exchange (this rank)
   long long forwarded;       // exchanges in this run (post_run: reset)
   int *source;               // one rank: the owned atom each ghost is an image of
