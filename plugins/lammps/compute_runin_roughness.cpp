@@ -1,5 +1,4 @@
 #include "compute_runin_roughness.h"
-#include "runin_roughness_core.h"
 #include "runin_errors.h"
 
 #include "fix_runin_wear_state.h"
@@ -28,45 +27,13 @@ static_assert(ComputeRuninRoughness::S_RZ - ComputeRuninRoughness::S_RA == runin
               "the surface entries follow runin_roughness::Entry");
 
 ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), sign(1.0), nmax(0), peratom(nullptr), fix_wear(nullptr), surface_dx(0.0)
+    RoughnessCompute(lmp, narg, arg), nmax(0), peratom(nullptr), surface_dx(0.0)
 {
   int iarg = 3;
-  bool seen_bearing = false;
   while (iarg < narg) {
-    const std::string keyword = arg[iarg];
-    if (keyword == "bearing") {
-      if (seen_bearing) error->all(FLERR, "compute runin/roughness: keyword 'bearing' given twice");
-      seen_bearing = true;
-      ++iarg;
-      while (iarg < narg && utils::is_double(arg[iarg])) {
-        const double depth =
-            runin_lammps::finite_number(lmp, FLERR, "compute runin/roughness", "bearing depth", arg[iarg]);
-        if (!(depth >= 0.0))
-          error->all(FLERR, "compute runin/roughness: bearing depth must be >= 0, got {}", arg[iarg]);
-        depths.push_back(depth);
-        ++iarg;
-      }
-      if (depths.empty())
-        error->all(FLERR, "compute runin/roughness: keyword 'bearing' needs at least one depth, got {}",
-                   iarg < narg ? std::string("'") + arg[iarg] + "'" : std::string("none"));
-    } else if (keyword == "side") {
-      if (iarg + 1 >= narg) error->all(FLERR, "compute runin/roughness: keyword 'side' needs a value");
-      const std::string value = arg[iarg + 1];
-      if (value == "up")
-        sign = 1.0;
-      else if (value == "down")
-        sign = -1.0;
-      else
-        error->all(FLERR, "compute runin/roughness: side must be 'up' or 'down', got '{}'", value);
-      iarg += 2;
-    } else if (keyword == "mean") {
-      if (iarg + 1 >= narg) error->all(FLERR, "compute runin/roughness: keyword 'mean' needs a value");
-      const std::string value = arg[iarg + 1];
-      if (value != "z")
-        error->all(FLERR, "compute runin/roughness: mean must be 'z' (a tilted least-squares plane is not "
-                          "implemented), got '{}'", value);
-      iarg += 2;
-    } else if (keyword == "surface") {
+    if (const int next = parse_keyword(narg, arg, iarg)) {
+      iarg = next;
+    } else if (strcmp(arg[iarg], "surface") == 0) {
       if (iarg + 1 >= narg)
         error->all(FLERR, "compute runin/roughness: keyword 'surface' needs a grid spacing (distance units)");
       surface_dx = runin_lammps::finite_number(lmp, FLERR, "compute runin/roughness", "surface grid spacing",
@@ -76,15 +43,10 @@ ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) 
       iarg += 2;
     } else {
       error->all(FLERR, "compute runin/roughness: unknown keyword '{}' (expected bearing, side, mean or surface)",
-                 keyword);
+                 arg[iarg]);
     }
   }
-
-  vector_flag = 1;
-  size_vector = runin_roughness::NFIXED + static_cast<int>(depths.size()) + (surface_dx > 0.0 ? NSURFACE : 0);
-  extvector = 0;
-  vector = new double[size_vector];
-  for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
+  start_vector(surface_dx > 0.0 ? NSURFACE : 0);
 
   peratom_flag = 1;
   size_peratom_cols = NPERATOM;
@@ -92,16 +54,12 @@ ComputeRuninRoughness::ComputeRuninRoughness(LAMMPS *lmp, int narg, char **arg) 
 
 ComputeRuninRoughness::~ComputeRuninRoughness()
 {
-  delete[] vector;
   memory->destroy(peratom);
 }
 
 void ComputeRuninRoughness::init()
 {
-  if (!atom->radius_flag)
-    error->all(FLERR, "compute runin/roughness: requires atom attribute radius (atom_style sphere)");
-  // the wear state is created by pair runin/asperity or fix runin/wall, possibly after this compute
-  fix_wear = FixRuninWearState::find(modify);
+  RoughnessCompute::init();
   if (surface_dx > 0.0) {
     const double cells = std::ceil(domain->xprd / surface_dx) * std::ceil(domain->yprd / surface_dx);
     if (!(cells <= 1.0e8))
@@ -112,12 +70,12 @@ void ComputeRuninRoughness::init()
 
 double ComputeRuninRoughness::wear_depth(int i) const
 {
-  return fix_wear ? fix_wear->state()[i][FixRuninWearState::WEAR_DEPTH] : 0.0;
+  return wear_column(i, FixRuninWearState::WEAR_DEPTH);
 }
 
 double ComputeRuninRoughness::rise(int i) const
 {
-  return fix_wear ? fix_wear->state()[i][FixRuninWearState::RISE] : 0.0;
+  return wear_column(i, FixRuninWearState::RISE);
 }
 
 double ComputeRuninRoughness::summit(int i) const
@@ -183,18 +141,6 @@ double ComputeRuninRoughness::mean_height()
     }
   MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, world);
   return global[0] > 0.0 ? global[1] / global[0] : 0.0;
-}
-
-void ComputeRuninRoughness::compute_vector()
-{
-  invoked_vector = update->ntimestep;
-  const int *mask = atom->mask;
-  runin_lammps::kernel_call(lmp, FLERR, "compute runin/roughness", true, [&] {
-    runin_roughness::compute_vector(
-        world, atom->nlocal, [&](int i) { return (mask[i] & groupbit) != 0; }, [&](int i) { return summit(i); },
-        depths, vector);
-    if (surface_dx > 0.0) compute_surface(vector + runin_roughness::NFIXED + depths.size());
-  });
 }
 
 void ComputeRuninRoughness::compute_peratom()

@@ -12,12 +12,16 @@ ComputeStyle(runin/roughness,ComputeRuninRoughness);
 #define LMP_COMPUTE_RUNIN_ROUGHNESS_H
 
 #include "compute.h"
-
-#include <vector>
+#include "runin_roughness_compute.h"
 
 namespace LAMMPS_NS {
 
-class ComputeRuninRoughness : public Compute {
+class FixRuninWearState;
+
+// The LAMMPS adaptor of the compute both hosts share (runin_roughness_compute.h), with LAMMPS's own parts: the
+// surface statistics (keyword surface), the per-atom heights, the rise of a body's free surface.
+class ComputeRuninRoughness
+    : public runin_roughness::RoughnessCompute<ComputeRuninRoughness, Compute, FixRuninWearState> {
  public:
   enum PerAtomColumn { HEIGHT = 0, WEAR_DEPTH, NPERATOM };
   // Entries of the surface (height-field) statistics, appended after the bearing ratios (keyword surface).
@@ -27,16 +31,19 @@ class ComputeRuninRoughness : public Compute {
   ComputeRuninRoughness(class LAMMPS *, int, char **);
   ~ComputeRuninRoughness() override;
   void init() override;
-  void compute_vector() override;
   void compute_peratom() override;
   double memory_usage() override;
 
  private:
-  std::vector<double> depths;    // bearing depths below the highest summit
-  double sign;                    // +1: side up (z + r - h); -1: side down (-(z - r + h))
+  friend class runin_roughness::RoughnessCompute<ComputeRuninRoughness, Compute, FixRuninWearState>;
+  static constexpr const char *atom_style = "atom_style sphere";
+  void more_entries(double *out)
+  {
+    if (surface_dx > 0.0) compute_surface(out);
+  }
+
   int nmax;
   double **peratom;               // per-atom summit height above the mean plane, wear depth h
-  class FixRuninWearState *fix_wear;    // nullptr: no wear state, h = 0
 
   double surface_dx;              // grid spacing of the height field (0: no surface statistics)
 

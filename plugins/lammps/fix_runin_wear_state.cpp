@@ -97,15 +97,6 @@ void FixRuninWearState::forward_geometry()
   runin_compat::forward_comm(comm, this);
 }
 
-double FixRuninWearState::local_sum(Column column, int groupbit) const
-{
-  double sum = 0.0;
-  const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) sum += columns[i][column];
-  return sum;
-}
-
 // The geometry columns, in the order the ghosts receive them.
 void FixRuninWearState::choose_forwarded()
 {

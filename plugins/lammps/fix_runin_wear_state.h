@@ -15,7 +15,7 @@ FixStyle(RUNIN/WEAR_STATE,FixRuninWearState);
 #define LMP_FIX_RUNIN_WEAR_STATE_H
 
 #include "runin_peratom_columns.h"
-#include "tribo/asperity_geometry.h"
+#include "wear_state_geometry.h"
 
 namespace LAMMPS_NS {
 
@@ -38,30 +38,14 @@ class FixRuninWearState : public RuninPeratomColumns {
   int setmask() override { return 0; }
 
   double **state() { return columns; }
-  double local_sum(Column column, int groupbit) const;
   // Recompute WEAR_DEPTH and FLAT_RADIUS of owned atom i from its volumes and radius, starting from its
   // current WEAR_DEPTH (per step, after a small change of the volumes).
   void refresh_geometry(int i);
   // The same with the radius given (inline, for the per-step loop of the pair style).
-  void refresh_geometry(int i, double radius)
-  {
-    if (!(radius > 0.0)) {
-      columns[i][WEAR_DEPTH] = columns[i][FLAT_RADIUS] = 0.0;
-      return;
-    }
-    const runin::tribo::WornAsperity worn = runin::tribo::worn_asperity(
-        radius, columns[i][VOLUME_LOST] + columns[i][VOLUME_FLATTENED], columns[i][VOLUME_GAINED],
-        columns[i][WEAR_DEPTH]);
-    columns[i][WEAR_DEPTH] = worn.summit_drop;
-    columns[i][FLAT_RADIUS] = worn.flat_radius;
-  }
-  // Volume of the summit cap pressed flat when the summit of owned atom i (radius R) sinks by a further
-  // depth d from its current drop h: V(h + d) - V(h), V(h) = pi h^2 (3R - h) / 3.
+  void refresh_geometry(int i, double radius) { runin_host::refresh_worn_row<FixRuninWearState>(columns[i], radius); }
   static double flattened_volume(double radius, double drop, double depth)
   {
-    constexpr double kPiThird = 3.14159265358979323846 / 3.0;
-    const double h0 = drop > 0.0 ? drop : 0.0, h1 = h0 + depth;
-    return kPiThird * (h1 * h1 * (3.0 * radius - h1) - h0 * h0 * (3.0 * radius - h0));
+    return runin_host::flattened_volume(radius, drop, depth);
   }
   // The same for every owned atom (at setup: volumes or radii may have been set).
   void refresh_geometry_all();

@@ -42,16 +42,8 @@ using tribo::SubModelKind;
 
 }    // namespace
 
-PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) :
-    Pair(lmp), history_size(tribo::TANGENTIAL_HISTORY_SIZE), dt(0.0), wear_on(true), reshape(true),
-    from_restart(false), sums_requested(false), body_groupbit(0), maxrad(nullptr), fix_history(nullptr),
-    fix_wear(nullptr)
+PairRuninAsperity::PairRuninAsperity(LAMMPS *lmp) : PairStyle(lmp), from_restart(false), fix_history(nullptr)
 {
-  single_enable = 1;
-  // single(): normal force (fforce * del), then the tangential force on i, the contact radius and overlap
-  single_extra = 5;
-  svector = new double[single_extra];
-  no_virial_fdotr_compute = 1;
   finitecutflag = 1;
   restartinfo = 1;
   comm_reverse = 3;    // wear, transfer and flattening increments (set at init to those in use)
@@ -71,42 +63,17 @@ PairRuninAsperity::~PairRuninAsperity()
     modify->delete_fix(kHistoryId);
   else if (runin_compat::fix_by_id(modify, kDummyId))
     modify->delete_fix(kDummyId);
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
-    delete[] maxrad;
-  }
-  delete[] svector;
+  release();
 }
 
-void PairRuninAsperity::allocate()
+// After read_restart the coefficients belong to the restart's sub-models.
+void PairRuninAsperity::accept_sub_model(SubModelKind kind, const std::string &name, int index)
 {
-  allocated = 1;
-  const int n = atom->ntypes;
-  memory->create(setflag, n + 1, n + 1, "pair:setflag");
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++) setflag[i][j] = 0;
-  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  maxrad = new double[n + 1];
-  coeffs.assign((n + 1) * (n + 1), tribo::ContactCoefficients());
-}
-
-tribo::ContactCoefficients &PairRuninAsperity::coeff_of(int itype, int jtype)
-{
-  return coeffs[itype * (atom->ntypes + 1) + jtype];
-}
-
-void PairRuninAsperity::set_sub_model(SubModelKind kind, const std::string &name)
-{
-  const int index =
-      runin_lammps::kernel_call(lmp, FLERR, "pair_style runin/asperity", true,
-                                [&] { return tribo::find_sub_model(kind, name); });
   if (from_restart && index != choice.of(kind))
     error->all(FLERR,
                "pair_style runin/asperity: the restart file's {} model is '{}', the input asks for '{}'; "
                "the restart's coefficients belong to its models",
                tribo::sub_model_kind_name(kind), tribo::registered_sub_models(kind)[choice.of(kind)].name, name);
-  choice.index[static_cast<int>(kind)] = index;
 }
 
 void PairRuninAsperity::settings(int narg, char **arg)
@@ -117,39 +84,10 @@ void PairRuninAsperity::settings(int narg, char **arg)
     if (iarg + 1 >= narg)
       error->all(FLERR, "pair_style runin/asperity: keyword '{}' needs a value", keyword);
     const std::string value = arg[iarg + 1];
-    auto yes_no = [&](const char *what) {
-      return runin_compat::logical(lmp, value, fmt::format("pair_style runin/asperity: {}", what).c_str());
-    };
-    if (keyword == "wear") {
-      wear_on = yes_no("wear");
-    } else if (keyword == "archard") {
-      if (value == "plain")
-        contact_settings.archard_form = tribo::ArchardForm::plain;
-      else if (value == "thesis")
-        contact_settings.archard_form = tribo::ArchardForm::thesis;
-      else
-        error->all(FLERR, "pair_style runin/asperity: archard must be 'plain' or 'thesis', got '{}'", value);
-    } else if (keyword == "reshape") {
-      reshape = yes_no("reshape");
-    } else if (keyword == "rise") {
+    if (setting(keyword, value)) continue;
+    if (keyword == "rise") {
       rise_free = value == "free";
-      rise_on = rise_free || yes_no("rise (yes, no or free)");
-    } else if (keyword == "normal") {
-      set_sub_model(SubModelKind::normal, value);
-    } else if (keyword == "friction") {
-      set_sub_model(SubModelKind::friction, value);
-    } else if (keyword == "transfer") {
-      const double fraction =
-          runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "transfer fraction", value.c_str());
-      if (!(fraction >= 0.0 && fraction <= 1.0))
-        error->all(FLERR, "pair_style runin/asperity: transfer fraction must be in [0, 1], got '{}'", value);
-      contact_settings.transfer_fraction = fraction;
-    } else if (keyword == "restick") {
-      const double speed =
-          runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "restick speed", value.c_str());
-      if (!(speed >= 0.0))
-        error->all(FLERR, "pair_style runin/asperity: restick speed must be >= 0 m/s, got '{}'", value);
-      contact_settings.restick_speed = speed;
+      rise_on = rise_free || runin_compat::logical(lmp, value, "pair_style runin/asperity: rise (yes, no or free)");
     } else if (keyword == "coverage") {
       const double theta =
           runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "coverage", value.c_str());
@@ -187,17 +125,6 @@ bool PairRuninAsperity::film_friction() const
   return tribo::registered_sub_models(SubModelKind::friction)[choice.of(SubModelKind::friction)].has_film;
 }
 
-bool PairRuninAsperity::plastic_normal() const
-{
-  return tribo::registered_sub_models(SubModelKind::normal)[choice.of(SubModelKind::normal)].flattens_summits;
-}
-
-// The per-atom wear state exists from pair_style on, so dumps and computes can name it before a run.
-void PairRuninAsperity::attach_wear_state()
-{
-  if (!fix_wear) fix_wear = FixRuninWearState::find_or_create(modify);
-}
-
 // pair_coeff I J <keyword block | explicit values | file ...> [options]: the one grammar of the contact hosts
 // (plugins/common/coefficient_grammar.h), its checks and messages.
 void PairRuninAsperity::coeff(int narg, char **arg)
@@ -230,13 +157,7 @@ void PairRuninAsperity::init_style()
   runin_compat::request_size_history_list(this, neighbor, instance_me);
   dt = update->dt;
 
-  const int wanted_history = tribo::contact_history_size_of(choice.of(SubModelKind::normal));
-  if (fix_history && wanted_history != history_size)
-    error->all(FLERR,
-               "pair runin/asperity: the normal model changed after the first run ({} history values per "
-               "contact, {} now); define the pair style anew (pair_style none first)",
-               history_size, wanted_history);
-  history_size = wanted_history;
+  size_history(fix_history != nullptr);
   if (!fix_history) {
     auto cmd = fmt::format("{} all NEIGH_HISTORY {}", kHistoryId, history_size);
     fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(kDummyId, cmd, 1));
@@ -269,11 +190,7 @@ void PairRuninAsperity::init_style()
   comm_reverse = 1 + comm_gained + comm_flattened;
   increments.release();
 
-  // contact sums cost a few operations per contact: only when a compute can read them
-  sums_requested = false;
-  for (int i = 0; i < modify->ncompute; i++)
-    if (strcmp(modify->compute[i]->style, "runin/friction") == 0) sums_requested = true;
-  sums = RuninContactSums();
+  request_sums();
 
   // --- timestep guard hook (runin_timestep_guard.h): WARNING/ERROR on dt vs the Rayleigh time ---
   runin_lammps::guard_timestep(lmp, "pair runin/asperity", [this](int i, int j) {
@@ -282,43 +199,6 @@ void PairRuninAsperity::init_style()
     return runin_lammps::PairModuli{model.effective_modulus(), model.effective_shear_modulus()};
   });
   // --- end timestep guard hook ---
-}
-
-double PairRuninAsperity::init_one(int i, int j)
-{
-  if (!setflag[i][j]) {
-    // an unset I,J pair is mixed from I,I and J,J (Pair::init has checked those are set), sub-model by
-    // sub-model: exact for E* and G*, the geometric mean of LAMMPS GRANULAR for interface values, each
-    // body keeping its own wear coefficient and hardness
-    runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair runin/asperity: mixing types {} {}", i, j), true, [&] {
-      coeff_of(i, j) = tribo::mix_coefficients(choice, coeff_of(i, i), coeff_of(j, j));
-      coeff_of(j, i) = tribo::swap_bodies(choice, coeff_of(i, j));
-    });
-  }
-  const int n = atom->ntypes + 1;
-  // wear acceleration (pair_style wear_scale): Archard k of both bodies times the factor, in the models only
-  // (the stored coefficients, and so restart files and mixing, keep the material's k)
-  const auto scaled = [this](tribo::ContactCoefficients c) {
-    auto &wear = c.of(SubModelKind::wear);
-    wear[0] *= wear_scale;    // k_I (coefficients k_I H_I k_J H_J of the archard model)
-    wear[2] *= wear_scale;    // k_J
-    return c;
-  };
-  runin_lammps::kernel_call(lmp, FLERR, fmt::format("pair runin/asperity: types {} {}", i, j), true, [&] {
-    models[i * n + j].emplace(choice, scaled(coeff_of(i, j)), contact_settings);
-    models[j * n + i].emplace(choice, scaled(coeff_of(j, i)), contact_settings);
-  });
-  return maxrad[i] + maxrad[j];
-}
-
-template <int... Index>
-std::array<PairRuninAsperity::EvalFunction, sizeof...(Index)> PairRuninAsperity::eval_table(
-    std::integer_sequence<int, Index...>)
-{
-  constexpr int NFRICTION = std::tuple_size_v<tribo::FrictionModels>;
-  // Index = ((normal * NFRICTION + friction) << NFLAGS) | flags
-  return {{&PairRuninAsperity::eval<(Index >> NFLAGS) / NFRICTION, (Index >> NFLAGS) % NFRICTION, (Index >> 3) & 1,
-                                    (Index >> 2) & 1, (Index >> 1) & 1, Index & 1>...}};
 }
 
 void PairRuninAsperity::compute(int eflag, int vflag)
@@ -343,13 +223,6 @@ void PairRuninAsperity::compute(int eflag, int vflag)
   }
   if (track_wear) increments.reserve(atom->nmax);
 
-  constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
-  static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
-  const int models_index = choice.of(tribo::SubModelKind::normal) * std::tuple_size_v<tribo::FrictionModels> +
-                           choice.of(tribo::SubModelKind::friction);
-  // Archard wear only with wear yes: the increments of a plastic model without wear carry flattening alone
-  const int index = (models_index << NFLAGS) | (wear_on && advance ? 8 : 0) | (worn_geometry ? 4 : 0) |
-                    (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
   if (fix_film) {
     // the film of each type: its own I,I pair's removal distance and growth rate
     const int ntypes = atom->ntypes;
@@ -362,7 +235,7 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       }
     fix_film->begin_step();
   }
-  runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
+  evaluate(eflag, advance, worn_geometry);
   // every summit: removed by its contacts' slip, regrown by its type's growth rate
   if (fix_film && advance) fix_film->end_step(force->newton_pair, film_growth.data());
 
@@ -371,13 +244,7 @@ void PairRuninAsperity::compute(int eflag, int vflag)
     // before the increments are applied (it reads them and the current drops); a pass of its own, since a test
     // inside the application's loop cost about 2 % of a plastic step without the rise
     if (rise_on) raise_free_surfaces();
-    // listed owned atoms: the increments into the state, the geometry refreshed; a summit worn or flattened past
-    // its equator has left the truncated-sphere geometry
-    const int used_up = increments.apply(*fix_wear, atom->radius);
-    if (used_up >= 0)
-      error->one(FLERR, runin_pair::used_up_message(update->ntimestep, atom->tag[used_up],
-                                                    fix_wear->state()[used_up][FixRuninWearState::WEAR_DEPTH],
-                                                    atom->radius[used_up]));
+    apply_increments();
   }
 }
 
@@ -623,16 +490,6 @@ void PairRuninAsperity::read_restart_settings(FILE *fp)
   rise_free = (flags[2] & 4) == 4;
   contact_settings.transfer_fraction = values[0];
   contact_settings.restick_speed = values[1];
-}
-
-void PairRuninAsperity::reset_dt()
-{
-  dt = update->dt;
-}
-
-double PairRuninAsperity::memory_usage()
-{
-  return increments.memory_usage() + static_cast<double>(touching.capacity()) * sizeof(runin_pair::TouchingPair);
 }
 
 double PairRuninAsperity::atom2cut(int i)

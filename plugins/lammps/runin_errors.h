@@ -19,6 +19,18 @@
 
 namespace runin_lammps {
 
+// One ERROR on every rank (the caller's FLERR).
+[[noreturn]] inline void all(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &message)
+{
+  lmp->error->all(file, line, message);
+}
+
+// One ERROR on this rank only (a rank's own atoms or contacts).
+[[noreturn]] inline void one(LAMMPS_NS::LAMMPS *lmp, const char *file, int line, const std::string &message)
+{
+  lmp->error->one(file, line, message);
+}
+
 // Runs `body` and returns its result; an exception from the RunIn kernels (a bad coefficient, a failed
 // calibration) becomes one ERROR "<where>: <what>" instead of std::terminate. `collective`: every rank runs
 // `body` on the same input (parsing, init), so error->all; otherwise (a rank's own contacts) error->one.

@@ -22,32 +22,25 @@ constexpr int kGeometryColumns = 3;
 }
 
 FixRuninWearStateLiggghts::FixRuninWearStateLiggghts(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), values(nullptr), changed_here(1), forwarded(0), source(nullptr), nmax_source(0),
+    PeratomColumns(lmp, narg, arg, NCOLUMNS, "runin/wear_state:values"), changed_here(1), forwarded(0), source(nullptr),
+    nmax_source(0),
     send_indices(false), ghosts_wanted(false), exchange_pending(false), exchange_comm(MPI_COMM_NULL), next_swap(0),
     exchange_dirty(false), plan_known(false)
 {
   if (narg > 3)
     runin_liggghts::all(lmp, FLERR, "fix RUNIN/WEAR_STATE: takes no keywords in LIGGGHTS (a start from a given "
                                     "worn state is LAMMPS-only)");
-  create_attribute = 1;
   peratom_flag = 1;
   size_peratom_cols = NCOLUMNS;
   peratom_freq = 1;
   comm_forward = kGeometryColumns;
-  restart_peratom = 1;
-  grow_arrays(atom->nmax);
-  atom->add_callback(0);    // grow
-  atom->add_callback(1);    // restart
-  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+  attach();
 }
 
 FixRuninWearStateLiggghts::~FixRuninWearStateLiggghts()
 {
   if (exchange_pending) finish_exchange(false);
   if (exchange_comm != MPI_COMM_NULL) MPI_Comm_free(&exchange_comm);
-  atom->delete_callback(id, 0);
-  atom->delete_callback(id, 1);
-  memory->destroy(values);
   memory->destroy(source);
 }
 
@@ -87,17 +80,17 @@ bool FixRuninWearStateLiggghts::forward_geometry(bool always)
     if (reneighboured || full_copy) {
       const int nall = atom->nlocal + atom->nghost;
       for (int j = atom->nlocal; j < nall; j++) {
-        const double *from = values[source[j]];
-        values[j][WEAR_DEPTH] = from[WEAR_DEPTH];
-        values[j][FLAT_RADIUS] = from[FLAT_RADIUS];
-        values[j][VOLUME_FLATTENED] = from[VOLUME_FLATTENED];
+        const double *from = columns[source[j]];
+        columns[j][WEAR_DEPTH] = from[WEAR_DEPTH];
+        columns[j][FLAT_RADIUS] = from[FLAT_RADIUS];
+        columns[j][VOLUME_FLATTENED] = from[VOLUME_FLATTENED];
       }
     } else {
       for (const int i : changed_atoms)
         for (int k = image_start[i]; k < image_start[i + 1]; k++) {
-          values[image_list[k]][WEAR_DEPTH] = values[i][WEAR_DEPTH];
-          values[image_list[k]][FLAT_RADIUS] = values[i][FLAT_RADIUS];
-          values[image_list[k]][VOLUME_FLATTENED] = values[i][VOLUME_FLATTENED];
+          columns[image_list[k]][WEAR_DEPTH] = columns[i][WEAR_DEPTH];
+          columns[image_list[k]][FLAT_RADIUS] = columns[i][FLAT_RADIUS];
+          columns[image_list[k]][VOLUME_FLATTENED] = columns[i][VOLUME_FLATTENED];
         }
     }
     changed_atoms.clear();
@@ -181,9 +174,9 @@ bool FixRuninWearStateLiggghts::advance_exchange(bool wait)
       received[s] = 1;
       if (!exchange_dirty) continue;    // nothing this swap copies changed
       for (int k = 0; k < plan.recvnum[s]; k++) {
-        values[plan.firstrecv[s] + k][WEAR_DEPTH] = values[list[k]][WEAR_DEPTH];
-        values[plan.firstrecv[s] + k][FLAT_RADIUS] = values[list[k]][FLAT_RADIUS];
-        values[plan.firstrecv[s] + k][VOLUME_FLATTENED] = values[list[k]][VOLUME_FLATTENED];
+        columns[plan.firstrecv[s] + k][WEAR_DEPTH] = columns[list[k]][WEAR_DEPTH];
+        columns[plan.firstrecv[s] + k][FLAT_RADIUS] = columns[list[k]][FLAT_RADIUS];
+        columns[plan.firstrecv[s] + k][VOLUME_FLATTENED] = columns[list[k]][VOLUME_FLATTENED];
       }
       continue;
     }
@@ -192,9 +185,9 @@ bool FixRuninWearStateLiggghts::advance_exchange(bool wait)
     int size = 1;
     if (exchange_dirty)
       for (int k = 0; k < plan.sendnum[s]; k++) {
-        out[size++] = values[list[k]][WEAR_DEPTH];
-        out[size++] = values[list[k]][FLAT_RADIUS];
-        out[size++] = values[list[k]][VOLUME_FLATTENED];
+        out[size++] = columns[list[k]][WEAR_DEPTH];
+        out[size++] = columns[list[k]][FLAT_RADIUS];
+        out[size++] = columns[list[k]][VOLUME_FLATTENED];
       }
     MPI_Irecv(recv_buffer[s].data(), static_cast<int>(recv_buffer[s].size()), MPI_DOUBLE, plan.recvproc[s], s,
               exchange_comm, &requests[2 * s + 1]);
@@ -214,9 +207,9 @@ void FixRuninWearStateLiggghts::receive_swap(int s, bool unpack)
   if (!unpack) return;
   const runin_liggghts::SwapPlan plan = runin_liggghts::swap_plan(comm);
   for (int k = 0, m = 1; k < plan.recvnum[s]; k++, m += kGeometryColumns) {
-    values[plan.firstrecv[s] + k][WEAR_DEPTH] = in[m];
-    values[plan.firstrecv[s] + k][FLAT_RADIUS] = in[m + 1];
-    values[plan.firstrecv[s] + k][VOLUME_FLATTENED] = in[m + 2];
+    columns[plan.firstrecv[s] + k][WEAR_DEPTH] = in[m];
+    columns[plan.firstrecv[s] + k][FLAT_RADIUS] = in[m + 1];
+    columns[plan.firstrecv[s] + k][VOLUME_FLATTENED] = in[m + 2];
   }
 }
 
@@ -264,59 +257,6 @@ void FixRuninWearStateLiggghts::post_run()
   forwarded = 0;
 }
 
-double FixRuninWearStateLiggghts::local_sum(Column column, int groupbit) const
-{
-  double sum = 0.0;
-  const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) sum += values[i][column];
-  return sum;
-}
-
-void FixRuninWearStateLiggghts::grow_arrays(int nmax)
-{
-  memory->grow(values, nmax, NCOLUMNS, "runin/wear_state:values");
-  array_atom = values;
-}
-
-void FixRuninWearStateLiggghts::copy_arrays(int i, int j, int)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[j][c] = values[i][c];
-}
-
-void FixRuninWearStateLiggghts::set_arrays(int i)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[i][c] = 0.0;
-}
-
-int FixRuninWearStateLiggghts::pack_exchange(int i, double *buf)
-{
-  for (int c = 0; c < NCOLUMNS; c++) buf[c] = values[i][c];
-  return NCOLUMNS;
-}
-
-int FixRuninWearStateLiggghts::unpack_exchange(int nlocal, double *buf)
-{
-  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = buf[c];
-  return NCOLUMNS;
-}
-
-int FixRuninWearStateLiggghts::pack_restart(int i, double *buf)
-{
-  buf[0] = NCOLUMNS + 1;    // LIGGGHTS skips per-fix blocks by this count
-  for (int c = 0; c < NCOLUMNS; c++) buf[c + 1] = values[i][c];
-  return NCOLUMNS + 1;
-}
-
-void FixRuninWearStateLiggghts::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int c = 0; c < NCOLUMNS; c++) values[nlocal][c] = extra[nlocal][m++];
-}
-
 int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int *)
 {
   int m = 0;
@@ -328,9 +268,9 @@ int FixRuninWearStateLiggghts::pack_comm(int n, int *list, double *buf, int, int
     return kGeometryColumns;
   }
   for (int k = 0; k < n; k++) {
-    buf[m++] = values[list[k]][WEAR_DEPTH];
-    buf[m++] = values[list[k]][FLAT_RADIUS];
-    buf[m++] = values[list[k]][VOLUME_FLATTENED];
+    buf[m++] = columns[list[k]][WEAR_DEPTH];
+    buf[m++] = columns[list[k]][FLAT_RADIUS];
+    buf[m++] = columns[list[k]][VOLUME_FLATTENED];
   }
   return kGeometryColumns;    // LIGGGHTS's Comm::forward_comm_fix takes the count per atom
 }
@@ -343,13 +283,8 @@ void FixRuninWearStateLiggghts::unpack_comm(int n, int first, double *buf)
     return;
   }
   for (int i = first; i < first + n; i++) {
-    values[i][WEAR_DEPTH] = buf[m++];
-    values[i][FLAT_RADIUS] = buf[m++];
-    values[i][VOLUME_FLATTENED] = buf[m++];
+    columns[i][WEAR_DEPTH] = buf[m++];
+    columns[i][FLAT_RADIUS] = buf[m++];
+    columns[i][VOLUME_FLATTENED] = buf[m++];
   }
-}
-
-double FixRuninWearStateLiggghts::memory_usage()
-{
-  return static_cast<double>(atom->nmax) * NCOLUMNS * sizeof(double);
 }

@@ -5,8 +5,11 @@
 #ifndef LMP_FIX_RUNIN_WEAR_STATE_LIGGGHTS_H
 #define LMP_FIX_RUNIN_WEAR_STATE_LIGGGHTS_H
 
+#include "atom.h"
 #include "fix.h"
-#include "tribo/asperity_geometry.h"
+#include "memory.h"
+#include "peratom_columns.h"
+#include "wear_state_geometry.h"
 
 #include <mpi.h>
 
@@ -14,7 +17,7 @@
 
 namespace LAMMPS_NS {
 
-class FixRuninWearStateLiggghts : public Fix {
+class FixRuninWearStateLiggghts : public runin_host::PeratomColumns<Fix> {
  public:
   enum Column { VOLUME_LOST = 0, VOLUME_GAINED, WEAR_DEPTH, FLAT_RADIUS, VOLUME_FLATTENED, NCOLUMNS };
   static constexpr const char *default_id = "RUNIN_WEAR_STATE";
@@ -29,27 +32,14 @@ class FixRuninWearStateLiggghts : public Fix {
   void post_run() override;
   void pre_exchange() override;
 
-  double **state() { return values; }
-  double local_sum(Column column, int groupbit) const;
+  double **state() { return columns; }
   void refresh_geometry(int i, double radius)
   {
-    if (!(radius > 0.0)) {
-      if (values[i][WEAR_DEPTH] != 0.0 || values[i][FLAT_RADIUS] != 0.0) note_change(i);
-      values[i][WEAR_DEPTH] = values[i][FLAT_RADIUS] = 0.0;
-      return;
-    }
-    const runin::tribo::WornAsperity worn = runin::tribo::worn_asperity(
-        radius, values[i][VOLUME_LOST] + values[i][VOLUME_FLATTENED], values[i][VOLUME_GAINED],
-        values[i][WEAR_DEPTH]);
-    if ((worn.summit_drop != values[i][WEAR_DEPTH]) | (worn.flat_radius != values[i][FLAT_RADIUS])) note_change(i);
-    values[i][WEAR_DEPTH] = worn.summit_drop;
-    values[i][FLAT_RADIUS] = worn.flat_radius;
+    if (runin_host::refresh_worn_row<FixRuninWearStateLiggghts>(columns[i], radius)) note_change(i);
   }
   static double flattened_volume(double radius, double drop, double depth)
   {
-    constexpr double kPiThird = 3.14159265358979323846 / 3.0;
-    const double h0 = drop > 0.0 ? drop : 0.0, h1 = h0 + depth;
-    return kPiThird * (h1 * h1 * (3.0 * radius - h1) - h0 * h0 * (3.0 * radius - h0));
+    return runin_host::flattened_volume(radius, drop, depth);
   }
   void refresh_geometry_all();
   // Brings the ghosts' geometry columns up to date for this step's force (called by the pair).
@@ -64,21 +54,10 @@ class FixRuninWearStateLiggghts : public Fix {
   bool forward_geometry(bool always);
   long long forwarded_steps() const { return forwarded; }
 
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return NCOLUMNS + 1; }
-  int maxsize_restart() override { return NCOLUMNS + 1; }
   int pack_comm(int, int *, double *, int, int *) override;
   void unpack_comm(int, int, double *) override;
-  double memory_usage() override;
 
  private:
-  double **values;
   int changed_here;          // an owned summit's geometry changed since the last exchange (this rank)
   long long forwarded;       // exchanges in this run (post_run: reset)
   int *source;               // one rank: the owned atom each ghost is an image of

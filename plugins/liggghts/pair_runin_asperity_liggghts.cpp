@@ -59,64 +59,22 @@ Fix *history_creator(LAMMPS *lmp, int narg, char **arg)
 }    // namespace
 
 PairRuninAsperityLiggghts::PairRuninAsperityLiggghts(LAMMPS *lmp) :
-    Pair(lmp), history_size(tribo::TANGENTIAL_HISTORY_SIZE), dt(0.0), wear_on(true), reshape(true),
-    sums_requested(false), body_groupbit(0), computeflag(0), maxrad(nullptr), fix_history(nullptr),
-    fix_wear(nullptr)
+    PairStyle(lmp), computeflag(0), fix_history(nullptr)
 {
-  single_enable = 1;
-  // single(): normal force (fforce * del), then the tangential force on i, the contact radius and overlap
-  single_extra = 5;
-  svector = new double[single_extra];
-  no_virial_fdotr_compute = 1;
   restartinfo = 0;
 }
 
 PairRuninAsperityLiggghts::~PairRuninAsperityLiggghts()
 {
   if (fix_history && modify->find_fix(kHistoryId) >= 0) modify->delete_fix(kHistoryId);
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
-    delete[] maxrad;
-  }
-  delete[] svector;
+  release();
 }
 
-void PairRuninAsperityLiggghts::allocate()
+void PairRuninAsperityLiggghts::accept_sub_model(SubModelKind kind, const std::string &name, int index)
 {
-  allocated = 1;
-  const int n = atom->ntypes;
-  memory->create(setflag, n + 1, n + 1, "pair:setflag");
-  for (int i = 1; i <= n; i++)
-    for (int j = i; j <= n; j++) setflag[i][j] = 0;
-  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  maxrad = new double[n + 1];
-  coeffs.assign((n + 1) * (n + 1), tribo::ContactCoefficients());
-}
-
-tribo::ContactCoefficients &PairRuninAsperityLiggghts::coeff_of(int itype, int jtype)
-{
-  return coeffs[itype * (atom->ntypes + 1) + jtype];
-}
-
-void PairRuninAsperityLiggghts::set_sub_model(SubModelKind kind, const std::string &name)
-{
-  choice.index[static_cast<int>(kind)] = runin_liggghts::kernel_call(
-      lmp, FLERR, "pair_style runin/asperity", true, [&] { return tribo::find_sub_model(kind, name); });
-  // the film coverage is a per-summit state that only the LAMMPS pair keeps
-  if (kind == SubModelKind::friction && tribo::registered_sub_models(kind)[choice.of(kind)].has_film)
+  if (kind == SubModelKind::friction && tribo::registered_sub_models(kind)[index].has_film)
     error->all(FLERR, ("pair_style runin/asperity: friction '" + name + "' is not supported in LIGGGHTS (the film "
                        "coverage is kept by the LAMMPS pair only); use a friction model without a film").c_str());
-}
-
-bool PairRuninAsperityLiggghts::plastic_normal() const
-{
-  return tribo::registered_sub_models(SubModelKind::normal)[choice.of(SubModelKind::normal)].flattens_summits;
-}
-
-void PairRuninAsperityLiggghts::attach_wear_state()
-{
-  if (!fix_wear) fix_wear = FixRuninWearStateLiggghts::find_or_create(modify);
 }
 
 void PairRuninAsperityLiggghts::settings(int narg, char **arg)
@@ -126,44 +84,10 @@ void PairRuninAsperityLiggghts::settings(int narg, char **arg)
     if (iarg + 1 >= narg)
       runin_liggghts::all(lmp, FLERR, fmt::format("pair_style runin/asperity: keyword '{}' needs a value", keyword));
     const std::string value = arg[iarg + 1];
-    auto yes_no = [&](const char *what) {
-      return runin_liggghts::yes_no(lmp, FLERR, value, fmt::format("pair_style runin/asperity: {}", what));
-    };
-    if (keyword == "wear") {
-      wear_on = yes_no("wear");
-    } else if (keyword == "archard") {
-      if (value == "plain")
-        contact_settings.archard_form = tribo::ArchardForm::plain;
-      else if (value == "thesis")
-        contact_settings.archard_form = tribo::ArchardForm::thesis;
-      else
-        runin_liggghts::all(lmp, FLERR, fmt::format("pair_style runin/asperity: archard must be 'plain' or "
-                                                    "'thesis', got '{}'", value));
-    } else if (keyword == "reshape") {
-      reshape = yes_no("reshape");
-    } else if (keyword == "normal") {
-      set_sub_model(SubModelKind::normal, value);
-    } else if (keyword == "friction") {
-      set_sub_model(SubModelKind::friction, value);
-    } else if (keyword == "transfer") {
-      const double fraction = runin_liggghts::finite_number(lmp, FLERR, "pair_style runin/asperity",
-                                                            "transfer fraction", value.c_str());
-      if (!(fraction >= 0.0 && fraction <= 1.0))
-        runin_liggghts::all(lmp, FLERR, fmt::format("pair_style runin/asperity: transfer fraction must be in "
-                                                    "[0, 1], got '{}'", value));
-      contact_settings.transfer_fraction = fraction;
-    } else if (keyword == "restick") {
-      const double speed = runin_liggghts::finite_number(lmp, FLERR, "pair_style runin/asperity", "restick speed",
-                                                         value.c_str());
-      if (!(speed >= 0.0))
-        runin_liggghts::all(lmp, FLERR, fmt::format("pair_style runin/asperity: restick speed must be >= 0 m/s, "
-                                                    "got '{}'", value));
-      contact_settings.restick_speed = speed;
-    } else {
+    if (!setting(keyword, value))
       runin_liggghts::all(lmp, FLERR,
                           fmt::format("pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, "
                                       "reshape, normal, friction, transfer or restick)", keyword));
-    }
   }
   if ((wear_on || plastic_normal()) && domain->box_exist) attach_wear_state();
 }
@@ -201,12 +125,7 @@ void PairRuninAsperityLiggghts::init_style()
                                     "keeps no ghost contacts; LAMMPS takes either)");
   dt = update->dt;
 
-  const int wanted_history = tribo::contact_history_size_of(choice.of(SubModelKind::normal));
-  if (fix_history && wanted_history != history_size)
-    runin_liggghts::all(lmp, FLERR, fmt::format("pair runin/asperity: the normal model changed after the first "
-                                                "run ({} history values per contact, {} now); define the pair "
-                                                "style anew (pair_style none first)", history_size, wanted_history));
-  history_size = wanted_history;
+  size_history(fix_history != nullptr);
   if (!fix_history) {
     // LIGGGHTS's contact history: the slots of a vector (the Mindlin spring) turn sign when the contact is seen from j
     std::vector<std::string> words = {kHistoryId, "all", "contacthistory", std::to_string(history_size)};
@@ -239,11 +158,7 @@ void PairRuninAsperityLiggghts::init_style()
   models.assign(coeffs.size(), std::nullopt);
 
   increments.release();
-
-  sums_requested = false;
-  for (int i = 0; i < modify->ncompute; i++)
-    if (strcmp(modify->compute[i]->style, "runin/friction") == 0) sums_requested = true;
-  sums = RuninContactSums();
+  request_sums();
 }
 
 void PairRuninAsperityLiggghts::init_list(int id, NeighList *ptr)
@@ -254,46 +169,11 @@ void PairRuninAsperityLiggghts::init_list(int id, NeighList *ptr)
     listgranhistory = ptr;
 }
 
-double PairRuninAsperityLiggghts::init_one(int i, int j)
-{
-  if (!setflag[i][j]) {
-    runin_liggghts::kernel_call(lmp, FLERR, fmt::format("pair runin/asperity: mixing types {} {}", i, j), true, [&] {
-      coeff_of(i, j) = tribo::mix_coefficients(choice, coeff_of(i, i), coeff_of(j, j));
-      coeff_of(j, i) = tribo::swap_bodies(choice, coeff_of(i, j));
-    });
-  }
-  const int n = atom->ntypes + 1;
-  runin_liggghts::kernel_call(lmp, FLERR, fmt::format("pair runin/asperity: types {} {}", i, j), true, [&] {
-    models[i * n + j].emplace(choice, coeff_of(i, j), contact_settings);
-    models[j * n + i].emplace(choice, coeff_of(j, i), contact_settings);
-  });
-  return maxrad[i] + maxrad[j];
-}
-
-void PairRuninAsperityLiggghts::reset_dt()
-{
-  dt = update->dt;
-}
-
 void *PairRuninAsperityLiggghts::extract(const char *name, int &dim)
 {
   dim = 0;
   if (strcmp(name, "computeflag") == 0) return &computeflag;
   return nullptr;
-}
-
-double PairRuninAsperityLiggghts::memory_usage()
-{
-  return increments.memory_usage() + static_cast<double>(touching.capacity()) * sizeof(runin_pair::TouchingPair);
-}
-
-template <int... Index>
-std::array<PairRuninAsperityLiggghts::EvalFunction, sizeof...(Index)> PairRuninAsperityLiggghts::eval_table(
-    std::integer_sequence<int, Index...>)
-{
-  constexpr int NFRICTION = std::tuple_size_v<tribo::FrictionModels>;
-  return {{&PairRuninAsperityLiggghts::eval<(Index >> NFLAGS) / NFRICTION, (Index >> NFLAGS) % NFRICTION,
-                                            (Index >> 3) & 1, (Index >> 2) & 1, (Index >> 1) & 1, Index & 1>...}};
 }
 
 void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
@@ -311,24 +191,9 @@ void PairRuninAsperityLiggghts::compute(int eflag, int vflag)
   if (worn_geometry) fix_wear->forward_geometry(!advance);
   if (track_wear) increments.reserve(atom->nmax);
 
-  constexpr int NMODELS = std::tuple_size_v<tribo::NormalModels> * std::tuple_size_v<tribo::FrictionModels>;
-  static const auto table = eval_table(std::make_integer_sequence<int, (NMODELS << NFLAGS)>());
-  const int models_index = choice.of(SubModelKind::normal) * std::tuple_size_v<tribo::FrictionModels> +
-                           choice.of(SubModelKind::friction);
-  // Archard wear only with wear yes: the increments of a plastic model without wear carry flattening alone
-  const int index = (models_index << NFLAGS) | (wear_on && advance ? 8 : 0) | (worn_geometry ? 4 : 0) |
-                    (sums_requested ? 2 : 0) | (evflag ? 1 : 0);
-  runin_liggghts::kernel_call(lmp, FLERR, "pair runin/asperity", false, [&] { (this->*table[index])(eflag); });
-
-  if (track_wear) {
-    // newton off: every contact of an owned atom was computed here, so its increments are complete
-    const int used_up = increments.apply(*fix_wear, atom->radius);
-    if (used_up >= 0)
-      runin_liggghts::one(lmp, FLERR, runin_pair::used_up_message(
-                                          update->ntimestep, atom->tag[used_up],
-                                          fix_wear->state()[used_up][FixRuninWearStateLiggghts::WEAR_DEPTH],
-                                          atom->radius[used_up]));
-  }
+  evaluate(eflag, advance, worn_geometry);
+  // newton off: every contact of an owned atom was computed here, so its increments are complete
+  if (track_wear) apply_increments();
 }
 
 runin_pair::Atoms<int> PairRuninAsperityLiggghts::loop_atoms() const

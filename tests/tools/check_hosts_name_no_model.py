@@ -17,8 +17,7 @@ REGISTRY = os.path.join(SOURCE, "src", "tribo", "contact_model.h")
 # (file suffix, line substring): a keyword of the host that shares a model's name
 ALLOWED = [
     # pair_style / fix runin/wall keyword 'archard plain|thesis': the Archard form, a host setting (ContactSettings)
-    ("plugins/lammps/pair_runin_asperity.cpp", 'keyword == "archard"'),
-    ("plugins/liggghts/pair_runin_asperity_liggghts.cpp", 'keyword == "archard"'),
+    ("plugins/common/pair_style.h", 'keyword == "archard"'),    # both pairs' pair_style keywords
     ("plugins/common/runin_wall_core.h", 'keyword == "archard"'),
     # friction.out_of_range = "archard" of a state-law case: wear proportional to p outside the law's grid
     ("src/cli/case_file.cpp", 'policy == "archard"'),
