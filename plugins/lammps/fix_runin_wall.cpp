@@ -10,7 +10,6 @@
 #include "error.h"
 #include "modify.h"
 
-#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -42,16 +41,10 @@ void FixRuninWall::init()
 // guard's finite-force fix runs before post_force, so it never sees the wall force.
 void FixRuninWall::guard_timestep()
 {
-  const int ntypes = atom->ntypes;
-  std::vector<int> local(ntypes + 1, 0), in_group(ntypes + 1, 0);
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) local[atom->type[i]] = 1;
-  MPI_Allreduce(local.data(), in_group.data(), ntypes + 1, MPI_INT, MPI_MAX, world);
-  runin_lammps::guard_timestep(lmp, "fix runin/wall", [&](int i, int j) {
-    return i == j && in_group[i]
-               ? runin_lammps::PairModuli{cfg.model->effective_modulus(), cfg.model->effective_shear_modulus()}
-               : runin_lammps::PairModuli{};
-  }, groupbit);
+  runin_lammps::guard_timestep(lmp, "fix runin/wall",
+                               runin_guard::wall_moduli(lmp, groupbit, cfg.model->effective_modulus(),
+                                                        cfg.model->effective_shear_modulus()),
+                               groupbit);
 }
 
 void FixRuninWall::post_run()

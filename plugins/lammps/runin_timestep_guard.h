@@ -15,6 +15,7 @@ FixStyle(RUNIN/FINITE_CHECK,FixRuninFiniteCheck);
 
 #include "fix.h"
 #include "runin_contact_range.h"
+#include "timestep_guard.h"
 
 #include <functional>
 #include <string>
@@ -44,14 +45,12 @@ class FixRuninFiniteCheck : public Fix {
 
 namespace runin_lammps {
 
-struct PairModuli {
-  double effective_modulus = 0.0;          // E* [Pa], 0 if the type pair is not set
-  double effective_shear_modulus = 0.0;    // G* [Pa]
-};
+using PairModuli = runin_guard::PairModuli;
 
-// Compares update->dt with the smallest Rayleigh time of the asperities in contact-capable type pairs
-// (radius and density per atom from radius/rmass, G and nu from the pair's E* and G*): WARNING above
-// TimeStepPolicy::warn_fraction t_R, ERROR above fail_factor t_R. Installs the finite-force check.
+// The shared guard (plugins/common/timestep_guard.h): compares update->dt with the smallest Rayleigh time of the
+// asperities in contact-capable type pairs (radius and density per atom from radius/rmass, G and nu from the pair's
+// E* and G*): WARNING above TimeStepPolicy::warn_fraction t_R, ERROR above fail_factor t_R. Installs the finite-force
+// check.
 // Returns the smallest Rayleigh time (0 if there are no atoms). Also an ERROR (naming the atom) when an atom of
 // `groupbit` would move more than its radius in one step at its current velocity (e.g. 'velocity ... 1e308'):
 // contacts are not resolved in time, and it would fly off before any contact check sees it.

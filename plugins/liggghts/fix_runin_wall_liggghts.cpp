@@ -3,6 +3,7 @@
 #include "fix_runin_wear_state_liggghts.h"
 #include "runin_liggghts_errors.h"
 #include "runin_liggghts_material.h"
+#include "timestep_guard.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -25,6 +26,16 @@ FixRuninWallLiggghts::FixRuninWallLiggghts(LAMMPS *lmp, int narg, char **arg) : 
 void FixRuninWallLiggghts::post_create()
 {
   fix_wear = FixRuninWearStateLiggghts::find_or_create(modify);
+}
+
+// the LAMMPS wall's timestep guard (plugins/common/timestep_guard.h), for the atom types of this fix's group
+void FixRuninWallLiggghts::init()
+{
+  WallFix::init();
+  runin_guard::guard_timestep(lmp, "fix runin/wall",
+                              runin_guard::wall_moduli(lmp, groupbit, cfg.model->effective_modulus(),
+                                                       cfg.model->effective_shear_modulus()),
+                              groupbit);
 }
 
 void FixRuninWallLiggghts::post_run()

@@ -20,6 +20,7 @@ class FixRuninWallLiggghts : public runin_wall::WallFix<FixRuninWallLiggghts, Fi
  public:
   FixRuninWallLiggghts(class LAMMPS *, int, char **);
   void post_create() override;
+  void init() override;
   void post_run() override;
 
  private:

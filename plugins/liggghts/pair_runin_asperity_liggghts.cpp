@@ -5,6 +5,7 @@
 #include "runin_liggghts_errors.h"
 #include "runin_liggghts_material.h"
 #include "runin_liggghts_style_maps.h"
+#include "timestep_guard.h"
 #include "tribo/asperity_geometry.h"
 #include "tribo/contact.h"
 
@@ -159,6 +160,14 @@ void PairRuninAsperityLiggghts::init_style()
 
   increments.release();
   request_sums();
+
+  // the LAMMPS pair's timestep guard (plugins/common/timestep_guard.h): WARNING/ERROR on dt vs the Rayleigh time,
+  // ERROR on an atom moving more than its radius per step
+  runin_guard::guard_timestep(lmp, "pair runin/asperity", [this](int i, int j) {
+    if (!setflag[i][j]) return runin_guard::PairModuli{};
+    const tribo::ContactModel model(choice, coeff_of(i, j), contact_settings);
+    return runin_guard::PairModuli{model.effective_modulus(), model.effective_shear_modulus()};
+  });
 }
 
 void PairRuninAsperityLiggghts::init_list(int id, NeighList *ptr)
