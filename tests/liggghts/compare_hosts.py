@@ -6,6 +6,7 @@
   compare_hosts.py restart --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR
   compare_hosts.py warning --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR --pattern REGEX
                            [--count K] [--set V=X]
+  compare_hosts.py error   --liggghts LG --mpiexec MPIEXEC --np N --deck DECK --workdir DIR --pattern REGEX [--set V=X]
 
 scene: runs the scene's LAMMPS deck (inputs/) with lmp_runin and its LIGGGHTS deck (tests/liggghts/decks/)
 with liggghts_runin, both at N ranks with the same variables, and compares every thermo column both print
@@ -16,6 +17,8 @@ runin/friction [1]) in every row, loading and unloading.
 bad: one deck with a wrong style argument must stop with exit 1 and one ERROR line matching REGEX, no crash
 ({registry:KIND} in REGEX: the registry's names of that kind, printed by HELPER, run_deck.with_registry_names).
 warning: a LIGGGHTS deck runs to the end and prints exactly K (default 1) WARNING lines matching REGEX.
+error: a LIGGGHTS deck at N ranks stops with exit 1 and one ERROR line matching REGEX, no crash, nothing non-finite
+printed before it.
 restart: a LIGGGHTS restart deck (tests/liggghts/decks/in.restart_*) run as mode 0 (N/2 + N/2 steps), mode 1
 (N/2 steps, write_restart) and mode 2 (read_restart, N/2 steps): the final per-atom dumps of modes 0 and 2 and
 the thermo rows of their last run must be identical (bit for bit: every digit of %.17g), and the run must have
@@ -213,6 +216,34 @@ def warning(args):
     print(f"ok: {matching[0]}")
 
 
+def error(args):
+    shutil.rmtree(args.workdir, ignore_errors=True)
+    os.makedirs(args.workdir)
+    os.symlink(os.path.join(SOURCE_DIR, "potentials"), os.path.join(args.workdir, "potentials"))
+    command = [args.liggghts, "-st", "-in", os.path.join(SOURCE_DIR, args.deck), "-log", "none"]
+    for item in args.set or []:
+        name, _, value = item.partition("=")
+        command += ["-var", name, value]
+    if args.np > 1:
+        command = [args.mpiexec, "-np", str(args.np)] + command
+    result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True,
+                            errors="replace", timeout=120)
+    out = result.stdout + result.stderr
+    errors = [line for line in out.splitlines() if line.startswith("ERROR")]
+    if result.returncode != 1:
+        fail(f"{' '.join(command)}: exit code {result.returncode} (expected 1)\n{out[-2000:]}")
+    if len(errors) != 1 or not re.search(args.pattern, errors[0]):
+        fail(f"expected one ERROR line matching '{args.pattern}', got {errors}\n{out[-2000:]}")
+    if re.search(r"Segmentation|signal|core dumped|MPI_ABORT", out):
+        fail(f"crash output:\n{out[-2000:]}")
+    if args.np > 1 and used_ranks(out) != args.np:
+        fail(f"the run did not use {args.np} MPI ranks")
+    printed = [line for line in out.splitlines() if not line.startswith(("ERROR", "WARNING"))]
+    if any(re.search(r"(?<![\w.])[-+]?(nan|inf)(?![\w.])", line, re.I) for line in printed):
+        fail("a non-finite value was printed before the ERROR")
+    print(f"ok: {errors[0]}")
+
+
 def bad(args):
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -291,23 +322,25 @@ def main():
     p.add_argument("--pattern", required=True)
     p.add_argument("--registry", help="runin_registry_names, for {registry:KIND} in the pattern")
     p.add_argument("lines", nargs="+")
-    for mode in ("restart", "warning"):    # a LIGGGHTS deck at N ranks
+    for mode in ("restart", "warning", "error"):    # a LIGGGHTS deck at N ranks
         p = sub.add_parser(mode)
         p.add_argument("--liggghts", required=True)
         p.add_argument("--mpiexec", default="mpiexec")
         p.add_argument("--np", type=int, default=1)
         p.add_argument("--deck", required=True)
         p.add_argument("--workdir", required=True)
-    p.add_argument("--pattern", required=True)
-    p.add_argument("--count", type=int, default=1)
-    p.add_argument("--set", action="append", metavar="NAME=VALUE", help="a deck variable")
+        if mode != "restart":
+            p.add_argument("--pattern", required=True)
+            p.add_argument("--set", action="append", metavar="NAME=VALUE", help="a deck variable")
+        if mode == "warning":
+            p.add_argument("--count", type=int, default=1)
     args = parser.parse_args()
     args.liggghts = os.path.abspath(args.liggghts)
     if args.mode == "bad":
         args.pattern = with_registry_names(args.pattern, args.registry)
     if getattr(args, "lmp", None):
         args.lmp = os.path.abspath(args.lmp)
-    {"scene": scene, "bad": bad, "restart": restart, "warning": warning}[args.mode](args)
+    {"scene": scene, "bad": bad, "restart": restart, "warning": warning, "error": error}[args.mode](args)
 
 
 if __name__ == "__main__":
