@@ -170,6 +170,19 @@ struct HasCrossCheck<Model, Normal, Wear,
 // For a friction law's check_with: refuses a normal law that does not flatten the summits ("friction model '<name>'
 // needs the normal model '<the first registered one that does>'"). Defined after the registry.
 template <class Normal> void require_flattening_normal(const char *friction_name);
+// For a junction law's from_parameters: which contacts are plastic junctions follows from S_y (Tabor's H / 2.8 guess
+// is not taken for it), and the interface coefficient must be given. `yield_keys` and `f_keys` name where each is set.
+template <class P>
+void require_junction_inputs(const P &p, const char *name, const char *yield_keys, const char *f_name,
+                             const char *f_keys)
+{
+  if (p.yield_from_hardness)
+    throw InvalidCoefficient(std::string("S_y: friction model '") + name +
+                             "' needs the yield strength of the softer body, not Tabor's H / 2.8 (" + yield_keys + ")");
+  if (std::isnan(p.interface_coefficient))
+    throw InvalidCoefficient(std::string("f: friction model '") + name + "' needs the " + f_name + " f, 0 <= f < 1 (" +
+                             f_keys + ")");
+}
 // For a friction law's check_with: a film at the interface cannot shear harder than the bulk under it.
 inline void check_shear_strength_below_hardness(double shear_strength, double softer_hardness)
 {
@@ -649,14 +662,10 @@ class JunctionFrictionModel {
   static constexpr InterfaceUse interface_use = InterfaceUse::interface_coefficient;
   template <class P> static Coefficients from_parameters(const P &p)
   {
-    // which contacts are plastic junctions follows from S_y: Tabor's H / 2.8 guess is not taken for it
-    if (p.yield_from_hardness)
-      throw InvalidCoefficient("S_y: friction model 'junction' needs the yield strength of the softer body, not "
-                               "Tabor's H / 2.8 (pair_coeff keyword 'S_y X', fix runin/wall keyword 'yield', or "
-                               "the material's 6th value in a coefficient file)");
-    if (std::isnan(p.interface_coefficient))
-      throw InvalidCoefficient("f: friction model 'junction' needs the interface coefficient f, 0 <= f < 1 "
-                               "(pair_coeff keyword 'f X', fix runin/wall keyword 'junction f alpha')");
+    require_junction_inputs(p, name,
+                            "pair_coeff keyword 'S_y X', fix runin/wall keyword 'yield', or the material's 6th value "
+                            "in a coefficient file",
+                            "interface coefficient", "pair_coeff keyword 'f X', fix runin/wall keyword 'junction f alpha'");
     return {p.interface_coefficient, p.junction_alpha};
   }
   // junction growth needs the plastic history and mean pressure of a flattening normal model
@@ -733,13 +742,8 @@ class JunctionFilmFrictionModel {
   static constexpr std::array<const char *, 5> coefficient_names{"f_clean", "f_film", "alpha", "s_r", "k_g"};
   template <class P> static Coefficients from_parameters(const P &p)
   {
-    if (p.yield_from_hardness)
-      throw InvalidCoefficient("S_y: friction model 'junction/film' needs the yield strength of the softer body, "
-                               "not Tabor's H / 2.8 (pair_coeff keyword 'S_y X' or the material's 6th value in a "
-                               "coefficient file)");
-    if (std::isnan(p.interface_coefficient))
-      throw InvalidCoefficient("f: friction model 'junction/film' needs the clean interface coefficient f, "
-                               "0 <= f < 1 (pair_coeff keyword 'f X')");
+    require_junction_inputs(p, name, "pair_coeff keyword 'S_y X' or the material's 6th value in a coefficient file",
+                            "clean interface coefficient", "pair_coeff keyword 'f X'");
     if (std::isnan(p.film_interface_coefficient))
       throw InvalidCoefficient("f_film: friction model 'junction/film' needs the film's interface coefficient, "
                                "0 <= f_film < 1 (pair_coeff keyword 'f_film X')");
