@@ -229,19 +229,25 @@ def error(args):
     result = subprocess.run(command, cwd=args.workdir, env=mpi_env(), capture_output=True, text=True,
                             errors="replace", timeout=120)
     out = result.stdout + result.stderr
-    errors = [line for line in out.splitlines() if line.startswith("ERROR")]
-    if result.returncode != 1:
-        fail(f"{' '.join(command)}: exit code {result.returncode} (expected 1)\n{out[-2000:]}")
-    if len(errors) != 1 or not re.search(args.pattern, errors[0]):
-        fail(f"expected one ERROR line matching '{args.pattern}', got {errors}\n{out[-2000:]}")
-    if re.search(r"Segmentation|signal|core dumped|MPI_ABORT", out):
-        fail(f"crash output:\n{out[-2000:]}")
+    error = one_error(result, out, args.pattern, f"{' '.join(command)}: ")
     if args.np > 1 and used_ranks(out) != args.np:
         fail(f"the run did not use {args.np} MPI ranks")
     printed = [line for line in out.splitlines() if not line.startswith(("ERROR", "WARNING"))]
     if any(re.search(r"(?<![\w.])[-+]?(nan|inf)(?![\w.])", line, re.I) for line in printed):
         fail("a non-finite value was printed before the ERROR")
-    print(f"ok: {errors[0]}")
+    print(f"ok: {error}")
+
+
+def one_error(result, out, pattern, prefix=""):
+    """A run that must stop with exit 1, exactly one ERROR line matching `pattern` and no crash: that line."""
+    errors = [line for line in out.splitlines() if line.startswith("ERROR")]
+    if result.returncode != 1:
+        fail(f"{prefix}exit code {result.returncode} (expected 1)\n{out[-2000:]}")
+    if len(errors) != 1 or not re.search(pattern, errors[0]):
+        fail(f"expected one ERROR line matching '{pattern}', got {errors}\n{out[-2000:]}")
+    if re.search(r"Segmentation|signal|core dumped|MPI_ABORT", out):
+        fail(f"crash output:\n{out[-2000:]}")
+    return errors[0]
 
 
 def bad(args):
@@ -253,14 +259,7 @@ def bad(args):
     result = subprocess.run([args.liggghts, "-st", "-in", deck, "-log", "none"], cwd=args.workdir, env=mpi_env(),
                             capture_output=True, text=True, errors="replace")
     out = result.stdout + result.stderr
-    errors = [line for line in out.splitlines() if line.startswith("ERROR")]
-    if result.returncode != 1:
-        fail(f"exit code {result.returncode} (expected 1)\n{out[-2000:]}")
-    if len(errors) != 1 or not re.search(args.pattern, errors[0]):
-        fail(f"expected one ERROR line matching '{args.pattern}', got {errors}\n{out[-2000:]}")
-    if re.search(r"Segmentation|signal|core dumped|MPI_ABORT", out):
-        fail(f"crash output:\n{out[-2000:]}")
-    print(f"ok: {errors[0]}")
+    print(f"ok: {one_error(result, out, args.pattern)}")
 
 
 def restart(args):
