@@ -202,10 +202,12 @@ def command_line(lmp, deck, variables, np=1, rel=False):
     return command
 
 
-def run_deck(lmp, workdir, variables, np=1, deck=DECK):
-    """Run a deck; return the last run's loop time, timers, atoms, steps, thermo rows and all runs."""
+def run_deck(lmp, workdir, variables, np=1, deck=DECK, prefix=()):
+    """Run a deck; return the last run's loop time, timers, atoms, steps, thermo rows and all runs.
+
+    prefix: words before the command (e.g. taskset -c 1, to pin a run to one core)."""
     os.makedirs(workdir, exist_ok=True)
-    command = command_line(lmp, deck, variables, np) + ["-log", "log.lammps", "-screen", "none"]
+    command = list(prefix) + command_line(lmp, deck, variables, np) + ["-log", "log.lammps", "-screen", "none"]
     with LoadSampler(np) as sampler:
         result = subprocess.run(command, cwd=workdir, env=mpi_env(), capture_output=True, text=True)
     path = os.path.join(workdir, "log.lammps")
