@@ -20,10 +20,18 @@ def fresh_dir(path):
     os.makedirs(path)
 
 
+# Open MPI on one node without probing network transports (the UCX layer) and, for a run started without mpiexec,
+# without forking a runtime daemon: lmp_runin starts in 0.18 s instead of 0.67 s, which is most of a bad-input test.
+# The same values as tools/run-tests exports; results do not depend on them.
+MPI_START_ENV = {"OMPI_MCA_pml": "ob1", "OMPI_MCA_btl": "self,vader", "OMPI_MCA_ess_singleton_isolated": "1"}
+
+
 def mpi_env():
     """The environment for mpiexec runs: root allowed (containers), oversubscription allowed (2-core machines),
-    one OpenMP thread per rank."""
+    one OpenMP thread per rank, and Open MPI's single-node start-up (MPI_START_ENV)."""
     env = dict(os.environ)
+    for name, value in MPI_START_ENV.items():
+        env.setdefault(name, value)
     env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
     env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
     env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
