@@ -3,6 +3,8 @@
 
 Runs the three shipped cases inputs/pin_on_disk_mu0_{oxidised,dry_low,boundary}.toml (one pin-on-disk on the dry
 steel law, the interface state a [film] that is neither removed nor regrown) and asserts, on their CSVs:
+- the oxidised run (the law's own state) is the film-free steel case tests/data/state_law/steel/
+  pin_on_disk_state_law.toml, friction force identical at every sample;
 - mu0 (mu at t = 0) of each run is the oxidised run's times Tabor's T(f) / T(f_base) (1e-9), and the oxidised run's
   is Tabor's at the calibrated m = 0.8921 (Marks' 0.57) within 1 % (the tilt of the cell's contact normals);
 - claim 2, peak: each higher-state run's peak friction force >= 1.2 x the next lower's (the thesis's margin);
@@ -34,6 +36,7 @@ ALPHA, F_BASE = 12.0, 0.8921
 STATES = [("oxidised", 0.8921, 0.95), ("dry_low", 0.7, 0.55), ("boundary", 0.1, 0.15)]
 RAMP, INTERVAL = 0.05, 0.002
 PEAK_MARGIN, START_MARGIN = 0.2, 0.2
+PLAIN = os.path.join(SOURCE_DIR, "tests", "data", "state_law", "steel", "pin_on_disk_state_law.toml")
 BOUNDARY_LAW = os.path.join(SOURCE_DIR, "inputs", "state_law_steel_boundary.json")
 
 
@@ -74,6 +77,13 @@ def main():
               f"t_eq {s['t_eq']} s")
         if not abs(mu0 - expect) <= 1e-9 * expect:
             fail(f"{name}: mu0 {mu0!r} is not the oxidised run's x T({f}) / T({F_BASE}) = {expect!r} (1e-9)")
+    # the film at the law's own state is the law: the film-free steel case, sample for sample
+    plain = os.path.join(work, "film_free")
+    run_or_fail([args.runin, "pin-on-disk", PLAIN, "--output-dir", plain, "--no-plot"], cwd=SOURCE_DIR)
+    with open(os.path.join(plain, "pin_on_disk.csv")) as f:
+        plain_force = [float(r["friction_force_N"]) for r in csv.DictReader(f)]
+    if plain_force != runs["oxidised"][3][1]:
+        fail("oxidised: the friction force differs from the film-free case's " + PLAIN)
     if not abs(mu0_ox / tabor(F_BASE) - 1.0) <= 0.01:
         fail(f"oxidised: mu0 {mu0_ox} not within 1 % of Tabor's {tabor(F_BASE)} at the calibrated m")
 
