@@ -179,6 +179,11 @@ void read_film(const CaseReader &reader, const continuum::SlidingFriction &frict
   f.f_film = reader.has("film.f_film")
                  ? reader.number("film.f_film")
                  : law_interface_factor(reader, law, "film.interface", reader.text("film.interface", ""));
+  // a state of m = 1 (clean) is named by its key, not as the f_film it becomes
+  if (reader.has("film.interface") && !(f.f_film < 1.0))
+    reader.fail("film.interface", "state '" + reader.text("film.interface", "") + "' has m = " +
+                                      CaseReader::format(f.f_film) + " in the law's material file: at m >= 1 a junction "
+                                      "grows without bound (seizure); give a state with m < 1");
   f.removal_distance = reader.number("film.removal_distance", 0.0);
   f.growth_rate = reader.number("film.growth_rate", 0.0);
   bool counterface = false;
