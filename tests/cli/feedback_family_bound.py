@@ -18,8 +18,9 @@ four-parameter family mu(t) = C1 R(t) + C2 / R(t), R(t)^2 = 1 + u exp(-2 a t), u
 script minimises the largest relative error E = max_i |mu(t_i) / mu_i - 1| over the family: over (C1, C2) exactly
 (for a direction (C1, C2) = s (cos q, sin q) with g_i = (cos q R_i + sin q / R_i) / mu_i the best scale gives
 E = (max g - min g) / (max g + min g); E(q) is quasi-convex, since {(C1, C2) >= 0: E <= L} is convex and misses the
-origin: 17-angle grids, each 8 times narrower round the last one's best), over (u, a) by a log grid and Nelder-Mead from its three best points.
-Falling R (u > 0: R0 > R*, a run-in) gives the bound; rising R (u < 0) is reported. Asserts: (a) the shipped fit,
+origin: 17-angle grids, each 8 times narrower round the last one's best), over (u, a) by a log grid (its best point
+must be inside it) and Nelder-Mead from its two best points.
+Falling R (u > 0: R0 > R*, a run-in) gives the bound; rising R (u < 0) is reported. Asserts: (a) fit-feedback's fit (FJ),
 evaluated here from its file, has fit-feedback's max error, and that error is not below the bound (the bound is a
 lower bound of every falling-R fit); (b) the bound exceeds 0.05 -- so the 5 % criterion cannot be met by this model
 (fails if the physics changes so that a fit could meet it).
@@ -27,7 +28,7 @@ lower bound of every falling-R fit); (b) the bound exceeds 0.05 -- so the 5 % cr
 Why: the bearing's boundary friction (mu_boundary) decays about as 1 / t, not exponentially (printed: its
 fraction at t ~ 1, 10, 40 s and the log-log slope), and with C1, C2 >= 0 mu can fall only as much as R does.
 Worn summits (wear.worn_surface = "truncated"): the summit heights (Gaussian, sigma = R_m at t = 0) cut flat at
-T = sigma t, where the worn depth d (h_max_m + shaft_depth_m, the deepest node) = pi eta beta sigma^2 F2(t),
+T = tau sigma, where the worn depth d (h_max_m + shaft_depth_m, the deepest node) = pi eta beta sigma^2 F2(tau),
 F2(h) = (1 + h^2) Q(h) - h phi(h) (GreenwoodTripp::top_after_wear; eta, beta from the law's surface.spacing, .R).
 Their peak height Rpk (ISO 13565-2: the 40 % secant of least gradient through the material-ratio curve
 z(Mr) = min(T, Q^-1(Mr)), its value zc at Mr = 0; Rpk = 2 A1 / Mr1 with Mr1 = Q(zc), A1 = F1(zc) - F1(T),
