@@ -21,8 +21,9 @@ E = (max g - min g) / (max g + min g); E(q) is quasi-convex, since {(C1, C2) >= 
 origin: 17-angle grids, each 8 times narrower round the last one's best), over (u, a) by a log grid (its best point
 must be inside it) and Nelder-Mead from its two best points. Falling R (u > 0: R0 > R*, a run-in) gives the bound;
 rising R (u < 0) is reported. Asserts: (a) fit-feedback's fit (FJ), evaluated here from its file, has fit-feedback's
-max error, and that error is not below the bound (the bound is a lower bound of every falling-R fit); (b) the bound exceeds 0.05 -- so the 5 % criterion cannot be met by this model
-(fails if the physics changes so that a fit could meet it).
+max error, and that error is not below the bound (the bound is a lower bound of every falling-R fit); (b) the
+bound exceeds 0.05 -- so the 5 % criterion cannot be met by this model (fails if the physics changes so that a fit
+could meet it).
 
 Why: the bearing's boundary friction (mu_boundary) decays about as 1 / t, not exponentially (printed: its
 fraction at t ~ 1, 10, 40 s and the log-log slope), and with C1, C2 >= 0 mu can fall only as much as R does.
