@@ -1,67 +1,19 @@
 // The coefficient grammar (plugins/common/coefficient_grammar.h) on a host adaptor of its own: the hosts' parser
 // without a host. The LAMMPS and LIGGGHTS adaptors are checked through their pair_coeff (PAIR_COEFF_BAD_ROWS,
 // tests/lammps/CMakeLists.txt); here the forms, Tabor's fallback and the messages themselves.
-#include "coefficient_grammar.h"
+#include "coefficient_test_host.h"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <cstring>
-#include <sstream>
-#include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace {
 
 namespace tribo = runin::tribo;
-
-struct Failed : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// An adaptor that throws its ERROR (outside the grammar's kernel calls) and keeps its WARNINGs.
-struct TestHost {
-  std::vector<std::string> warnings;
-  runin_coeff::Host host;
-  explicit TestHost(bool film)
-  {
-    host.style = "pair_coeff runin/asperity";
-    host.film = film;
-    host.fail = [](const std::string &message) { throw Failed(message); };
-    host.warning = [this](const std::string &message) { warnings.push_back(message); };
-    host.is_number = [](const char *text) {
-      char *end = nullptr;
-      std::strtod(text, &end);
-      return *text && *end == '\0';
-    };
-    host.material = [](const char *, const char *, const char *) -> tribo::ContactParameters {
-      throw Failed("no material files here");
-    };
-  }
-};
-
-// A deck line as words (arg[0..narg)).
-struct Words {
-  std::vector<std::string> words;
-  std::vector<char *> arg;
-  explicit Words(const std::string &line)
-  {
-    std::istringstream in(line);
-    for (std::string w; in >> w;) words.push_back(w);
-    for (auto &w : words) arg.push_back(w.data());
-  }
-  int narg() const { return static_cast<int>(arg.size()); }
-};
-
-tribo::ContactModelChoice choice_of(const char *normal, const char *friction)
-{
-  tribo::ContactModelChoice choice;
-  choice.index[static_cast<int>(tribo::SubModelKind::normal)] = tribo::find_sub_model(tribo::SubModelKind::normal, normal);
-  choice.index[static_cast<int>(tribo::SubModelKind::friction)] =
-      tribo::find_sub_model(tribo::SubModelKind::friction, friction);
-  return choice;
-}
+using runin_test::choice_of;
+using runin_test::Failed;
+using runin_test::Words;
+using TestHost = runin_test::CoefficientTestHost;
 
 tribo::ContactCoefficients pair_coeff(TestHost &t, const std::string &line, tribo::ContactModelChoice choice)
 {

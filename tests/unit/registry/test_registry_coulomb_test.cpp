@@ -1,53 +1,25 @@
 // A friction law added as one class and one registry row (coulomb_test_friction.h, test build only): the registry,
 // the coefficient grammar's three forms, mixing, restart records, the generated messages and the compile-time
 // dispatch of the kernel all know it without a line elsewhere.
-#include "coefficient_grammar.h"
+#include "../coefficient_test_host.h"
 #include "tribo/contact_model.h"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <sstream>
-#include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace {
 
 namespace tribo = runin::tribo;
+using runin_test::choice_of;
+using runin_test::Failed;
 using tribo::SubModelKind;
-
-struct Failed : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-runin_coeff::Host test_host()
-{
-  runin_coeff::Host host;
-  host.style = "pair_coeff runin/asperity";
-  host.film = true;
-  host.fail = [](const std::string &message) { throw Failed(message); };
-  host.warning = [](const std::string &) {};
-  host.is_number = [](const char *text) {
-    char *end = nullptr;
-    std::strtod(text, &end);
-    return *text && *end == '\0';
-  };
-  host.material = [](const char *, const char *, const char *) -> tribo::ContactParameters {
-    throw Failed("no material files here");
-  };
-  return host;
-}
 
 tribo::ContactCoefficients pair_coeff(const std::string &line, tribo::ContactModelChoice choice)
 {
-  std::istringstream in(line);
-  std::vector<std::string> words;
-  for (std::string w; in >> w;) words.push_back(w);
-  std::vector<char *> arg;
-  for (auto &w : words) arg.push_back(w.data());
-  return runin_coeff::pair_coeff(test_host(), static_cast<int>(arg.size()), arg.data(), choice,
-                                 tribo::ContactSettings());
+  runin_test::CoefficientTestHost t(true);
+  runin_test::Words w(line);
+  return runin_coeff::pair_coeff(t.host, w.narg(), w.arg.data(), choice, tribo::ContactSettings());
 }
 
 std::string error_of(const std::string &line, tribo::ContactModelChoice choice)
@@ -58,14 +30,6 @@ std::string error_of(const std::string &line, tribo::ContactModelChoice choice)
     return e.what();
   }
   return "accepted";
-}
-
-tribo::ContactModelChoice choice_of(const char *normal, const char *friction)
-{
-  tribo::ContactModelChoice c;
-  c.index[static_cast<int>(SubModelKind::normal)] = tribo::find_sub_model(SubModelKind::normal, normal);
-  c.index[static_cast<int>(SubModelKind::friction)] = tribo::find_sub_model(SubModelKind::friction, friction);
-  return c;
 }
 
 const char *const kBlock = "1 1 normal hertz 4.8e10 damping restitution 0.5 tangential mindlin 1.9e10 "
