@@ -23,7 +23,9 @@ import argparse
 import math
 import os
 import random
+import shutil
 import statistics
+import subprocess
 import sys
 import tempfile
 from concurrent.futures import ThreadPoolExecutor
@@ -58,8 +60,31 @@ def fastest_quarter(times):
     return statistics.fmean(times[:max(1, len(times) // 4)])
 
 
+def fail(message):
+    """A bad option: one line naming it, exit 2 (argparse's own code for a usage error)."""
+    print(f"compare_builds: error: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+class OneLineParser(argparse.ArgumentParser):
+    def error(self, message):
+        fail(f"{message} (see --help)")
+
+
+def check_build(option, path):
+    """An lmp_runin: an executable file whose -h lists pair style runin/asperity."""
+    if not (os.path.isfile(path) and os.access(path, os.X_OK)):
+        fail(f"{option}: {path} is not an executable file (give the lmp_runin of a build)")
+    try:
+        help_text = subprocess.run([path, "-h"], env=rm.mpi_env(), capture_output=True, text=True, timeout=60).stdout
+    except (OSError, subprocess.SubprocessError) as e:
+        fail(f"{option}: {path} -h did not run ({e}); give the lmp_runin of a build")
+    if "runin/asperity" not in help_text:
+        fail(f"{option}: {path} is not an lmp_runin (its -h lists no pair style runin/asperity)")
+
+
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = OneLineParser(description=__doc__.splitlines()[0])
     ap.add_argument("--before", required=True, help="lmp_runin of the tree before the change")
     ap.add_argument("--after", required=True, help="lmp_runin of the tree after the change")
     ap.add_argument("--styles", default="d,f", help="style keys of bench/micro/run_micro.py (default d,f)")
@@ -70,16 +95,30 @@ def main():
                     help="run each pair at the same time on cores 0 and 1, swapping cores every repeat")
     ap.add_argument("--same-binary", action="store_true", help="A/A run: --after on both sides")
     args = ap.parse_args()
-    if args.same_binary:
-        args.before = args.after
-    for path in (args.before, args.after):
-        if not os.access(path, os.X_OK):
-            sys.exit(f"compare_builds: --before/--after: {path} is not an executable lmp_runin")
+    if args.repeats < 1:
+        fail(f"--repeats: the number of paired runs must be >= 1, got {args.repeats}")
+    # the deck's counter-body has nside - 1 summits a side
+    if args.nside < 2:
+        fail(f"--nside: summits per side of the dense scene must be >= 2, got {args.nside}")
+    if args.out is not None and os.path.exists(args.out) and not os.path.isdir(args.out):
+        fail(f"--out: {args.out} is an existing file, not a directory")
+    if args.concurrent:
+        if shutil.which("taskset") is None:
+            fail("--concurrent: pins each run to a core with taskset, which is not on PATH")
+        if not {0, 1} <= os.sched_getaffinity(0):
+            fail("--concurrent: pins the runs to cores 0 and 1, which this process may not use all of")
     styles = dict(rm.STYLES, **rm.DENSE_EXTRA)
     keys = args.styles.split(",")
     for key in keys:
         if key not in styles:
-            sys.exit(f"compare_builds: --styles: unknown style '{key}' (known: {', '.join(styles)})")
+            fail(f"--styles: unknown style '{key}' (known: {', '.join(styles)})")
+        if keys.count(key) > 1:
+            fail(f"--styles: style '{key}' given twice")
+    if args.same_binary:
+        args.before = args.after
+    check_build("--after", args.after)
+    if not args.same_binary:
+        check_build("--before", args.before)
     out = args.out or tempfile.mkdtemp(prefix="compare_builds_")
     params = dict(rm.SCENES["dense"]["full"])
     params.pop("repeats")

@@ -215,6 +215,8 @@ def run_deck(lmp, workdir, variables, np=1, deck=DECK, prefix=()):
     if result.returncode != 0:
         sys.exit(f"run-micro: lmp_runin failed in {workdir} ({' '.join(command)}):\n{log[-1500:]}{result.stderr}")
     runs = parse_runs(log)
+    if not runs:
+        sys.exit(f"run-micro: {lmp} exited 0 but {path} holds no finished run: is it an lmp_runin?")
     last = runs[-1]
     rows = thermo_rows(log)
     return {"loop": last["loop"], "cpu_fraction": last["cpu_fraction"], "cpu": last["loop"] * last["cpu_fraction"],
