@@ -7,6 +7,7 @@ then still prints its ratio line.
 import argparse
 import os
 import re
+import signal
 import subprocess
 import sys
 
@@ -14,24 +15,40 @@ SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 SCRIPT = os.path.join(SOURCE, "bench", "micro", "compare_builds.py")
 
 
+def run(command, timeout):
+    """The command in a session of its own, all of it stopped at the timeout (its lmp_runin runs too)."""
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                          start_new_session=True) as p:
+        try:
+            out, err = p.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            out, err = p.communicate()
+            err += f"\n(stopped after {timeout} s)"
+    return subprocess.CompletedProcess(command, p.returncode, out, err)
+
+
 def bad_options(lmp, workdir):
     """(arguments, the message after `compare_builds: error: `)."""
     a_file = os.path.join(workdir, "a_file")
     open(a_file, "w").close()
+    # the scene small and one repeat wherever the option under test allows, so that a script that takes a bad
+    # option anyway runs briefly
     both = ["--before", lmp, "--after", lmp]
+    small = ["--styles", "d", "--nside", "8", "--repeats", "1"]
     return [
-        (both + ["--repeats", "0"], r"--repeats: the number of paired runs must be >= 1, got 0"),
-        (both + ["--repeats", "-3"], r"--repeats: the number of paired runs must be >= 1, got -3"),
+        (both + ["--nside", "8", "--repeats", "0"], r"--repeats: the number of paired runs must be >= 1, got 0"),
+        (both + ["--nside", "8", "--repeats", "-3"], r"--repeats: the number of paired runs must be >= 1, got -3"),
         (both + ["--repeats", "x"], r"argument --repeats: invalid int value: 'x' \(see --help\)"),
-        (both + ["--nside", "0"], r"--nside: summits per side of the dense scene must be >= 2, got 0"),
-        (both + ["--nside", "1"], r"--nside: summits per side of the dense scene must be >= 2, got 1"),
-        (both + ["--out", a_file], r"--out: .*a_file is an existing file, not a directory"),
-        (both + ["--styles", "d,z"], r"--styles: unknown style 'z' \(known: "),
-        (both + ["--styles", "d,d"], r"--styles: style 'd' given twice"),
-        (["--before", os.path.join(workdir, "missing"), "--after", lmp],
+        (both + ["--repeats", "1", "--nside", "0"], r"--nside: summits per side of the dense scene must be >= 2, got 0"),
+        (both + ["--repeats", "1", "--nside", "1"], r"--nside: summits per side of the dense scene must be >= 2, got 1"),
+        (both + small + ["--out", a_file], r"--out: .*a_file is an existing file, not a directory"),
+        (both + ["--nside", "8", "--repeats", "1", "--styles", "d,z"], r"--styles: unknown style 'z' \(known: "),
+        (both + ["--nside", "8", "--repeats", "1", "--styles", "d,d"], r"--styles: style 'd' given twice"),
+        (small + ["--before", os.path.join(workdir, "missing"), "--after", lmp],
          r"--before: .*missing is not an executable file \(give the lmp_runin of a build\)"),
-        (["--before", workdir, "--after", lmp], r"--before: .* is not an executable file"),
-        (["--before", lmp, "--after", "/bin/true"],
+        (small + ["--before", workdir, "--after", lmp], r"--before: .* is not an executable file"),
+        (small + ["--before", lmp, "--after", "/bin/true"],
          r"--after: /bin/true is not an lmp_runin \(its -h lists no pair style runin/asperity\)"),
         (["--after", lmp], r"the following arguments are required: --before \(see --help\)"),
     ]
@@ -47,7 +64,7 @@ def main():
     lmp = os.path.abspath(args.lmp)
     failures = []
     for argv, message in bad_options(lmp, args.workdir):
-        r = subprocess.run([sys.executable, SCRIPT] + argv, capture_output=True, text=True, timeout=120)
+        r = run([sys.executable, SCRIPT] + argv, 120)
         lines = r.stderr.splitlines()
         ok = (r.returncode == 2 and len(lines) == 1 and not r.stdout
               and re.match(r"compare_builds: error: " + message, lines[0]))
@@ -62,8 +79,8 @@ def main():
 
 
 def aa_run(lmp, out):
-    r = subprocess.run([sys.executable, SCRIPT, "--before", lmp, "--after", lmp, "--same-binary", "--styles", "d",
-                        "--repeats", "2", "--nside", "8", "--out", out], capture_output=True, text=True, timeout=300)
+    r = run([sys.executable, SCRIPT, "--before", lmp, "--after", lmp, "--same-binary", "--styles", "d",
+             "--repeats", "2", "--nside", "8", "--out", out], 300)
     ok = r.returncode == 0 and re.search(r"^  \(d\) .*: median \d\.\d{4} \(range ", r.stdout, re.M)
     print(f"{'ok  ' if ok else 'FAIL'} A/A run, nside 8, 2 repeats: exit {r.returncode}")
     return [] if ok else [f"A/A run: exit {r.returncode}\n{r.stdout}{r.stderr}"]
