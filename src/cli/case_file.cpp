@@ -583,6 +583,15 @@ PinOnDiskCase read_pin_on_disk_case(const std::string &path, const std::optional
     PinContactCase k = read_pin_contact(reader, state_law);
     if (reader.has("wear")) read_pin_wear(reader, k, state_law);
     c.contact = k;
+    // the state law reads the flat end's nominal pressure: finite, or the key that overflows it
+    const double area = M_PI * k.flat_radius * k.flat_radius;
+    if (k.flat && !(area > 0.0))
+      reader.fail("contact.flat_radius", "the flat end's area pi a^2 underflows to 0 m^2 at a = " +
+                                             CaseReader::format(k.flat_radius) + " m");
+    if (k.flat && !std::isfinite(p.normal_load / area))
+      reader.fail("pin.normal_load", "the nominal pressure W / (pi contact.flat_radius^2) overflows at W = " +
+                                         CaseReader::format(p.normal_load) + " N, a = " +
+                                         CaseReader::format(k.flat_radius) + " m");
     check_law_materials(reader, *c.friction, law_path, "contact.pin_material", k.pin_name, "contact.disk_material",
                         k.disk_name);
   }
