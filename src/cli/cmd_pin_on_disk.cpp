@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 
@@ -151,6 +154,37 @@ std::string split_error(const continuum::SplitReport &r, const continuum::StateL
   }
 }
 
+// An adaptive run stopped on its smallest step with a film that changes: when the film alone can move mu_eff by
+// more than run.tolerance over that step (its slip over s_r, its time times k_g, either body's film, times the
+// spread of Tabor's factor between the bare and the covered interface), the film's input is what the steps cannot
+// resolve: that key, as bad input.
+std::optional<std::string> film_too_fast(const PinOnDiskCase &c, const continuum::SplitReport &r,
+                                         const continuum::FilmSettings &f) {
+  const auto at = r.message.find("over a step of ");
+  if (r.status != continuum::SplitStatus::SlowFailure || !c.wear_steps.adaptive || at == std::string::npos)
+    return std::nullopt;
+  const double ds = std::strtod(r.message.c_str() + at + 15, nullptr), v = c.parameters.prescribed_speed(r.time);
+  const double dt = v > 0.0 ? 2.0 * ds / v : 0.0;  // from rest on the linear ramp a step takes at most 2 ds / v
+  const auto cf = f.counterface.value_or(continuum::CounterfaceFilm{});
+  const std::pair<const char *, double> exposure[] = {
+      {"film.removal_distance", f.removal_distance > 0.0 ? ds / f.removal_distance : 0.0},
+      {"film.growth_rate", f.growth_rate * dt},
+      {"film.counterface_removal_distance", cf.removal_distance > 0.0 ? ds / cf.removal_distance : 0.0},
+      {"film.counterface_growth_rate", cf.growth_rate * dt}};
+  double total = 0.0;
+  for (const auto &e : exposure) total += e.second;
+  const auto tabor = [&](double x) { return x / std::sqrt(f.alpha * (1.0 - x * x)); };
+  const double lo = tabor(std::min(f.f_film, f.f_base)), hi = tabor(std::max(f.f_film, f.f_base));
+  const double change = std::min(1.0, total) * (lo > 0.0 ? hi / lo - 1.0 : std::numeric_limits<double>::infinity());
+  if (!(change > c.wear_steps.tolerance)) return std::nullopt;
+  const auto &fastest = *std::max_element(std::begin(exposure), std::end(exposure),
+                                          [](const auto &a, const auto &b) { return a.second < b.second; });
+  return fmt::format("{}: key '{}': the film can change mu_eff by up to {:.3g} over the adaptive wear steps' "
+                     "smallest step ({:.3g} m of sliding at t = {:.3g} s), above run.tolerance = {:.3g}: give a film "
+                     "that changes over a longer distance or time, or run.wear_steps = \"fixed\"",
+                     c.path, fastest.first, change, ds, r.time, c.wear_steps.tolerance);
+}
+
 continuum::PinStateLawSettings state_law_settings(const PinOnDiskCase &c) {
   const auto &k = *c.contact;
   continuum::PinStateLawSettings s;
@@ -204,7 +238,11 @@ Curve run_state_law_case(const PinOnDiskCase &c, bool with_frames) {
       curve.frames.push_back(state_law_frame(*pin, s.t));
   };
   const auto split = continuum::run_pin_split(system, c.run, *pin, c.wear_steps, observer);
-  if (!split.ok()) throw std::runtime_error(split_error(split, *law));
+  if (!split.ok()) {
+    if (law->film)
+      if (const auto film_error = film_too_fast(c, split, *law->film)) throw InputError(*film_error);
+    throw std::runtime_error(split_error(split, *law));
+  }
   curve.report = split.fast;
   curve.split = split;
   curve.summary = continuum::summarise(samples);
