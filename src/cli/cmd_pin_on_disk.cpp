@@ -154,10 +154,11 @@ std::string split_error(const continuum::SplitReport &r, const continuum::StateL
   }
 }
 
-// An adaptive run stopped on its smallest step with a film that changes: when the film alone can move mu_eff by
-// more than run.tolerance over that step (its slip over s_r, its time times k_g, either body's film, times the
-// spread of Tabor's factor between the bare and the covered interface), the film's input is what the steps cannot
-// resolve: that key, as bad input.
+// An adaptive run stopped on its smallest step with a film: when the film alone can move ln mu_eff by more than
+// run.tolerance over that step, the film's input is what the steps cannot resolve: that key, as bad input. The
+// bound: the coverage's exposure over the step (its slip over s_r, its time times k_g, either body's film) times
+// the sensitivity of ln T(f) to the coverage, |f_base - f_film| max(d ln T / df) over [f_film, f_base]. The key is
+// the fastest kinetic one when the coverage itself moves by more than the tolerance, else f_film (T steep there).
 std::optional<std::string> film_too_fast(const PinOnDiskCase &c, const continuum::SplitReport &r,
                                          const continuum::FilmSettings &f) {
   const auto at = r.message.find("over a step of ");
@@ -173,16 +174,23 @@ std::optional<std::string> film_too_fast(const PinOnDiskCase &c, const continuum
       {"film.counterface_growth_rate", cf.growth_rate * dt}};
   double total = 0.0;
   for (const auto &e : exposure) total += e.second;
-  const auto tabor = [&](double x) { return x / std::sqrt(f.alpha * (1.0 - x * x)); };
-  const double lo = tabor(std::min(f.f_film, f.f_base)), hi = tabor(std::max(f.f_film, f.f_base));
-  const double change = std::min(1.0, total) * (lo > 0.0 ? hi / lo - 1.0 : std::numeric_limits<double>::infinity());
+  // T(f) = f / sqrt(alpha (1 - f^2)): d ln T / df = 1/f + f / (1 - f^2), convex, largest at an end
+  const auto slope = [](double x) { return 1.0 / x + x / (1.0 - x * x); };
+  const double f_film = std::fabs(f.f_film);  // -0 as 0 (its slope +inf)
+  const double lo = std::min(f_film, f.f_base), hi = std::max(f_film, f.f_base);
+  const double change = std::min(1.0, total) * (hi - lo) * std::max(slope(lo), slope(hi));
   if (!(change > c.wear_steps.tolerance)) return std::nullopt;
   const auto &fastest = *std::max_element(std::begin(exposure), std::end(exposure),
                                           [](const auto &a, const auto &b) { return a.second < b.second; });
+  const bool kinetic = total > c.wear_steps.tolerance;
   return fmt::format("{}: key '{}': the film can change mu_eff by up to {:.3g} over the adaptive wear steps' "
-                     "smallest step ({:.3g} m of sliding at t = {:.3g} s), above run.tolerance = {:.3g}: give a film "
-                     "that changes over a longer distance or time, or run.wear_steps = \"fixed\"",
-                     c.path, fastest.first, change, ds, r.time, c.wear_steps.tolerance);
+                     "smallest step ({:.3g} m of sliding at t = {:.3g} s), above run.tolerance = {:.3g}: {}, or "
+                     "run.wear_steps = \"fixed\"",
+                     c.path, kinetic ? fastest.first : "film.f_film", change, ds, r.time, c.wear_steps.tolerance,
+                     kinetic ? "give a film that changes over a longer distance or time"
+                             : fmt::format("at f_film = {:.17g} Tabor's friction is that steep in the coverage (f_film "
+                                           "or the film.interface state's m); give one further from 0 and 1",
+                                           f_film));
 }
 
 continuum::PinStateLawSettings state_law_settings(const PinOnDiskCase &c) {
