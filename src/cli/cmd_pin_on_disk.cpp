@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <tuple>
@@ -154,43 +152,33 @@ std::string split_error(const continuum::SplitReport &r, const continuum::StateL
   }
 }
 
-// An adaptive run stopped on its smallest step with a film: when the film alone can move ln mu_eff by more than
-// run.tolerance over that step, the film's input is what the steps cannot resolve: that key, as bad input. The
-// bound: the coverage's exposure over the step (its slip over s_r, its time times k_g, either body's film) times
-// the sensitivity of ln T(f) to the coverage, |f_base - f_film| max(d ln T / df) over [f_film, f_base]. The key is
-// the fastest kinetic one when the coverage itself moves by more than the tolerance, else f_film (T steep there).
+// An adaptive run stopped on its smallest step with a film that alone can move mu_eff by more than run.tolerance over
+// that step (continuum::film_step_bound): the film's input is what the steps cannot resolve, as bad input.
 std::optional<std::string> film_too_fast(const PinOnDiskCase &c, const continuum::SplitReport &r,
                                          const continuum::FilmSettings &f) {
-  const auto at = r.message.find("over a step of ");
-  if (r.status != continuum::SplitStatus::SlowFailure || !c.wear_steps.adaptive || at == std::string::npos)
+  if (r.status != continuum::SplitStatus::SlowFailure || !c.wear_steps.adaptive || !(r.failed_step_distance > 0.0))
     return std::nullopt;
-  const double ds = std::strtod(r.message.c_str() + at + 15, nullptr), v = c.parameters.prescribed_speed(r.time);
-  const double dt = v > 0.0 ? 2.0 * ds / v : 0.0;  // from rest on the linear ramp a step takes at most 2 ds / v
-  const auto cf = f.counterface.value_or(continuum::CounterfaceFilm{});
-  const std::pair<const char *, double> exposure[] = {
-      {"film.removal_distance", f.removal_distance > 0.0 ? ds / f.removal_distance : 0.0},
-      {"film.growth_rate", f.growth_rate * dt},
-      {"film.counterface_removal_distance", cf.removal_distance > 0.0 ? ds / cf.removal_distance : 0.0},
-      {"film.counterface_growth_rate", cf.growth_rate * dt}};
-  double total = 0.0;
-  for (const auto &e : exposure) total += e.second;
-  // T(f) = f / sqrt(alpha (1 - f^2)): d ln T / df = 1/f + f / (1 - f^2), convex, largest at an end
-  const auto slope = [](double x) { return 1.0 / x + x / (1.0 - x * x); };
-  const double f_film = std::fabs(f.f_film);  // -0 as 0 (its slope +inf)
-  const double lo = std::min(f_film, f.f_base), hi = std::max(f_film, f.f_base);
-  const double change = std::min(1.0, total) * (hi - lo) * std::max(slope(lo), slope(hi));
-  if (!(change > c.wear_steps.tolerance)) return std::nullopt;
-  const auto &fastest = *std::max_element(std::begin(exposure), std::end(exposure),
-                                          [](const auto &a, const auto &b) { return a.second < b.second; });
-  const bool kinetic = total > c.wear_steps.tolerance;
+  const auto bound =
+      continuum::film_step_bound(f, r.failed_step_distance, r.failed_step_duration, c.wear_steps.tolerance);
+  using continuum::FilmInput;
+  const char *key = nullptr;
+  switch (bound.input) {
+    case FilmInput::None: return std::nullopt;
+    case FilmInput::RemovalDistance: key = "film.removal_distance"; break;
+    case FilmInput::GrowthRate: key = "film.growth_rate"; break;
+    case FilmInput::CounterfaceRemovalDistance: key = "film.counterface_removal_distance"; break;
+    case FilmInput::CounterfaceGrowthRate: key = "film.counterface_growth_rate"; break;
+    case FilmInput::FFilm: key = "film.f_film"; break;
+  }
+  const bool kinetic = bound.input != FilmInput::FFilm;
   return fmt::format("{}: key '{}': the film can change mu_eff by up to {:.3g} over the adaptive wear steps' "
                      "smallest step ({:.3g} m of sliding at t = {:.3g} s), above run.tolerance = {:.3g}: {}, or "
                      "run.wear_steps = \"fixed\"",
-                     c.path, kinetic ? fastest.first : "film.f_film", change, ds, r.time, c.wear_steps.tolerance,
+                     c.path, key, bound.change, r.failed_step_distance, r.time, c.wear_steps.tolerance,
                      kinetic ? "give a film that changes over a longer distance or time"
                              : fmt::format("at f_film = {:.17g} Tabor's friction is that steep in the coverage (f_film "
                                            "or the film.interface state's m); give one further from 0 and 1",
-                                           f_film));
+                                           std::fabs(f.f_film)));
 }
 
 continuum::PinStateLawSettings state_law_settings(const PinOnDiskCase &c) {

@@ -3,9 +3,11 @@
 #include "tribo/contact_model.h"
 #include "tribo/number_format.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace runin::continuum {
 namespace {
@@ -78,6 +80,28 @@ double NodeFilm::mean_coverage(const std::vector<double> &weight) const {
   }
   if (total > 0.0) return sum / total;
   return theta_.empty() ? 0.0 : plain / static_cast<double>(theta_.size());
+}
+
+FilmStepBound film_step_bound(const FilmSettings &s, double ds, double dt, double tolerance) {
+  const CounterfaceFilm cf = s.counterface.value_or(CounterfaceFilm{});
+  const std::pair<FilmInput, double> exposure[] = {
+      {FilmInput::RemovalDistance, s.removal_distance > 0.0 ? ds / s.removal_distance : 0.0},
+      {FilmInput::GrowthRate, s.growth_rate * dt},
+      {FilmInput::CounterfaceRemovalDistance, cf.removal_distance > 0.0 ? ds / cf.removal_distance : 0.0},
+      {FilmInput::CounterfaceGrowthRate, cf.growth_rate * dt}};
+  double total = 0.0;
+  for (const auto &e : exposure) total += e.second;
+  // d ln T / df of T(f) = f / sqrt(alpha (1 - f^2)), independent of alpha
+  const auto slope = [](double f) { return 1.0 / f + f / (1.0 - f * f); };
+  const double f_film = std::fabs(s.f_film);  // -0 as 0: slope +inf
+  const double lo = std::min(f_film, s.f_base), hi = std::max(f_film, s.f_base);
+  FilmStepBound bound;
+  bound.change = std::min(1.0, total) * (hi - lo) * std::max(slope(lo), slope(hi));
+  if (!(bound.change > tolerance)) return bound;
+  const auto fastest = std::max_element(std::begin(exposure), std::end(exposure),
+                                        [](const auto &a, const auto &b) { return a.second < b.second; });
+  bound.input = total > tolerance ? fastest->first : FilmInput::FFilm;
+  return bound;
 }
 
 }  // namespace runin::continuum

@@ -43,6 +43,19 @@ struct FilmSettings {
   void validate() const;
 };
 
+// The film input that can move a node's ln mu by more than `tolerance` over one step of sliding ds (m) in dt (s),
+// an upper bound from the kinetics alone: the coverage's exposure over the step (ds / s_r and k_g dt of either body,
+// at most 1) times the steepest ln T(f) over the film's range, |f_base - f_film| max d ln T / df at its ends (ln T is
+// convex in f). An adaptive run whose smallest step fails while this exceeds the tolerance is stopped by the film's
+// input, not by the law: the fastest kinetic input when the exposure itself exceeds the tolerance, else f_film
+// (Tabor's friction that steep in the coverage).
+enum class FilmInput { None, RemovalDistance, GrowthRate, CounterfaceRemovalDistance, CounterfaceGrowthRate, FFilm };
+struct FilmStepBound {
+  FilmInput input = FilmInput::None;  // None: the film alone stays within the tolerance over the step
+  double change = 0.0;                // the bound on |d ln mu| over the step
+};
+FilmStepBound film_step_bound(const FilmSettings &settings, double ds, double dt, double tolerance);
+
 class NodeFilm {
  public:
   NodeFilm(const FilmSettings &settings, std::size_t nodes);  // validates

@@ -249,6 +249,8 @@ SplitReport run_speed_adaptive(const PinOnDiskSystem &system, const PinOnDiskRun
         report.message = "adaptive wear steps at t = " + format_g(t1) + " s: the change of mu_eff or of the node states "
                          "exceeds the tolerance over a step of " + format_g(s1 - s) + " m (a jump in the law?)";
         report.time = t1;
+        report.failed_step_distance = s1 - s;
+        report.failed_step_duration = t1 - time_at(s);
         return report;
       }
       ++report.rejected_steps;

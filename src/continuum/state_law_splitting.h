@@ -45,6 +45,8 @@ struct SplitReport {
   // Adaptive wear steps (pin_state_law.h, run_pin_split): steps taken back, and (torque drive) the stretches of
   // full dynamics after the first (each chunk of 10 output intervals).
   long rejected_steps = 0, fallbacks = 0;
+  // Adaptive wear steps that failed at their smallest step (SlowFailure): that step's sliding (m) and duration (s).
+  double failed_step_distance = 0.0, failed_step_duration = 0.0;
   SolveReport fast;     // the fast stepper's report (partial when the slow stepper stopped the run)
 
   bool ok() const { return status == SplitStatus::Success; }

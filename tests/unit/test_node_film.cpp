@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <tuple>
 
 #include "continuum/node_film.h"
 #include "continuum/node_state_law.h"
@@ -149,4 +150,41 @@ TEST(NodeFilm, ACounterfaceFilmHasItsOwnKineticsAndContactsShearAtTheMeanCoverag
   EXPECT_NEAR(f.contact_coverage(0), 0.5 * (f.coverage()[0] + f.counterface_coverage()[0]), 1e-15);
   s.counterface->growth_rate = -1.0;
   EXPECT_THROW(s.validate(), std::invalid_argument);
+}
+
+// The bound an adaptive run uses to blame the film (film_step_bound) holds against the film itself: over steps of
+// every size, on removal, growth and both, the node's |d ln mu| at full contact (phi = 1) never exceeds it; it names
+// the fastest kinetic input once the coverage's exposure passes the tolerance, f_film when only T(f)'s steepness does.
+TEST(NodeFilm, StepBoundHoldsAgainstTheFilmAndNamesItsInput) {
+  using runin::continuum::FilmInput;
+  using runin::continuum::film_step_bound;
+  const double tolerance = 0.01;
+  for (const auto &[s_r, k_g, theta0] : {std::tuple{1e-3, 0.0, 1.0}, std::tuple{0.0, 50.0, 0.0},
+                                         std::tuple{2e-3, 30.0, 0.5}}) {
+    for (double ds : {1e-9, 1e-7, 1e-5, 1e-3, 1e-1}) {
+      const double dt = ds / 0.5;  // 0.5 m/s
+      FilmSettings s = film(theta0, s_r, k_g);
+      NodeFilm node(s, 1);
+      const double before = std::log(node.friction_factor(0));
+      node.advance({1.0}, ds, dt);
+      const double moved = std::fabs(std::log(node.friction_factor(0)) - before);
+      const auto bound = film_step_bound(s, ds, dt, tolerance);
+      EXPECT_LE(moved, bound.change * (1.0 + 1e-12)) << "s_r " << s_r << " k_g " << k_g << " ds " << ds;
+      const double exposure = (s_r > 0.0 ? ds / s_r : 0.0) + k_g * dt;
+      if (exposure > tolerance)
+        EXPECT_EQ(bound.input, ds / (s_r > 0.0 ? s_r : 1e300) >= k_g * dt ? FilmInput::RemovalDistance
+                                                                           : FilmInput::GrowthRate);
+      if (bound.change <= tolerance) EXPECT_EQ(bound.input, FilmInput::None);
+    }
+  }
+  // f_film a hair below 1: T(f) so steep that a coverage change of 1e-6 moves mu by far more than the tolerance
+  FilmSettings steep = film(1.0, 1.0, 0.0);
+  steep.f_film = 0.9999999999999999;
+  const auto b = film_step_bound(steep, 1e-6, 2e-6, tolerance);
+  EXPECT_EQ(b.input, FilmInput::FFilm);
+  EXPECT_GT(b.change, 1e3);
+  // the counterface's own kinetics count
+  FilmSettings both = film(1.0, 1.0, 0.0);
+  both.counterface = runin::continuum::CounterfaceFilm{1.0, 1e-9, 0.0};
+  EXPECT_EQ(film_step_bound(both, 1e-6, 2e-6, tolerance).input, FilmInput::CounterfaceRemovalDistance);
 }
