@@ -15,8 +15,10 @@ Asserted (doc/rve_cell.md, "rough on rough"):
   - the worn volume is Archard's: h + h_cf = 2 k p s / H to 1e-3;
   - the complete output file exists only after the run (out.part renamed at the end).
 ranks: the cell at 1 and 2 MPI ranks, every output value to 1e-9 relative.
-bins: the deck's neighbour bins, a sixth of the list cutoff 2R + skin (doc/homogenise.md, "Speed"), give the output
-  of LAMMPS's own bins (half the cutoff) to the bit, with the same neighbour count and list builds, at 20 MPa.
+bins: the deck's settings for speed (doc/homogenise.md, "Speed") change no bit of the output, at 20 MPa: its
+  neighbour bins, a sixth of the list cutoff 2R + skin, against LAMMPS's own (half the cutoff), with the same
+  neighbour count and list builds; and its load per summit, a number, against the equal-style variable
+  -v_load/count(slider) that fix aveforce evaluated every step before.
 """
 import argparse
 import os
@@ -99,12 +101,23 @@ def bins(args):
     fresh_dir(args.workdir)
     radius, skin = 1.0e-4, 4.0e-6  # the deck's R and skin
     cutoff = 2.0 * radius + skin
+    with open(DECK) as f:
+        text = f.read()
+    line = re.search(r"^fix +press slider aveforce NULL NULL (\S+)$", text, re.M)
+    if not line or not line.group(1).startswith("$("):
+        fail(f"the deck's fix press does not take the load per summit as a number: {line and line.group(0)}")
+    variable_deck = os.path.join(args.workdir, "in.rve_rough_variable")
+    with open(variable_deck, "w") as f:
+        f.write(text.replace(line.group(0), "variable        per_asperity equal -v_load/count(slider)\n"
+                                            "fix             press slider aveforce NULL NULL v_per_asperity"))
     extras = {"deck": {}, "lammps": {"binsize": cutoff / 2.0}}
-    run_lammps_two_at_a_time(args, DECK, [
-        (name, {"material": MATERIAL, "pressure": 2.0e7, "accel": 1.0, "nside": args.nside, "depth": args.depth,
-                "seed": 11, "nout": 100, "out": f"{name}.dat", **extra}) for name, extra in extras.items()])
+    common = {"material": MATERIAL, "pressure": 2.0e7, "accel": 1.0, "nside": args.nside, "depth": args.depth,
+              "seed": 11, "nout": 100}
+    run_lammps_two_at_a_time(args, DECK, [(name, {**common, "out": f"{name}.dat", **extra})
+                                          for name, extra in extras.items()])
+    run_lammps_two_at_a_time(args, variable_deck, [("variable", {**common, "out": "variable.dat"})])
     runs = {}
-    for name in extras:
+    for name in list(extras) + ["variable"]:
         with open(os.path.join(args.workdir, f"log.{name}")) as f:
             runs[name] = f.read()
     sizes = {name: re.findall(r"binsize = (\S+), bins", log) for name, log in runs.items()}
@@ -116,12 +129,15 @@ def bins(args):
         lammps_out = f.read()
     if deck_out != lammps_out:
         fail("the output with the deck's bins differs from the output with LAMMPS's bins")
+    with open(os.path.join(args.workdir, "variable.dat"), "rb") as f:
+        if f.read() != deck_out:
+            fail("the output with the load per summit as a number differs from the one with its variable")
     counts = {name: re.findall(r"^(?:Total # of neighbors|Neighbor list builds) = (\d+)", log, re.M)
               for name, log in runs.items()}
     if counts["deck"] != counts["lammps"] or not counts["deck"]:
         fail(f"neighbour counts and list builds differ: {counts}")
-    print(f"bins {sizes['deck'][0]} m (deck) and {sizes['lammps'][0]} m (LAMMPS's): {len(deck_out)} bytes of output "
-          f"identical; neighbours and list builds {counts['deck']}")
+    print(f"bins {sizes['deck'][0]} m (deck) and {sizes['lammps'][0]} m (LAMMPS's), fix press with a number and with "
+          f"its variable: {len(deck_out)} bytes of output identical; neighbours and list builds {counts['deck']}")
     print("PASS")
 
 
