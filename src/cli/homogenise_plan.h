@@ -5,8 +5,8 @@
 // everything that determines its output: the material file's content and the two names, the surface, p, v, seed,
 // acceleration, depth, nslide, nout, the deck's content, the RunIn version and the physics identity of the LAMMPS
 // executable that runs it (lmp_runin.physics: its physics sources, compiler and flags; a relink of the same sources
-// keeps it), else that executable's SHA-256. The sample lives in <cache>/<key>/; it is complete when <cache>/<key>/out.dat exists (the deck
-// renames its output to that name as its very last act).
+// keeps it), else that executable's SHA-256. The sample lives in <cache>/<key>/; it is complete when
+// <cache>/<key>/out.dat exists (the deck renames its output to that name as its very last act).
 #pragma once
 
 #include <filesystem>
