@@ -558,7 +558,7 @@ coupling::HomogenisationSamples good_seeds(const HomogeniseCase &c, const std::v
 
 struct Provenance {
   fs::path deck, cache_dir;
-  std::string deck_text, lmp, lmp_sha256;
+  std::string deck_text, lmp, lmp_sha256, physics_sha256;
 };
 
 // The LAMMPS version line of the first good sample that recorded one.
@@ -611,7 +611,10 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
        {{"runin_version", runin_version()},
         {"runin_git", runin_git_describe()},
         {"lammps_version", lammps_version(samples, curves)},
-        {"lmp", {{"path", portable_path(p.lmp)}, {"sha256", p.lmp_sha256}}},
+        {"lmp", p.physics_sha256.empty()
+                    ? nlohmann::json{{"path", portable_path(p.lmp)}, {"sha256", p.lmp_sha256}}
+                    : nlohmann::json{{"path", portable_path(p.lmp)}, {"sha256", p.lmp_sha256},
+                                     {"physics_sha256", p.physics_sha256}}},
         {"command_line", portable_command_line(o.command_line)},
         {"case", {{"path", portable_path(o.case_path)},
                   {"sha256", sha256_hex(file_bytes(o.case_path))}}},
@@ -668,8 +671,13 @@ int run_homogenise(const Options &o) {
   p.deck_text = file_bytes(p.deck);
   check_deck(c, p.deck, p.deck_text);
   p.cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
-  const CodeIdentity code{runin_version(), p.lmp, sha256_hex(file_bytes(p.lmp))};
+  const CodeIdentity code{runin_version(), p.lmp, sha256_hex(file_bytes(p.lmp)), lmp_physics_identity(p.lmp)};
   p.lmp_sha256 = code.lmp_sha256;
+  p.physics_sha256 = code.physics_sha256;
+  if (code.physics_sha256.empty())
+    fmt::print("runin homogenise: note: no {}.physics beside it: the samples are keyed on the executable's SHA-256 "
+               "(any relink reruns them)\n",
+               fs::path(p.lmp).filename().string());
   const std::vector<Sample> samples = plan_samples(c, p.deck_text, code, p.cache_dir);
   std::vector<const Sample *> todo;
   for (const auto &s : samples)

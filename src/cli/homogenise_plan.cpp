@@ -426,6 +426,26 @@ std::string file_bytes(const fs::path &path) {
   return text.str();
 }
 
+std::string lmp_physics_identity(const fs::path &lmp) {
+  // beside the path given, else beside the executable a symlink names
+  fs::path file = lmp.string() + ".physics";
+  std::error_code error;
+  if (!fs::exists(file, error)) {
+    const fs::path target = fs::canonical(lmp, error);
+    if (error) return {};
+    file = target.string() + ".physics";
+    if (!fs::exists(file, error)) return {};
+  }
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  const bool hex = line.size() == 64 && line.find_first_not_of("0123456789abcdef") == std::string::npos;
+  if (!hex)
+    throw std::runtime_error(file.string() + ": the first line is not a SHA-256 (64 hex digits); rebuild lmp_runin "
+                             "(the build writes this file) or delete it to key the samples on the executable");
+  return line;
+}
+
 bool Sample::complete() const {
   std::error_code error;
   return fs::is_regular_file(output(), error);
@@ -439,6 +459,11 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
   const std::string deck_sha = sha256_hex(deck_text);
   nlohmann::json surface = {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}};
   if (!c.heights_file.empty()) surface["heights_sha256"] = c.heights_sha256;
+  // the physics the executable was built from, not its bytes: a relink of the same sources hits the cache
+  const nlohmann::json code_key =
+      code.physics_sha256.empty()
+          ? nlohmann::json{{"runin_version", code.runin_version}, {"lmp_sha256", code.lmp_sha256}}
+          : nlohmann::json{{"runin_version", code.runin_version}, {"physics_sha256", code.physics_sha256}};
   std::vector<Sample> samples;
   for (std::size_t ip = 0; ip < c.pressures.size(); ++ip)
     for (std::size_t is = 0; is < c.seeds.size(); ++is) {
@@ -460,8 +485,8 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
           {"nslide", c.nslide},
           {"nout", c.nout},
           {"deck_sha256", deck_sha},
-          {"code", {{"runin_version", code.runin_version}, {"lmp_sha256", code.lmp_sha256}}},
-          {"cache_format", 1},
+          {"code", code_key},
+          {"cache_format", 2},
       };
       if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) s.inputs["wear"] = wear;
       if (const nlohmann::json contact = c.contact_json(); !contact.is_null()) s.inputs["contact"] = contact;

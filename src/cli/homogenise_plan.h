@@ -3,9 +3,10 @@
 //
 // A sample is one run of the cell deck at one (pressure, seed). Its cache key is the SHA-256 of a canonical JSON of
 // everything that determines its output: the material file's content and the two names, the surface, p, v, seed,
-// acceleration, depth, nslide, nout, the deck's content, the RunIn version and the SHA-256 of the LAMMPS executable
-// that runs it. The sample lives in <cache>/<key>/; it is complete when <cache>/<key>/out.dat exists (the deck
-// renames its output to that name as its very last act).
+// acceleration, depth, nslide, nout, the deck's content, the RunIn version and the physics identity of the LAMMPS
+// executable that runs it (lmp_runin.physics: its physics sources, compiler and flags; a relink of the same sources
+// keeps it), else that executable's SHA-256. The sample lives in <cache>/<key>/; it is complete when
+// <cache>/<key>/out.dat exists (the deck renames its output to that name as its very last act).
 #pragma once
 
 #include <filesystem>
@@ -96,7 +97,16 @@ std::string file_bytes(const std::filesystem::path &path);  // throws std::runti
 struct CodeIdentity {
   std::string runin_version;  // PROJECT_VERSION
   std::string lmp_path, lmp_sha256;
+  // the physics compiled into the LAMMPS executable: the first line of `<lmp>.physics` beside it (lmp_runin.physics,
+  // written by the build from the SHA-256 of its physics sources, compiler and flags); empty when there is none,
+  // and the samples are keyed on lmp_sha256 instead
+  std::string physics_sha256;
 };
+
+// The physics identity recorded beside the LAMMPS executable `lmp` (`<lmp>.physics`): its first line, 64 hex digits;
+// empty if the file does not exist. A file that exists but does not start with such a line is a runtime_error
+// naming it.
+std::string lmp_physics_identity(const std::filesystem::path &lmp);
 
 struct Sample {
   std::size_t ip = 0, is = 0;  // pressure and seed indices

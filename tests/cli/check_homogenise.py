@@ -24,6 +24,13 @@ MODE launcher_alone: the same wrapper named by the case's [run] launcher = "./la
 MODE extra:  grid.extra_pressures = [5e5] added below the cached 2-pressure grid: the rerun takes the 4 grid
              samples from the cache and runs only the 2 new ones; the law spans 5e5 .. 4e6 Pa, its grid rows equal
              the first law's to the bit and its new row is the seed mean of the new samples.
+MODE relink: the cache is keyed on the physics lmp_runin was built from (lmp_runin.physics beside it), not on its
+             bytes: (a) the build's lmp_runin.physics is the identity its physics sources give now (the build
+             regenerated it); a cold run of 2 samples; (b) a relinked executable (a copy with other bytes, its
+             .physics beside it) takes both from the cache, the law records its other SHA-256 and the same
+             physics identity; (c) a physics source changed by one comment line gives another identity, and an
+             executable carrying it runs both samples again; (d) so does a changed deck. Needs --cmake,
+             --source-dir, --physics-script, --physics-list and --physics-config.
 MODE interrupt: SIGTERM to runin homogenise after its first finished sample (shipped cell, 4 samples of 576
              summits, several seconds each): it stops its mpirun (no lmp_runin or mpirun left with the work
              directory in its command line), exits 1 with one line naming the signal, keeps the finished samples;
@@ -351,13 +358,99 @@ def mode_interrupt(args):
     print("interrupt: " + err.strip() + "; rerun: " + todo[0])
 
 
+def physics_identity(args, source_dir, output):
+    """The identity physics_identity.cmake computes for the sources under source_dir (the build's list)."""
+    subprocess.run([args.cmake, f"-DSOURCE_DIR={source_dir}", f"-DLIST={args.physics_list}",
+                    f"-DCONFIG={args.physics_config}", f"-DOUTPUT={output}", "-P", args.physics_script], check=True)
+    with open(output) as f:
+        return f.read()
+
+
+def mode_relink(args):
+    work, case = setup(args, "relink")
+    with open(case) as f:
+        text = f.read()
+    with open(case, "w") as f:  # one seed: 2 samples, one per partition
+        f.write(text.replace("seeds = 2", "seeds = 1"))
+    physics = args.lmp + ".physics"
+    if not os.path.isfile(physics):
+        fail(f"no {physics}: the build did not write lmp_runin's physics identity")
+    with open(physics) as f:
+        built = f.read()
+    # (a) the build's identity is that of the sources as they are
+    if physics_identity(args, args.source_dir, os.path.join(work, "identity_now")) != built:
+        fail(f"{physics} is not the identity of the current physics sources: the build did not regenerate it")
+
+    law, cache = os.path.join(work, "law.json"), os.path.join(work, "cache")
+    cold, _ = homogenise(args, case, law, cache, args.deck, 0)
+    if "2 samples to run" not in cold.stdout:
+        fail("the cold run did not run its 2 samples")
+
+    # (b) a relink: other bytes, the same physics
+    bindir = os.path.join(work, "bin")
+    os.makedirs(bindir)
+    relinked = os.path.join(bindir, "lmp_runin")
+    shutil.copy2(args.lmp, relinked)
+    with open(relinked, "ab") as f:
+        f.write(b"\0relinked\0")
+    shutil.copy2(physics, relinked + ".physics")
+    relinked_args = argparse.Namespace(**{**vars(args), "lmp": relinked})
+    law2 = os.path.join(work, "law_relinked.json")
+    again, _ = homogenise(relinked_args, case, law2, cache, args.deck, 0)
+    if "0 samples to run" not in again.stdout or "mpirun" in again.stdout:
+        fail("a relinked lmp_runin with the same physics did not take the samples from the cache")
+    with open(law) as f:
+        first = json.load(f)
+    with open(law2) as f:
+        second = json.load(f)
+    lmp1, lmp2 = first["provenance"]["lmp"], second["provenance"]["lmp"]
+    if lmp1["sha256"] == lmp2["sha256"] or lmp1.get("physics_sha256") != built.splitlines()[0] \
+            or lmp2.get("physics_sha256") != lmp1["physics_sha256"]:
+        fail(f"provenance.lmp: {lmp1} then {lmp2}: expected two executables with the one physics identity")
+    if second["fields"] != first["fields"]:
+        fail("the law from the cache differs")
+
+    # (c) a physics source changed: another identity, every sample again
+    tree = os.path.join(work, "src")
+    with open(args.physics_list) as f:
+        sources = [line.strip() for line in f if line.strip()]
+    for name in sources:
+        os.makedirs(os.path.dirname(os.path.join(tree, name)), exist_ok=True)
+        shutil.copy2(os.path.join(args.source_dir, name), os.path.join(tree, name))
+    changed = next(name for name in sources if name.startswith("src/tribo/") and name.endswith(".cpp"))
+    with open(os.path.join(tree, changed), "a") as f:
+        f.write("// a changed physics source\n")
+    other = physics_identity(args, tree, os.path.join(work, "identity_changed"))
+    if other.splitlines()[0] == built.splitlines()[0]:
+        fail(f"a change of {changed} did not change the physics identity")
+    with open(relinked + ".physics", "w") as f:
+        f.write(other)
+    rebuilt, _ = homogenise(relinked_args, case, os.path.join(work, "law_changed.json"), cache, args.deck, 0)
+    if "2 samples to run" not in rebuilt.stdout:
+        fail(f"an lmp_runin built from a changed {changed} did not run the samples again")
+
+    # (d) the same executable, a changed deck
+    shutil.copy2(physics, relinked + ".physics")
+    deck = os.path.join(work, "in.deck_changed")
+    with open(args.deck) as f:
+        text = f.read()
+    with open(deck, "w") as f:
+        f.write(text + "# a changed deck\n")
+    redecked, _ = homogenise(relinked_args, case, os.path.join(work, "law_deck.json"), cache, deck, 0)
+    if "2 samples to run" not in redecked.stdout:
+        fail("a changed deck did not run the samples again")
+    print(f"check_homogenise: relink: cached; {changed} changed: rerun; deck changed: rerun")
+
+
 def main():
     parser = argparse.ArgumentParser()
     for option in ("--runin", "--lmp", "--reader", "--deck", "--workdir", "--material"):
         parser.add_argument(option, required=True)
     modes = {"build": mode_build, "fail": mode_fail, "interrupt": mode_interrupt, "launcher": mode_launcher,
-             "launcher_alone": mode_launcher_alone, "extra": mode_extra}
+             "launcher_alone": mode_launcher_alone, "extra": mode_extra, "relink": mode_relink}
     parser.add_argument("--mode", choices=list(modes), required=True)
+    for option in ("--cmake", "--source-dir", "--physics-script", "--physics-list", "--physics-config"):
+        parser.add_argument(option)  # mode relink
     args = parser.parse_args()
     modes[args.mode](args)
     print("check_homogenise: ok")

@@ -15,6 +15,10 @@ Asserted (doc/rve_cell.md, "rough on rough"):
   - the worn volume is Archard's: h + h_cf = 2 k p s / H to 1e-3;
   - the complete output file exists only after the run (out.part renamed at the end).
 ranks: the cell at 1 and 2 MPI ranks, every output value to 1e-9 relative.
+bins: the deck's settings for speed (doc/homogenise.md, "Speed") change no bit of the output, at 20 MPa: its
+  neighbour bins, a sixth of the list cutoff 2R + skin, against LAMMPS's own (half the cutoff), with the same
+  neighbour count and list builds; and its load per summit, a number, against the equal-style variable
+  -v_load/count(slider) that fix aveforce evaluated every step before.
 """
 import argparse
 import os
@@ -22,7 +26,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_deck import SOURCE_DIR, fail, fresh_dir, numeric_table, run_lammps  # noqa: E402
+from run_deck import SOURCE_DIR, fail, fresh_dir, numeric_table, run_lammps, run_lammps_two_at_a_time  # noqa: E402
 
 DECK = os.path.join(SOURCE_DIR, "inputs", "in.rve_rough")
 MATERIAL = os.path.join(SOURCE_DIR, "potentials", "Steel1020.runin")
@@ -93,9 +97,53 @@ def ranks(args):
     print("PASS")
 
 
+def bins(args):
+    fresh_dir(args.workdir)
+    radius, skin = 1.0e-4, 4.0e-6  # the deck's R and skin
+    cutoff = 2.0 * radius + skin
+    with open(DECK) as f:
+        text = f.read()
+    line = re.search(r"^fix +press slider aveforce NULL NULL (\S+)$", text, re.M)
+    if not line or not line.group(1).startswith("$("):
+        fail(f"the deck's fix press does not take the load per summit as a number: {line and line.group(0)}")
+    variable_deck = os.path.join(args.workdir, "in.rve_rough_variable")
+    with open(variable_deck, "w") as f:
+        f.write(text.replace(line.group(0), "variable        per_asperity equal -v_load/count(slider)\n"
+                                            "fix             press slider aveforce NULL NULL v_per_asperity"))
+    extras = {"deck": {}, "lammps": {"binsize": cutoff / 2.0}}
+    common = {"material": MATERIAL, "pressure": 2.0e7, "accel": 1.0, "nside": args.nside, "depth": args.depth,
+              "seed": 11, "nout": 100}
+    run_lammps_two_at_a_time(args, DECK, [(name, {**common, "out": f"{name}.dat", **extra})
+                                          for name, extra in extras.items()])
+    run_lammps_two_at_a_time(args, variable_deck, [("variable", {**common, "out": "variable.dat"})])
+    runs = {}
+    for name in list(extras) + ["variable"]:
+        with open(os.path.join(args.workdir, f"log.{name}")) as f:
+            runs[name] = f.read()
+    sizes = {name: re.findall(r"binsize = (\S+), bins", log) for name, log in runs.items()}
+    if not sizes["deck"] or any(abs(float(s) / (cutoff / 6.0) - 1.0) > 1e-9 for s in sizes["deck"]):
+        fail(f"the deck's neighbour bins are {sizes['deck']}, not (2R + skin) / 6 = {cutoff / 6.0:g} m")
+    with open(os.path.join(args.workdir, "deck.dat"), "rb") as f:
+        deck_out = f.read()
+    with open(os.path.join(args.workdir, "lammps.dat"), "rb") as f:
+        lammps_out = f.read()
+    if deck_out != lammps_out:
+        fail("the output with the deck's bins differs from the output with LAMMPS's bins")
+    with open(os.path.join(args.workdir, "variable.dat"), "rb") as f:
+        if f.read() != deck_out:
+            fail("the output with the load per summit as a number differs from the one with its variable")
+    counts = {name: re.findall(r"^(?:Total # of neighbors|Neighbor list builds) = (\d+)", log, re.M)
+              for name, log in runs.items()}
+    if counts["deck"] != counts["lammps"] or not counts["deck"]:
+        fail(f"neighbour counts and list builds differ: {counts}")
+    print(f"bins {sizes['deck'][0]} m (deck) and {sizes['lammps'][0]} m (LAMMPS's), fix press with a number and with "
+          f"its variable: {len(deck_out)} bytes of output identical; neighbours and list builds {counts['deck']}")
+    print("PASS")
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("mode", choices=["physics", "ranks"])
+    parser.add_argument("mode", choices=["physics", "ranks", "bins"])
     parser.add_argument("--lmp", required=True)
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--mpiexec", default="mpiexec")
@@ -103,8 +151,8 @@ def main():
     parser.add_argument("--depth", type=float, default=5.0e-9)
     args = parser.parse_args()
     args.workdir = os.path.abspath(args.workdir)
-    args.nside = args.nside or (24 if args.mode == "physics" else 16)
-    physics(args) if args.mode == "physics" else ranks(args)
+    args.nside = args.nside or {"physics": 24, "ranks": 16, "bins": 12}[args.mode]
+    {"physics": physics, "ranks": ranks, "bins": bins}[args.mode](args)
 
 
 if __name__ == "__main__":
