@@ -558,8 +558,16 @@ coupling::HomogenisationSamples good_seeds(const HomogeniseCase &c, const std::v
 
 struct Provenance {
   fs::path deck, cache_dir;
-  std::string deck_text, lmp, lmp_sha256, physics_sha256;
+  std::string deck_text;
+  CodeIdentity code;  // the LAMMPS executable: path, SHA-256 and physics identity
 };
+
+// The law's record of the LAMMPS executable: its path and SHA-256, and its physics identity when it has one.
+nlohmann::json lmp_metadata(const CodeIdentity &code) {
+  nlohmann::json lmp = {{"path", portable_path(code.lmp_path)}, {"sha256", code.lmp_sha256}};
+  if (!code.physics_sha256.empty()) lmp["physics_sha256"] = code.physics_sha256;
+  return lmp;
+}
 
 // The LAMMPS version line of the first good sample that recorded one.
 std::string lammps_version(const std::vector<Sample> &samples, const std::map<const Sample *, DepthCurves> &curves) {
@@ -611,10 +619,7 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
        {{"runin_version", runin_version()},
         {"runin_git", runin_git_describe()},
         {"lammps_version", lammps_version(samples, curves)},
-        {"lmp", p.physics_sha256.empty()
-                    ? nlohmann::json{{"path", portable_path(p.lmp)}, {"sha256", p.lmp_sha256}}
-                    : nlohmann::json{{"path", portable_path(p.lmp)}, {"sha256", p.lmp_sha256},
-                                     {"physics_sha256", p.physics_sha256}}},
+        {"lmp", lmp_metadata(p.code)},
         {"command_line", portable_command_line(o.command_line)},
         {"case", {{"path", portable_path(o.case_path)},
                   {"sha256", sha256_hex(file_bytes(o.case_path))}}},
@@ -667,17 +672,16 @@ int run_homogenise(const Options &o) {
   Launcher launcher = resolve_launcher(o, c);
   Provenance p;
   p.deck = resolve_deck(o, c);
-  p.lmp = resolve_lmp(o);
+  const std::string lmp = resolve_lmp(o);
   p.deck_text = file_bytes(p.deck);
   check_deck(c, p.deck, p.deck_text);
   p.cache_dir = fs::absolute(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
-  const CodeIdentity code{runin_version(), p.lmp, sha256_hex(file_bytes(p.lmp)), lmp_physics_identity(p.lmp)};
-  p.lmp_sha256 = code.lmp_sha256;
-  p.physics_sha256 = code.physics_sha256;
+  p.code = CodeIdentity{runin_version(), lmp, sha256_hex(file_bytes(lmp)), lmp_physics_identity(lmp)};
+  const CodeIdentity &code = p.code;
   if (code.physics_sha256.empty())
     fmt::print("runin homogenise: note: no {}.physics beside it: the samples are keyed on the executable's SHA-256 "
                "(any relink reruns them)\n",
-               fs::path(p.lmp).filename().string());
+               fs::path(lmp).filename().string());
   const std::vector<Sample> samples = plan_samples(c, p.deck_text, code, p.cache_dir);
   std::vector<const Sample *> todo;
   for (const auto &s : samples)
@@ -691,7 +695,7 @@ int run_homogenise(const Options &o) {
   fmt::print("runin homogenise: {} samples to run\n", todo.size());
   std::fflush(stdout);
 
-  std::vector<Failure> failures = run_samples(c, todo, np, launcher, p.lmp, p.deck, p.cache_dir, start);
+  std::vector<Failure> failures = run_samples(c, todo, np, launcher, lmp, p.deck, p.cache_dir, start);
   const std::vector<double> grid = depth_grid(c.depth, c.depth_points, c.depth_first);
   const auto curves = read_curves(samples, grid, static_cast<double>(c.nside) * c.nside, failures);
   coupling::HomogenisationSamples good = good_seeds(c, samples, grid, curves, failures);
