@@ -21,7 +21,8 @@ def fresh_dir(path):
 
 
 # Open MPI on one node without probing network transports (the UCX layer) and, for a run started without mpiexec,
-# without forking a runtime daemon: lmp_runin starts in 0.18 s instead of 0.67 s, which is most of a bad-input test.
+# without forking a runtime daemon: lmp_runin starts in 0.14 s instead of 0.59 s (doc/measurements.md, "Test tiers"),
+# which was most of a bad-input test.
 # The same values as tools/run-tests exports; results do not depend on them.
 MPI_START_ENV = {"OMPI_MCA_pml": "ob1", "OMPI_MCA_btl": "self,vader", "OMPI_MCA_ess_singleton_isolated": "1"}
 
