@@ -34,7 +34,7 @@ Their peak height Rpk (ISO 13565-2: the 40 % secant of least gradient through th
 z(Mr) = min(T, Q^-1(Mr)), its value zc at Mr = 0; Rpk = 2 A1 / Mr1 with Mr1 = Q(zc), A1 = F1(zc) - F1(T),
 F1(h) = phi(h) - h Q(h)) is checked against a numerical evaluation of the ISO construction on a tabulated curve.
 Any falling R whose end is >= r R0 (r = Rpk(T) / Rpk(unworn)) gives mu_end / mu_0 >= r, so E >= (r - m) / (r + m),
-m = the bearing's mu_end / mu_0. numpy and the standard library only.
+m = the bearing's mu_end / mu_0. numpy, and scipy for the Nelder-Mead search, the root of F_2 and the Gaussian quantile.
 """
 import argparse
 import csv
@@ -46,6 +46,8 @@ import sys
 import tomllib
 
 import numpy as np
+import scipy.optimize
+import scipy.stats
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from runin_common import SOURCE_DIR, fail, fresh_dir, run_or_fail  # noqa: E402
@@ -80,39 +82,6 @@ def u_of(p, falling):
     return math.exp(p) if falling else math.expm1(-math.exp(p))
 
 
-def nelder_mead(f, x0, step=0.25, xtol=1e-7, ftol=1e-10, max_iter=2000):
-    """Plain Nelder-Mead (deterministic): the minimum found and its value."""
-    n = len(x0)
-    simplex = [np.array(x0, float)] + [np.array(x0, float) + step * np.eye(n)[i] for i in range(n)]
-    values = [f(x) for x in simplex]
-    for _ in range(max_iter):
-        order = np.argsort(values)
-        simplex, values = [simplex[i] for i in order], [values[i] for i in order]
-        size = max(np.max(np.abs(x - simplex[0])) for x in simplex[1:])
-        if size < xtol and values[-1] - values[0] < ftol:
-            break
-        centre = np.mean(simplex[:-1], axis=0)
-        xr = centre + (centre - simplex[-1])
-        fr = f(xr)
-        if fr < values[0]:
-            xe = centre + 2.0 * (centre - simplex[-1])
-            fe = f(xe)
-            simplex[-1], values[-1] = (xe, fe) if fe < fr else (xr, fr)
-        elif fr < values[-2]:
-            simplex[-1], values[-1] = xr, fr
-        else:
-            xc = centre + 0.5 * ((xr if fr < values[-1] else simplex[-1]) - centre)
-            fcon = f(xc)
-            if fcon < min(fr, values[-1]):
-                simplex[-1], values[-1] = xc, fcon
-            else:
-                for i in range(1, n + 1):
-                    simplex[i] = simplex[0] + 0.5 * (simplex[i] - simplex[0])
-                    values[i] = f(simplex[i])
-    k = int(np.argmin(values))
-    return simplex[k], values[k]
-
-
 def family_minimax(t, mu, falling):
     """The family's least max relative error, falling or rising R; asserts the optimum is inside the grid."""
     P = np.linspace(-7.0, 9.0, 33) if falling else np.linspace(-8.0, 2.5, 22)
@@ -128,7 +97,11 @@ def family_minimax(t, mu, falling):
     best = None
     for flat in np.argsort(E, axis=None)[:2]:
         i, j = np.unravel_index(flat, E.shape)
-        x, v = nelder_mead(f, [P[i], LA[j]])
+        found = scipy.optimize.minimize(f, [P[i], LA[j]], method="Nelder-Mead",
+                                        options={"initial_simplex": [[P[i], LA[j]], [P[i] + 0.25, LA[j]],
+                                                                     [P[i], LA[j] + 0.25]],
+                                                 "xatol": 1e-7, "fatol": 1e-10, "maxiter": 2000})
+        x, v = found.x, found.fun
         if best is None or v < best[1]:
             best = (x, v)
     x = best[0]
@@ -157,26 +130,9 @@ def F2(h):
     return (1.0 + h * h) * Q(h) - h * phi(h)
 
 
-def bisect(f, lo, hi, tol=1e-15):
-    flo = f(lo)
-    while hi - lo > tol * max(1.0, abs(hi)):
-        mid = 0.5 * (lo + hi)
-        if (f(mid) > 0.0) == (flo > 0.0):
-            lo, flo = mid, f(mid)
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
-
-
 def q_inv(mr):
-    """Height (in sigma) above which a Gaussian's share is mr (Newton from the inflection point: monotone)."""
-    z = 0.0
-    for _ in range(100):
-        step = (Q(z) - mr) / phi(z)
-        z += step
-        if abs(step) < 1e-14 * max(1.0, abs(z)):
-            break
-    return z
+    """Height (in sigma) above which a Gaussian's share is mr."""
+    return float(scipy.stats.norm.isf(mr))
 
 
 def rpk_closed(T):
@@ -305,7 +261,7 @@ def main():
     sigma = d["R_m"][0]
     depth = d["h_max_m"][-1] + d["shaft_depth_m"][-1]
     target = depth / (math.pi * eta * beta * sigma * sigma)
-    T = bisect(lambda h: F2(h) - target, -5.0, 12.0)
+    T = scipy.optimize.brentq(lambda h: F2(h) - target, -5.0, 12.0, xtol=1e-15, rtol=4 * np.finfo(float).eps)
     lo_rms = sigma * rms_ratio(T)
     print(f"worn summits at the end: deepest worn depth {1e9 * depth:.4g} nm, cut T = {T:.4f} sigma "
           f"(sigma {1e9 * sigma:.4g} nm); its RMS {1e9 * lo_rms:.4g} nm <= R_m(end) {1e9 * d['R_m'][-1]:.4g} nm")
