@@ -60,15 +60,23 @@ struct Neighbours {
 // The adaptor a pair host hands the pass: increments into `increments`, energy and virial through the pair's
 // ev_tally_xyz (a protected member of LAMMPS's Pair: the pair declares this a friend). FILM: the host keeps the
 // film coverage of friction models with a film.
+// positions: the atoms' own positions where the pass sees other points (the spheres' centres of caps), so that the
+// virial is that of the atoms; null: the pass's.
 template <class Pair, bool FILM> struct PairHost {
   static constexpr bool has_film = FILM;
   Pair &pair;
   Increments &increments;
   int nlocal, newton_pair;
+  double **positions = nullptr;
   void add_wear(int i, double lost, double gained) { increments.add_wear(i, lost, gained, nlocal); }
   void add_flattening(int i, double depth) { increments.add_flattening(i, depth, nlocal); }
   void tally(int i, int j, double energy, const double *fpair, const double *del)
   {
+    double own[3];
+    if (positions) {
+      for (int k = 0; k < 3; k++) own[k] = positions[i][k] - positions[j][k];
+      del = own;
+    }
     pair.ev_tally_xyz(i, j, nlocal, newton_pair, energy, 0.0, fpair[0], fpair[1], fpair[2], del[0], del[1], del[2]);
   }
 };

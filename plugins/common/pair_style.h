@@ -61,7 +61,7 @@ class PairStyle : public Pair, public LAMMPS_NS::RuninContactSource {
       models[i * n + j].emplace(choice, scaled(coeff_of(i, j)), contact_settings);
       models[j * n + i].emplace(choice, scaled(coeff_of(j, i)), contact_settings);
     });
-    return maxrad[i] + maxrad[j];
+    return host().list_cutoff(i, j);
   }
   void reset_dt() override { dt = this->update->dt; }
   double memory_usage() override
@@ -109,6 +109,9 @@ class PairStyle : public Pair, public LAMMPS_NS::RuninContactSource {
   {
     return coeffs[itype * (this->atom->ntypes + 1) + jtype];
   }
+
+  // The list's reach for types i, j: two whole spheres touch within the sum of their radii (a host may list less)
+  double list_cutoff(int i, int j) const { return maxrad[i] + maxrad[j]; }
 
   void set_sub_model(runin::tribo::SubModelKind kind, const std::string &name)
   {

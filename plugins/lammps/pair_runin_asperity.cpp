@@ -28,7 +28,9 @@
 #include "update.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <limits>
 
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
@@ -63,6 +65,7 @@ PairRuninAsperity::~PairRuninAsperity()
     modify->delete_fix(kHistoryId);
   else if (runin_compat::fix_by_id(modify, kDummyId))
     modify->delete_fix(kDummyId);
+  memory->destroy(centres);
   release();
 }
 
@@ -81,6 +84,11 @@ void PairRuninAsperity::settings(int narg, char **arg)
   bool coverage_given = false;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
+    if (keyword == "caps") {
+      parse_caps(narg, arg, iarg);
+      iarg += 2;    // three values
+      continue;
+    }
     if (iarg + 1 >= narg)
       error->all(FLERR, "pair_style runin/asperity: keyword '{}' needs a value", keyword);
     const std::string value = arg[iarg + 1];
@@ -104,7 +112,7 @@ void PairRuninAsperity::settings(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "pair_style runin/asperity: unknown keyword '{}' (expected wear, archard, reshape, rise, normal, "
-                 "friction, transfer, restick, wear_scale or coverage)",
+                 "friction, transfer, restick, wear_scale, coverage or caps)",
                  keyword);
     }
   }
@@ -118,6 +126,96 @@ void PairRuninAsperity::settings(int narg, char **arg)
                tribo::registered_sub_models(SubModelKind::friction)[choice.of(SubModelKind::friction)].name);
   if ((wear_on || plastic_normal()) && domain->box_exist) attach_wear_state();
   if (film_friction() && domain->box_exist) fix_film = FixRuninFilm::find_or_create(modify, initial_coverage);
+}
+
+// caps UP DOWN INTERFERENCE: the types whose summits face +z and -z, and the largest interference of a summit of UP
+// with one of DOWN (how far a top of UP may stand above a top of DOWN, their wear and flattening taken off) [m].
+void PairRuninAsperity::parse_caps(int narg, char **arg, int iarg)
+{
+  if (iarg + 3 >= narg)
+    error->all(FLERR, "pair_style runin/asperity: caps needs three values: the type whose summits face +z, the type "
+                      "whose summits face -z, and the largest interference [m]");
+  const auto type_of = [&](const char *text, const char *name) {
+    char *end = nullptr;
+    const long value = std::strtol(text, &end, 10);
+    if (end == text || *end != '\0' || value < 1 || (domain->box_exist && value > atom->ntypes))
+      error->all(FLERR, "pair_style runin/asperity: caps {} type must be an atom type{}, got '{}'", name,
+                 domain->box_exist ? fmt::format(" (1-{})", atom->ntypes) : "", text);
+    return static_cast<int>(value);
+  };
+  caps_up = type_of(arg[iarg + 1], "up");
+  caps_down = type_of(arg[iarg + 2], "down");
+  if (caps_up == caps_down)
+    error->all(FLERR, "pair_style runin/asperity: caps up and down types must differ, got {} for both", caps_up);
+  caps_interference =
+      runin_lammps::finite_number(lmp, FLERR, "pair_style runin/asperity", "caps interference", arg[iarg + 3]);
+  if (!(caps_interference > 0.0))
+    error->all(FLERR, "pair_style runin/asperity: caps interference must be > 0 m, got '{}'", arg[iarg + 3]);
+}
+
+// Two caps of radii R_i, R_j touch only where the top of one stands into the other (interference u > 0), within
+// sqrt(2 (R_i + R_j) u) of each other: the list needs that reach at the largest u, not the spheres' diameter.
+double PairRuninAsperity::caps_cutoff(int i, int j) const
+{
+  return std::sqrt(2.0 * (maxrad[i] + maxrad[j]) * caps_interference);
+}
+
+// Each atom is the top of its summit: the sphere's centre lies one radius below it (caps up) or above it (down).
+void PairRuninAsperity::place_centres(int first, int last)
+{
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  for (int k = first; k < last; k++) {
+    const double side = type[k] == caps_up ? -1.0 : 1.0;
+    centres[k][0] = x[k][0];
+    centres[k][1] = x[k][1];
+    centres[k][2] = x[k][2] + side * radius[k];
+  }
+}
+
+// A pair of caps outside the list touches only if a top of UP stands above a top of DOWN by more than the list's
+// reach allows. The list holds every pair of tops within cutoff c; two caps touch where d^2 < (u - D)(2 R_s - u - D)
+// at a lateral distance d, raw interference u of the tops and drop D of both (wear and flattening; below zero where
+// material was deposited or the surface rose): their tops' distance^2 is below (u - D)(2 R_s - u - D) + u^2, largest
+// at the largest u and smallest D over the bodies. ERROR if that exceeds c^2.
+void PairRuninAsperity::check_caps()
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const bool worn = reshape && fix_wear;
+  double **state = worn ? fix_wear->state() : nullptr;
+  const auto drop = [&](int k) {
+    if (!worn) return 0.0;
+    const double rise = rise_on ? state[k][FixRuninWearState::RISE] : 0.0;
+    return state[k][FixRuninWearState::WEAR_DEPTH] - rise;
+  };
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  // highest top of UP, -lowest top of DOWN, -smallest drop of UP, -smallest drop of DOWN
+  double local[4] = {-inf, -inf, -inf, -inf}, global[4];
+  for (int k = 0; k < atom->nlocal; k++) {
+    if (type[k] == caps_up) {
+      local[0] = std::max(local[0], x[k][2]);
+      local[2] = std::max(local[2], -drop(k));
+    } else if (type[k] == caps_down) {
+      local[1] = std::max(local[1], -x[k][2]);
+      local[3] = std::max(local[3], -drop(k));
+    }
+  }
+  MPI_Allreduce(local, global, 4, MPI_DOUBLE, MPI_MAX, world);
+  if (!(global[0] > -inf && global[1] > -inf)) return;    // a body without summits
+  const double u = global[0] + global[1], d_min = -(global[2] + global[3]);
+  const double sum_radii = maxrad[caps_up] + maxrad[caps_down];
+  if (!(u > d_min)) return;    // no top stands into the other body
+  const double reach_sq = (u - d_min) * (2.0 * sum_radii - u - d_min) + u * u;
+  const double cutoff = caps_cutoff(caps_up, caps_down);
+  if (!(reach_sq <= cutoff * cutoff))
+    error->all(FLERR,
+               "pair runin/asperity: caps: at step {} a top of type {} stands {:.4g} m above one of type {} (their "
+               "wear and flattening {:.4g} m); contacts may then lie beyond the list's reach {:.4g} m of caps "
+               "interference {:.4g} m: raise the caps interference to at least {:.4g} m",
+               update->ntimestep, caps_up, u, caps_down, d_min, cutoff, caps_interference,
+               reach_sq / (2.0 * sum_radii));
 }
 
 bool PairRuninAsperity::film_friction() const
@@ -154,7 +252,27 @@ void PairRuninAsperity::init_style()
   runin_lammps::require_si_units(lmp, FLERR, "pair runin/asperity");
   runin_lammps::cite(lmp, runin_lammps::model_citations(choice, wear_on, false));
 
-  runin_compat::request_size_history_list(this, neighbor, instance_me);
+  if (caps()) {
+    if (caps_up > atom->ntypes || caps_down > atom->ntypes)
+      error->all(FLERR, "pair_style runin/asperity: caps types {} and {}: the box has {} atom types", caps_up,
+                 caps_down, atom->ntypes);
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (t != caps_up && t != caps_down)
+        error->all(FLERR, "pair_style runin/asperity: caps: type {} is neither the up ({}) nor the down ({}) type; "
+                          "with caps every summit is a cap of one of the two bodies", t, caps_up, caps_down);
+    if (domain->zperiodic)
+      error->all(FLERR, "pair_style runin/asperity: caps face along z: the box must not be periodic in z");
+    if (runin_compat::fix_by_style(modify, "runin/wall"))
+      error->all(FLERR, "pair_style runin/asperity: caps and fix runin/wall: the wall sees whole spheres at the atoms; "
+                        "use caps only between two bodies of summits");
+    // the tops' distance decides the list (no size list: the spheres' diameters would set its reach); such a list
+    // does not mark the pairs within reach, so the history fix looks every listed pair up
+    runin_compat::request_history_list(this, neighbor, instance_me);
+    beyond_contact = 1;
+  } else {
+    runin_compat::request_size_history_list(this, neighbor, instance_me);
+    beyond_contact = 0;
+  }
   dt = update->dt;
 
   size_history(fix_history != nullptr);
@@ -222,6 +340,15 @@ void PairRuninAsperity::compute(int eflag, int vflag)
       reach_drop[NCOL * k] = state[k][FixRuninWearState::WEAR_DEPTH] - state[k][FixRuninWearState::RISE];
   }
   if (track_wear) increments.reserve(atom->nmax);
+  if (caps()) {
+    if (atom->nmax > centres_nmax) {
+      centres_nmax = atom->nmax;
+      memory->destroy(centres);
+      memory->create(centres, centres_nmax, 3, "pair:centres");
+    }
+    place_centres(0, atom->nlocal + atom->nghost);
+    check_caps();
+  }
 
   if (fix_film) {
     // the film of each type: its own I,I pair's removal distance and growth rate
@@ -307,8 +434,8 @@ void PairRuninAsperity::raise_free_surfaces()
 
 runin_pair::Atoms<tagint> PairRuninAsperity::loop_atoms() const
 {
-  return {atom->x,      atom->v,     atom->omega, atom->f,   atom->torque, atom->radius,
-          atom->rmass,  atom->type,  atom->mask,  atom->tag, atom->nlocal};
+  return {caps() ? centres : atom->x, atom->v,  atom->omega, atom->f,   atom->torque, atom->radius,
+          atom->rmass,                 atom->type, atom->mask, atom->tag, atom->nlocal};
 }
 
 runin_pair::Neighbours PairRuninAsperity::neighbours() const
@@ -332,7 +459,8 @@ void PairRuninAsperity::eval(int eflag)
   step.coverage = film ? fix_film->coverage() : nullptr;
   step.film_removal = film ? fix_film->exposure() : nullptr;
   step.film_inverse_removal = film ? film_inverse_removal_.data() : nullptr;
-  runin_pair::PairHost<PairRuninAsperity, true> host{*this, increments, atom->nlocal, force->newton_pair};
+  runin_pair::PairHost<PairRuninAsperity, true> host{*this, increments, atom->nlocal, force->newton_pair,
+                                                      caps() ? atom->x : nullptr};
   const runin_pair::Outcome outcome = runin_pair::contacts<NORMAL, FRICTION, WEAR, RESHAPE, SUMS, EVFLAG, W>(
       host, loop_atoms(), neighbours(), step, eflag, touching, contact_range);
   if (SUMS) sums = outcome.sums;
@@ -368,6 +496,14 @@ double PairRuninAsperity::single(int i, int j, int itype, int jtype, double rsq,
       error->one(FLERR, "pair runin/asperity: single() needs the contact history (run setup first)");
     runin_pair::copy_history(neighbours(), i, j, history_size, history);
   };
+  if (caps()) {
+    // LAMMPS measured rsq between the tops; the contact is between the centres
+    if (std::max(i, j) >= centres_nmax) error->one(FLERR, "pair runin/asperity: single() before the first run");
+    place_centres(i, i + 1);
+    place_centres(j, j + 1);
+    rsq = 0.0;
+    for (int k = 0; k < 3; k++) rsq += (centres[i][k] - centres[j][k]) * (centres[i][k] - centres[j][k]);
+  }
   runin_pair::SingleContact contact;
   runin_lammps::kernel_call(lmp, FLERR, "pair runin/asperity: single()", false, [&] {
     contact = runin_pair::single_contact<FixRuninWearState>(loop_atoms(), state,
@@ -456,13 +592,19 @@ void PairRuninAsperity::read_restart(FILE *fp)
 
 void PairRuninAsperity::write_restart_settings(FILE *fp)
 {
-  // rise rides on the reshape flag as its second bit: files without it read as before
+  // rise rides on the reshape flag as its second bit: files without it read as before; caps (flag 8) appends its
+  // types and interference
   const int flags[3] = {wear_on ? 1 : 0, contact_settings.archard_form == tribo::ArchardForm::thesis ? 1 : 0,
-                        (reshape ? 1 : 0) | (rise_on ? 2 : 0) | (rise_free ? 4 : 0)};
+                        (reshape ? 1 : 0) | (rise_on ? 2 : 0) | (rise_free ? 4 : 0) | (caps() ? 8 : 0)};
   fwrite(flags, sizeof(int), 3, fp);
   fwrite(choice.index.data(), sizeof(int), tribo::kSubModelKinds, fp);
   const double values[2] = {contact_settings.transfer_fraction, contact_settings.restick_speed};
   fwrite(values, sizeof(double), 2, fp);
+  if (caps()) {
+    const int types[2] = {caps_up, caps_down};
+    fwrite(types, sizeof(int), 2, fp);
+    fwrite(&caps_interference, sizeof(double), 1, fp);
+  }
 }
 
 void PairRuninAsperity::read_restart_settings(FILE *fp)
@@ -477,6 +619,19 @@ void PairRuninAsperity::read_restart_settings(FILE *fp)
   MPI_Bcast(flags, 3, MPI_INT, 0, world);
   MPI_Bcast(choice.index.data(), tribo::kSubModelKinds, MPI_INT, 0, world);
   MPI_Bcast(values, 2, MPI_DOUBLE, 0, world);
+  int types[2] = {0, 0};
+  double interference = 0.0;
+  if ((flags[2] & 8) == 8) {
+    if (comm->me == 0) {
+      utils::sfread(FLERR, types, sizeof(int), 2, fp, nullptr, error);
+      utils::sfread(FLERR, &interference, sizeof(double), 1, fp, nullptr, error);
+    }
+    MPI_Bcast(types, 2, MPI_INT, 0, world);
+    MPI_Bcast(&interference, 1, MPI_DOUBLE, 0, world);
+  }
+  caps_up = types[0];
+  caps_down = types[1];
+  caps_interference = interference;
   for (int k = 0; k < tribo::kSubModelKinds; k++) {
     const int n = static_cast<int>(tribo::registered_sub_models(static_cast<SubModelKind>(k)).size());
     if (choice.index[k] < 0 || choice.index[k] >= n)

@@ -63,6 +63,21 @@ class PairRuninAsperity : public runin_pair::PairStyle<PairRuninAsperity, Pair, 
   void raise_free_surfaces();    // this step's flattened volume per type, before the increments are applied
   bool from_restart;               // coefficients came from a restart file (pair_style must not change models)
 
+  // caps (pair_style caps UP DOWN INTERFERENCE): each atom sits at the top of its summit, which faces +z (type
+  // caps_up) or -z (caps_down); the sphere's centre is one radius behind it. The neighbour list then needs the
+  // reach of two caps (sqrt(2 (R_i + R_j) interference)), not a summit's diameter, and every step checks that no
+  // summit stands further into the other body than `caps_interference` allows (else a contact could be missed).
+  int caps_up = 0, caps_down = 0;    // 0: whole spheres (atoms at the centres)
+  double caps_interference = 0.0;    // [m]
+  double **centres = nullptr;        // caps: the spheres' centres of owned + ghost atoms (the pass's positions)
+  int centres_nmax = 0;
+  bool caps() const { return caps_up > 0; }
+  double caps_cutoff(int i, int j) const;    // the list cutoff of types i, j with caps
+  double list_cutoff(int i, int j) const { return caps() ? caps_cutoff(i, j) : maxrad[i] + maxrad[j]; }
+  void place_centres(int first, int last);    // centres of atoms [first, last)
+  void check_caps();                          // ERROR if a contact could lie beyond the list's cutoff
+  void parse_caps(int narg, char **arg, int iarg);
+
   // the increments are owned + ghost, reverse-communicated
   bool comm_gained, comm_flattened;    // which increments reverse communication carries besides 'lost'
 

@@ -11,6 +11,7 @@
 #include "neighbor.h"
 #include "pair.h"
 
+#include <cstring>
 #include <string>
 
 #ifndef RUNIN_NEIGHBOR_ADD_REQUEST
@@ -28,6 +29,18 @@ inline void request_size_history_list(LAMMPS_NS::Pair *pair, LAMMPS_NS::Neighbor
 #else
   const int request = neighbor->request(pair, instance);
   neighbor->requests[request]->size = 1;
+  neighbor->requests[request]->history = 1;
+#endif
+}
+
+// A half list with contact history whose reach is the pair's type cutoff (init_one), not the atoms' sizes.
+inline void request_history_list(LAMMPS_NS::Pair *pair, LAMMPS_NS::Neighbor *neighbor, int instance)
+{
+#ifdef RUNIN_NEIGHBOR_ADD_REQUEST
+  (void) instance;
+  neighbor->add_request(pair, LAMMPS_NS::NeighConst::REQ_HISTORY);
+#else
+  const int request = neighbor->request(pair, instance);
   neighbor->requests[request]->history = 1;
 #endif
 }
@@ -90,6 +103,14 @@ inline LAMMPS_NS::Fix *fix_by_id(LAMMPS_NS::Modify *modify, const std::string &i
   const int index = modify->find_fix(id);
   return index >= 0 ? modify->fix[index] : nullptr;
 #endif
+}
+
+// Whether a fix of this style exists.
+inline bool fix_by_style(LAMMPS_NS::Modify *modify, const char *style)
+{
+  for (int k = 0; k < modify->nfix; k++)
+    if (std::strcmp(modify->fix[k]->style, style) == 0) return true;
+  return false;
 }
 
 }    // namespace runin_compat

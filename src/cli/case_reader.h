@@ -78,6 +78,12 @@ class CaseReader {
     if (value < 0.0) fail(key, "must be >= 0, got " + format(value));
     return value;
   }
+  bool flag(const std::string &key, bool fallback) const {
+    const toml::node *node = root_.at_path(key).node();
+    if (!node) return fallback;
+    if (!node->is_boolean()) fail(key, "expected true or false, got " + type_name(*node));
+    return *node->value<bool>();
+  }
   // In (0, max]: a key whose huge values would overflow the run's arithmetic or its run time.
   double positive_at_most(const std::string &key, double max, std::optional<double> fallback = std::nullopt) const {
     const double value = positive(key, fallback);

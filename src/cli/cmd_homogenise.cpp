@@ -201,6 +201,7 @@ void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &de
       {"nslide", std::to_string(c.nslide)}, {"nout", std::to_string(c.nout)}, {"out", s.output().string()},
   };
   if (!c.heights_file.empty()) vars.insert(vars.end(), {{"height_source", "list"}, {"heights", c.heights_file}});
+  if (c.caps) vars.emplace_back("caps", "yes");
   if (!c.contact_json().is_null()) {
     vars.emplace_back("friction", c.friction);
     if (!c.interface.empty()) vars.emplace_back("interface", c.interface);
@@ -439,6 +440,9 @@ void check_deck(const HomogeniseCase &c, const fs::path &deck, const std::string
     throw InputError(c.path + ": key 'contact.friction': the deck " + deck.string() +
                      " takes no friction model or interface state (it has no interface variable; inputs/in.rve_rough "
                      "and inputs/in.rve_wall do)");
+  if (c.caps && deck_variable(deck_text, "caps").empty())
+    throw InputError(c.path + ": key 'surface.caps': the deck " + deck.string() +
+                     " has no caps variable (inputs/in.rve_rough has: pair_style runin/asperity caps)");
   if (c.jump_max_depth > 0.0 && deck_variable(deck_text, "jump").empty())
     throw InputError(c.path + ": key 'wear.jump_max_depth': the deck " + deck.string() +
                      " does not support cycle jumping (it has no jump variable; inputs/in.rve_rough does)");
@@ -626,6 +630,7 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
         {"date_utc", utc_now()},
         {"host", host_name()}}},
   };
+  if (c.caps) metadata["surface"]["caps"] = true;
   if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) metadata["samples"]["wear"] = wear;
   if (nlohmann::json contact = c.contact_json(); !contact.is_null()) {
     // a law that takes the state's m as its f: its coefficients as the deck's file form gives them (f = m, the

@@ -24,7 +24,7 @@ const Schema &schema() {
   static const Schema s = {
       {"", {"title", "deck", "material", "surface", "sliding", "grid", "contact", "wear", "run"}},
       {"material", {"file", "rough", "counterface"}},
-      {"surface", {"R", "sigma", "spacing", "nside", "heights"}},
+      {"surface", {"R", "sigma", "spacing", "nside", "heights", "caps"}},
       {"sliding", {"speed"}},
       {"contact", {"friction", "interface"}},
       {"wear", {"k", "jump_max_depth", "jump_every", "jump_reference_pressure", "jump_max_change", "jump_rate"}},
@@ -360,6 +360,7 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
   c.nside = reader.positive_integer("surface.nside", c.nside, 1000);
   const std::string heights = reader.text("surface.heights", "");
   if (!heights.empty()) check_summit_list(reader, find_case_file(reader, "surface.heights", heights), c);
+  c.caps = reader.flag("surface.caps", false);
 
   // [sliding]
   c.speed = reader.positive("sliding.speed", c.speed);
@@ -459,6 +460,8 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
   const std::string deck_sha = sha256_hex(deck_text);
   nlohmann::json surface = {{"R", c.R}, {"sigma", c.sigma}, {"spacing", c.spacing}, {"nside", c.nside}};
   if (!c.heights_file.empty()) surface["heights_sha256"] = c.heights_sha256;
+  // caps change the arithmetic (the centres are computed), so the last bits of a sample; absent: whole spheres
+  if (c.caps) surface["caps"] = true;
   // the physics the executable was built from, not its bytes: a relink of the same sources hits the cache
   const nlohmann::json code_key =
       code.physics_sha256.empty()

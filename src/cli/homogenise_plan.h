@@ -30,6 +30,7 @@ struct HomogeniseCase {
   long nside = 64;
   std::string heights_file;  // resolved summit list (LAMMPS atomfile "ID z"), empty: Gaussian heights of RMS sigma
   std::string heights_sha256;  // of the list's bytes as checked (part of every sample's key)
+  bool caps = false;  // the deck's summits as caps (pair_style runin/asperity caps): the same spheres, a shorter list
   // [sliding]
   double speed = 0.1;
   // [grid]

@@ -33,6 +33,8 @@ def run_lmp(args, deck, variables, log, np=1):
         variables["jump"] = args.jump    # fix runin/wear/jump from the slide on (the decks' jump variables)
         if getattr(args, "jump_rate", 0.0) > 0.0:
             variables.update(jump_rate=args.jump_rate, jump_max_depth=args.jump_max_depth)
+    if getattr(args, "caps", False):
+        variables["caps"] = "yes"    # the same spheres as caps: atoms at their tops (pair_style caps)
     if normal == "elastic/plastic" and "load" not in variables:
         variables["load"] = PLASTIC_LOAD
     return thermo_blocks(run_lammps(args, os.path.join(DECKS, deck), variables, log, np))
@@ -209,6 +211,8 @@ def main():
         p.add_argument("--normal", default="hertz", choices=("hertz", "elastic/plastic"))
         if name == "impact":
             p.add_argument("--restitution", type=float, nargs="+")
+        else:
+            p.add_argument("--caps", action="store_true", help="the slider's spheres as caps (pair_style caps)")
         if name == "restart":
             p.add_argument("--jump", type=float, default=1.0, help="jump factor of fix runin/wear/jump (1: none)")
             p.add_argument("--jump-rate", type=float, default=0.0, help="with --jump: its rate tolerance (the "
