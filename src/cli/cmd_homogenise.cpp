@@ -196,7 +196,7 @@ void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &de
   std::vector<std::pair<std::string, std::string>> vars = {
       {"material", c.material_file}, {"rough", c.rough},         {"counterface", c.counterface},
       {"R", g17(c.R)},               {"sigma", g17(c.sigma)},    {"spacing", g17(c.spacing)},
-      {"nside", std::to_string(c.nside)}, {"pressure", g17(s.pressure)}, {"speed", g17(c.speed)},
+      {"nside", std::to_string(s.nside)}, {"pressure", g17(s.pressure)}, {"speed", g17(c.speed)},
       {"seed", std::to_string(s.seed)},   {"accel", g17(s.acceleration * c.wear_scale)}, {"depth", g17(c.depth)},
       {"nslide", std::to_string(c.nslide)}, {"nout", std::to_string(c.nout)}, {"out", s.output().string()},
   };
@@ -514,13 +514,15 @@ std::vector<Failure> run_samples(const HomogeniseCase &c, const std::vector<cons
   return failures;
 }
 
-// Each complete sample on the h grid; a sample that cannot be read or did not reach the depth fails too.
+// Each complete sample on the h grid (its contact fraction over its own cell's summits); a sample that cannot be read
+// or did not reach the depth fails too.
 std::map<const Sample *, DepthCurves> read_curves(const std::vector<Sample> &samples, const std::vector<double> &grid,
-                                                   double rough_summits, std::vector<Failure> &failures) {
+                                                   std::vector<Failure> &failures) {
   std::map<const Sample *, DepthCurves> curves;
   for (const auto &s : samples) {
     if (!s.complete()) continue;
     try {
+      const double rough_summits = static_cast<double>(s.nside) * static_cast<double>(s.nside);
       curves.emplace(&s, resample_on_depth_grid(cell_series(coupling::read_ave_time(s.output().string()), rough_summits),
                                                 grid, s.acceleration));
     } catch (const std::exception &e) {
@@ -631,6 +633,8 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
         {"host", host_name()}}},
   };
   if (c.caps) metadata["surface"]["caps"] = true;
+  if (std::any_of(c.nside_at.begin(), c.nside_at.end(), [&](long n) { return n != c.nside; }))
+    metadata["surface"]["nside_at_pressure"] = c.nside_at;    // larger cells below the grid (grid.extra_nside)
   if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) metadata["samples"]["wear"] = wear;
   if (nlohmann::json contact = c.contact_json(); !contact.is_null()) {
     // a law that takes the state's m as its f: its coefficients as the deck's file form gives them (f = m, the
@@ -694,15 +698,21 @@ int run_homogenise(const Options &o) {
   check_launcher_and_cache(!todo.empty(), launcher, p.cache_dir);
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int np = static_cast<int>(std::min<std::size_t>(o.np > 0 ? o.np : cores, std::max<std::size_t>(1, todo.size())));
-  fmt::print("runin homogenise: {}: {} pressures x {} seeds = {} samples of {} summits; {} cached in {}\n",
-             o.case_path, c.pressures.size(), c.seeds.size(), samples.size(), c.nside * c.nside,
+  std::string larger_cells;
+  for (std::size_t ip = 0; ip < c.pressures.size(); ++ip)
+    if (c.nside_at[ip] != c.nside)
+      larger_cells += fmt::format("{}{} at {:.4g} Pa", larger_cells.empty() ? " (" : ", ", c.nside_at[ip] * c.nside_at[ip],
+                                  c.pressures[ip]);
+  if (!larger_cells.empty()) larger_cells += ")";
+  fmt::print("runin homogenise: {}: {} pressures x {} seeds = {} samples of {} summits{}; {} cached in {}\n",
+             o.case_path, c.pressures.size(), c.seeds.size(), samples.size(), c.nside * c.nside, larger_cells,
              samples.size() - todo.size(), p.cache_dir.string());
   fmt::print("runin homogenise: {} samples to run\n", todo.size());
   std::fflush(stdout);
 
   std::vector<Failure> failures = run_samples(c, todo, np, launcher, lmp, p.deck, p.cache_dir, start);
   const std::vector<double> grid = depth_grid(c.depth, c.depth_points, c.depth_first);
-  const auto curves = read_curves(samples, grid, static_cast<double>(c.nside) * c.nside, failures);
+  const auto curves = read_curves(samples, grid, failures);
   coupling::HomogenisationSamples good = good_seeds(c, samples, grid, curves, failures);
   good.metadata = law_metadata(o, c, p, samples, curves, failures);
   write_law(o, good);

@@ -30,7 +30,8 @@ const Schema &schema() {
       {"wear", {"k", "jump_max_depth", "jump_every", "jump_reference_pressure", "jump_max_change", "jump_rate"}},
       {"run", {"launcher"}},
       {"grid",
-       {"pressure_min", "pressure_max", "pressures", "extra_pressures", "seeds", "acceleration", "depth", "depth_points",
+       {"pressure_min", "pressure_max", "pressures", "extra_pressures", "extra_nside", "seeds", "acceleration", "depth",
+        "depth_points",
         "depth_first", "nslide", "nout"}},
   };
   return s;
@@ -322,6 +323,7 @@ void read_grid_pressures(const CaseReader &reader, HomogeniseCase &c) {
     c.pressures.push_back(i == pressures - 1 ? c.pressure_max
                                              : c.pressure_min * std::pow(c.pressure_max / c.pressure_min, t));
   }
+  c.nside_at.assign(c.pressures.size(), c.nside);
   // Pressures added to the log grid (an element's low-pressure edges): a new pressure_min or count would move
   // every grid pressure, and so miss every cached sample.
   if (reader.has("grid.extra_pressures")) {
@@ -337,7 +339,37 @@ void read_grid_pressures(const CaseReader &reader, HomogeniseCase &c) {
                                   extra[i], p));
       c.pressures.push_back(extra[i]);
     }
-    std::sort(c.pressures.begin(), c.pressures.end());
+    // a larger cell below the grid keeps enough summits in contact where the pressure is low
+    std::vector<long> extra_nside(extra.size(), c.nside);
+    if (reader.has("grid.extra_nside")) {
+      if (!c.heights_file.empty())
+        reader.fail("grid.extra_nside", "not with surface.heights (the summit list has surface.nside^2 summits)");
+      const std::vector<double> given = reader.numbers("grid.extra_nside");
+      if (given.size() != extra.size())
+        reader.fail("grid.extra_nside", fmt::format("{} values for {} grid.extra_pressures: give one per pressure",
+                                                    given.size(), extra.size()));
+      for (std::size_t i = 0; i < given.size(); ++i) {
+        if (!(given[i] >= 1.0 && given[i] <= 1000.0 && given[i] == std::floor(given[i])))
+          reader.fail("grid.extra_nside",
+                      fmt::format("element {}: summits per side must be a whole number in 1..1000, got {:g}", i,
+                                  given[i]));
+        extra_nside[i] = static_cast<long>(given[i]);
+      }
+    }
+    c.nside_at.insert(c.nside_at.end(), extra_nside.begin(), extra_nside.end());
+    std::vector<std::size_t> order(c.pressures.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c.pressures[a] < c.pressures[b]; });
+    std::vector<double> pressures_sorted;
+    std::vector<long> nside_sorted;
+    for (std::size_t i : order) {
+      pressures_sorted.push_back(c.pressures[i]);
+      nside_sorted.push_back(c.nside_at[i]);
+    }
+    c.pressures = pressures_sorted;
+    c.nside_at = nside_sorted;
+  } else if (reader.has("grid.extra_nside")) {
+    reader.fail("grid.extra_nside", "needs grid.extra_pressures (one summit count per extra pressure)");
   }
 }
 }  // namespace
@@ -476,10 +508,13 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
       s.pressure = c.pressures[ip];
       s.acceleration = c.acceleration[ip];
       s.seed = c.seeds[is];
+      s.nside = c.nside_at[ip];
+      nlohmann::json cell = surface;
+      cell["nside"] = s.nside;
       // nlohmann::json objects keep their keys sorted and dump doubles to round trip: a canonical text.
       s.inputs = {
           {"material", {{"sha256", material_sha}, {"rough", c.rough}, {"counterface", c.counterface}}},
-          {"surface", surface},
+          {"surface", cell},
           {"pressure", s.pressure},
           {"speed", c.speed},
           {"seed", s.seed},

@@ -36,6 +36,7 @@ struct HomogeniseCase {
   // [grid]
   double pressure_min = 0.0, pressure_max = 0.0;
   std::vector<double> pressures;      // log-spaced, pressure_min .. pressure_max, with grid.extra_pressures, sorted
+  std::vector<long> nside_at;         // summits per side at each pressure: surface.nside, or grid.extra_nside's
   std::vector<long> seeds;            // derived: seed_j = 4711 + 7919 j
   std::vector<double> acceleration;   // one per pressure (one number in the case: repeated)
   double depth = 0.0;                 // target mean worn depth of the rough body [m]
@@ -112,6 +113,7 @@ std::string lmp_physics_identity(const std::filesystem::path &lmp);
 struct Sample {
   std::size_t ip = 0, is = 0;  // pressure and seed indices
   double pressure = 0.0, acceleration = 1.0;
+  long nside = 0;              // the cell's summits per side at this pressure
   long seed = 0;
   nlohmann::json inputs;  // canonical inputs (the key's preimage)
   std::string key;        // sha256 of inputs.dump()

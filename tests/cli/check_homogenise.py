@@ -23,7 +23,9 @@ MODE launcher_alone: the same wrapper named by the case's [run] launcher = "./la
              after it, the sample run alone go through the wrapper (-np 2, then -np 1).
 MODE extra:  grid.extra_pressures = [5e5] added below the cached 2-pressure grid: the rerun takes the 4 grid
              samples from the cache and runs only the 2 new ones; the law spans 5e5 .. 4e6 Pa, its grid rows equal
-             the first law's to the bit and its new row is the seed mean of the new samples.
+             the first law's to the bit and its new row is the seed mean of the new samples. Then
+             grid.extra_nside = [9]: only the 2 samples at 5e5 Pa rerun, in 9^2 summits (their logs), the grid rows
+             stay, and the law records surface.nside_at_pressure = [9, 6, 6].
 MODE relink: the cache is keyed on the physics lmp_runin was built from (lmp_runin.physics beside it), not on its
              bytes: (a) the build's lmp_runin.physics is the identity its physics sources give now (the build
              regenerated it); a cold run of 2 samples; (b) a relinked executable (a copy with other bytes, its
@@ -191,7 +193,28 @@ def mode_extra(args):
     new = [s for s in doc["samples"]["list"] if s["pressure"] == 5.0e5]
     if len(new) != 2 or any(s["status"] != "ok" for s in new):
         fail(f"the extra pressure's samples: {new}")
-    print("check_homogenise: extra pressure 5e5 Pa below the grid, 4 grid samples cached, grid rows unchanged")
+    # a larger cell at the extra pressure (grid.extra_nside): only its samples rerun, in 9^2 summits
+    with open(case) as f:
+        text = f.read()
+    with open(case, "w") as f:
+        f.write(text.replace("extra_pressures = [5.0e5]\n", "extra_pressures = [5.0e5]\nextra_nside = [9]\n"))
+    larger, _ = homogenise(args, case, law, cache, args.deck, 0)
+    if "6 samples of 36 summits (81 at 5e+05 Pa); 4 cached" not in larger.stdout or "2 samples to run" not in larger.stdout:
+        fail(f"the larger cell at 5e5 Pa did not rerun only its 2 samples: {larger.stdout}")
+    with open(law) as f:
+        doc = json.load(f)
+    if doc["surface"].get("nside_at_pressure") != [9, 6, 6]:
+        fail(f"the law's surface.nside_at_pressure is {doc['surface'].get('nside_at_pressure')}, not [9, 6, 6]")
+    for sample in (s for s in doc["samples"]["list"] if s["pressure"] == 5.0e5):
+        with open(os.path.join(cache, sample["key"], "log.lammps")) as f:
+            if "Created 81 atoms" not in f.read():
+                fail(f"sample {sample['key']} at 5e5 Pa did not run 81 summits")
+    for name, field in grid_law["fields"].items():
+        for band, rows in field.items():
+            if doc["fields"][name][band][1:] != rows:
+                fail(f"{name}.{band}: the grid rows changed with the larger cell below them")
+    print("check_homogenise: extra pressure 5e5 Pa below the grid, 4 grid samples cached, grid rows unchanged; "
+          "its larger cell (9^2 summits) reran only its 2 samples")
 
 
 def failing_deck(args, work, condition):
