@@ -202,6 +202,7 @@ void prepare_sample(const HomogeniseCase &c, const Sample &s, const fs::path &de
   };
   if (!c.heights_file.empty()) vars.insert(vars.end(), {{"height_source", "list"}, {"heights", c.heights_file}});
   if (c.caps) vars.emplace_back("caps", "yes");
+  if (c.vertical_drag) vars.emplace_back("vertical_drag", "yes");
   if (!c.contact_json().is_null()) {
     vars.emplace_back("friction", c.friction);
     if (!c.interface.empty()) vars.emplace_back("interface", c.interface);
@@ -440,6 +441,9 @@ void check_deck(const HomogeniseCase &c, const fs::path &deck, const std::string
     throw InputError(c.path + ": key 'contact.friction': the deck " + deck.string() +
                      " takes no friction model or interface state (it has no interface variable; inputs/in.rve_rough "
                      "and inputs/in.rve_wall do)");
+  if (c.vertical_drag && deck_variable(deck_text, "vertical_drag").empty())
+    throw InputError(c.path + ": key 'sliding.vertical_drag': the deck " + deck.string() +
+                     " has no vertical_drag variable (inputs/in.rve_rough has)");
   if (c.caps && deck_variable(deck_text, "caps").empty())
     throw InputError(c.path + ": key 'surface.caps': the deck " + deck.string() +
                      " has no caps variable (inputs/in.rve_rough has: pair_style runin/asperity caps)");
@@ -633,6 +637,7 @@ nlohmann::json law_metadata(const Options &o, const HomogeniseCase &c, const Pro
         {"host", host_name()}}},
   };
   if (c.caps) metadata["surface"]["caps"] = true;
+  if (c.vertical_drag) metadata["vertical_drag"] = true;
   if (std::any_of(c.nside_at.begin(), c.nside_at.end(), [&](long n) { return n != c.nside; }))
     metadata["surface"]["nside_at_pressure"] = c.nside_at;    // larger cells below the grid (grid.extra_nside)
   if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) metadata["samples"]["wear"] = wear;

@@ -25,7 +25,7 @@ const Schema &schema() {
       {"", {"title", "deck", "material", "surface", "sliding", "grid", "contact", "wear", "run"}},
       {"material", {"file", "rough", "counterface"}},
       {"surface", {"R", "sigma", "spacing", "nside", "heights", "caps"}},
-      {"sliding", {"speed"}},
+      {"sliding", {"speed", "vertical_drag"}},
       {"contact", {"friction", "interface"}},
       {"wear", {"k", "jump_max_depth", "jump_every", "jump_reference_pressure", "jump_max_change", "jump_rate"}},
       {"run", {"launcher"}},
@@ -396,6 +396,7 @@ HomogeniseCase read_homogenise_case(const std::string &path, bool deck_given) {
 
   // [sliding]
   c.speed = reader.positive("sliding.speed", c.speed);
+  c.vertical_drag = reader.flag("sliding.vertical_drag", false);
 
   read_grid_pressures(reader, c);
   const long seeds = reader.positive_integer("grid.seeds", 3, 100);
@@ -526,6 +527,7 @@ std::vector<Sample> plan_samples(const HomogeniseCase &c, const std::string &dec
           {"code", code_key},
           {"cache_format", 2},
       };
+      if (c.vertical_drag) s.inputs["vertical_drag"] = true;    // absent: the cells of laws built before it
       if (const nlohmann::json wear = c.wear_json(); !wear.is_null()) s.inputs["wear"] = wear;
       if (const nlohmann::json contact = c.contact_json(); !contact.is_null()) s.inputs["contact"] = contact;
       s.key = sha256_hex(s.inputs.dump());

@@ -33,6 +33,7 @@ struct HomogeniseCase {
   bool caps = false;  // the deck's summits as caps (pair_style runin/asperity caps): the same spheres, a shorter list
   // [sliding]
   double speed = 0.1;
+  bool vertical_drag = false;  // the counter-body keeps the loading's vertical drag while sliding (no bounce)
   // [grid]
   double pressure_min = 0.0, pressure_max = 0.0;
   std::vector<double> pressures;      // log-spaced, pressure_min .. pressure_max, with grid.extra_pressures, sorted

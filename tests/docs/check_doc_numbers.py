@@ -262,10 +262,11 @@ def main():
     manifest = tomllib.load(open(args.manifest, "rb"))
     try:
         if args.list:
-            for group in manifest["group"]:   # name|what its command needs|labels, for tests/docs/CMakeLists.txt
+            for group in manifest["group"]:   # name|what its command needs|labels|timeout [s], for tests/docs/CMakeLists.txt
                 command = " ".join(group.get("command", []))
                 needs = [tool for tool in ("lmp", "runin") if "{" + tool + "}" in command]
-                print("|".join([group["name"], ",".join(needs) or "-", group.get("labels", "docs")]))
+                print("|".join([group["name"], ",".join(needs) or "-", group.get("labels", "docs"),
+                                str(group.get("timeout", 300))]))
         elif args.hygiene:
             hygiene(manifest)
         else:
