@@ -1,9 +1,11 @@
 """What the test and tool scripts share: the source tree, the failure exit, scratch directories and the MPI
 environment. Standard library only; scripts put tools/ on sys.path and import from here."""
+import atexit
 import os
 import shutil
 import subprocess
 import sys
+import tempfile
 
 SOURCE_DIR = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 
@@ -27,10 +29,26 @@ def fresh_dir(path):
 MPI_START_ENV = {"OMPI_MCA_pml": "ob1", "OMPI_MCA_btl": "self,vader", "OMPI_MCA_ess_singleton_isolated": "1"}
 
 
+_SESSION_DIRS = []
+
+
+def _remove_session_dirs():
+    for path in _SESSION_DIRS:
+        shutil.rmtree(path, ignore_errors=True)
+
+
 def mpi_env():
     """The environment for mpiexec runs: root allowed (containers), oversubscription allowed (2-core machines),
-    one OpenMP thread per rank, and Open MPI's single-node start-up (MPI_START_ENV)."""
+    one OpenMP thread per rank, and Open MPI's single-node start-up (MPI_START_ENV). Each call gets its own session
+    directory tree (orte_tmpdir_base, removed at exit): concurrent runs that share Open MPI's /tmp tree can remove each
+    other's directories as they finish ("orte_session_dir failed" at start-up, seen twice under ctest -j2 with other
+    MPI jobs running)."""
     env = dict(os.environ)
+    if "OMPI_MCA_orte_tmpdir_base" not in env:
+        if not _SESSION_DIRS:
+            atexit.register(_remove_session_dirs)
+        _SESSION_DIRS.append(tempfile.mkdtemp(prefix="runin-ompi-"))
+        env["OMPI_MCA_orte_tmpdir_base"] = _SESSION_DIRS[-1]
     for name, value in MPI_START_ENV.items():
         env.setdefault(name, value)
     env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")

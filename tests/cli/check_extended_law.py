@@ -15,7 +15,7 @@ Asserted (doc/state_law_continuum.md, "Out-of-range policy"): the bearing makes 
 extra rows slide within 2 % of Tabor's junction value of the law's f at every depth; the grid rows' mu_body and Rq
 within 2 % of the reference's at every point (measured 1.4 % and 1.0 %; the bound was set after that measurement, as
 a guard: the drag is a change of the cell, so they are not the same samples, and where the seeds agree to 1e-4 the
-difference is up to 2 seed bands).
+difference is up to 2 seed bands). Reported, not asserted: the grid rows' wear rate against the reference's.
 """
 import argparse
 import json
@@ -110,6 +110,11 @@ def main():
         print(f"grid rows against the reference: {name} within {100 * worst_rel:.2f} % ({worst_band:.2f} of its seed band)")
         if worst_rel > 0.02:
             fail(f"the drag moves the grid rows' {name} by {worst_rel:.2%} (bound 2 %)")
+    # reported, not asserted: the drag holds the counter-body back while it re-seats after each jump
+    wear = reference["fields"]["wear_rate"]
+    shifts = [law["fields"]["wear_rate"]["mean"][law["pressure"].index(p)][j] / wear["mean"][jp][j] - 1.0
+              for jp, p in enumerate(reference["pressure"]) for j in range(len(wear["mean"][jp]))]
+    print(f"grid rows against the reference: wear_rate from {100 * min(shifts):+.1f} % to {100 * max(shifts):+.1f} %")
     print("PASS")
 
 
