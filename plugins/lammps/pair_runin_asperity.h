@@ -73,7 +73,7 @@ class PairRuninAsperity : public runin_pair::PairStyle<PairRuninAsperity, Pair, 
   int centres_nmax = 0;
   bool caps() const { return caps_up > 0; }
   double caps_cutoff(int i, int j) const;    // the list cutoff of types i, j with caps
-  double list_cutoff(int i, int j) const { return caps() ? caps_cutoff(i, j) : maxrad[i] + maxrad[j]; }
+  double list_cutoff(int i, int j) const { return caps() ? caps_cutoff(i, j) : PairStyle::list_cutoff(i, j); }
   void place_centres(int first, int last);    // centres of atoms [first, last)
   void check_caps();                          // ERROR if a contact could lie beyond the list's cutoff
   void parse_caps(int narg, char **arg, int iarg);

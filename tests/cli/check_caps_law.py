@@ -14,13 +14,10 @@ import argparse
 import json
 import math
 import os
-import subprocess
 import sys
 
-
-def fail(message):
-    print(f"FAIL: {message}")
-    sys.exit(1)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from runin_common import fail, run_or_fail  # noqa: E402
 
 
 def compare(law, reference):
@@ -73,8 +70,7 @@ def main():
         law_path = os.path.join(args.workdir, "law.json")
         command = [args.runin, "homogenise", args.case, "--output", law_path, "--cache-dir",
                    os.path.join(args.workdir, "cache"), "--np", "2"]
-        if subprocess.run(command).returncode != 0:
-            fail(f"{' '.join(command)} failed")
+        run_or_fail(command)
     with open(law_path) as f:
         law = json.load(f)
     with open(args.reference) as f:

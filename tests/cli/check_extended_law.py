@@ -22,35 +22,16 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
 
 SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE, "tools"))
+from runin_common import fail, run_or_fail  # noqa: E402
+from state_law import sample_rows  # noqa: E402  (a sample's sliding rows, as runin homogenise reads them)
+
 CASE = os.path.join(SOURCE, "tests", "data", "state_law", "steel_mild_deep_extended.toml")
 BEARING = os.path.join(SOURCE, "inputs", "journal_bearing_state_law.toml")
 REFERENCE = os.path.join(SOURCE, "inputs", "state_law_steel_mild_deep.json")
-
-
-def fail(message):
-    print(f"FAIL: {message}")
-    sys.exit(1)
-
-
-def run(command):
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        fail(f"{' '.join(command)} exited {result.returncode}:\n{result.stdout}\n{result.stderr}")
-    return result.stdout
-
-
-def columns(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(x) for x in line.split()])
-    return rows
 
 
 def main():
@@ -62,11 +43,11 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.workdir, exist_ok=True)
     law_path, cache = os.path.join(args.workdir, "law.json"), os.path.join(args.workdir, "cache")
-    run([args.runin, "homogenise", args.case, "--output", law_path, "--cache-dir", cache, "--np", "2"])
+    run_or_fail([args.runin, "homogenise", args.case, "--output", law_path, "--cache-dir", cache, "--np", "2"])
     with open(law_path) as f:
         law = json.load(f)
-    summary = run([args.runin, "journal-bearing", BEARING, "--law", law_path, "--no-plot", "--output-dir",
-                   os.path.join(args.workdir, "bearing")])
+    summary = run_or_fail([args.runin, "journal-bearing", BEARING, "--law", law_path, "--no-plot", "--output-dir",
+                           os.path.join(args.workdir, "bearing")]).stdout
     found = re.search(r"law lookups\s+(\d+) lookups: (\d+) clamped below p = (\S+) Pa", summary)
     depth = re.search(r"lower h\s+mean \S+ m, max (\S+) m", summary)
     if not found or not depth:
@@ -86,7 +67,7 @@ def main():
         mu = law["fields"]["mu_body"]["mean"][ip]
         contacts, empty = [], []
         for sample in (s for s in law["samples"]["list"] if s["pressure"] == p):
-            rows = columns(os.path.join(cache, sample["key"], "out.dat"))[1:]
+            rows = sample_rows(os.path.join(cache, sample["key"], "out.dat"))
             contacts.append(sum(r[10] for r in rows) / len(rows))
             empty.append(sum(1 for r in rows if r[10] == 0.0))
         print(f"p = {p:.4g} Pa ({nside[ip]}^2 summits): mu_body {min(mu):.4f}-{max(mu):.4f} over h = 0-"
